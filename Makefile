@@ -1,0 +1,32 @@
+# The two entry points of the README: `make run` and `make test`. Both install what is missing.
+BUILD_DIR ?= build
+JOBS ?= $(shell nproc)
+PYTHON := /usr/bin/python3
+
+.PHONY: deps configure build run test test-all bench clean
+
+deps:
+	@bash scripts/install-deps.sh
+
+configure: deps
+	@cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
+
+build: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS)
+
+# The main job: the Lamé example until contact exists (then the Hertz benchmark).
+run: build
+	@$(BUILD_DIR)/hpcontact run examples/lame/thick-cylinder.yaml --out results/lame
+	@echo "results: results/lame/summary.json, results/lame/solution.vtu (open in ParaView)"
+
+test: build
+	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -LE slow
+
+test-all: build
+	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+bench: build
+	@bash bench/run.sh
+
+clean:
+	rm -rf $(BUILD_DIR) results

@@ -1,0 +1,2 @@
+// Anchor translation unit for the core module.
+#include "hpcontact/core/error.hpp"

@@ -1,0 +1,72 @@
+// Error types and checks: input errors always on, programming errors in debug builds only.
+#pragma once
+
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace hpcontact {
+
+/// Base of every error the library reports to a user; what() is the full one-line message.
+class Error : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Bad input: a key, value or reference in a problem file or an API argument.
+/// The message names the file, line and key path when they are known.
+class InputError : public Error {
+public:
+  using Error::Error;
+};
+
+/// A mesh that cannot be used: inverted or degenerate element, inconsistent topology.
+class MeshError : public Error {
+public:
+  using Error::Error;
+};
+
+/// A file that cannot be read or written.
+class IoError : public Error {
+public:
+  using Error::Error;
+};
+
+/// A numerical failure that ends a computation (singular matrix, NaN in a residual).
+class NumericalError : public Error {
+public:
+  using Error::Error;
+};
+
+namespace detail {
+template <class... Args>
+std::string concat(const Args&... args) {
+  std::ostringstream os;
+  os.precision(10);
+  (os << ... << args);
+  return os.str();
+}
+}  // namespace detail
+
+}  // namespace hpcontact
+
+/// Always-on check of a user-facing precondition: throws ErrorType with the streamed message.
+#define HPC_REQUIRE(cond, ErrorType, ...)                                  \
+  do {                                                                     \
+    if (!(cond)) throw ErrorType(::hpcontact::detail::concat(__VA_ARGS__)); \
+  } while (false)
+
+#ifndef NDEBUG
+/// Debug-only check of an internal invariant; the message shows the offending values.
+#define HPC_ASSERT(cond, ...)                                                         \
+  do {                                                                                \
+    if (!(cond))                                                                      \
+      throw std::logic_error(::hpcontact::detail::concat(__FILE__, ":", __LINE__,      \
+                                                         ": assertion '" #cond "' failed: ", \
+                                                         __VA_ARGS__));               \
+  } while (false)
+#else
+#define HPC_ASSERT(cond, ...) \
+  do {                        \
+  } while (false)
+#endif

@@ -1,0 +1,45 @@
+// Stiffness by blocks: with G_x = dN/dx sqrt(w det J), the four blocks of B^T D B are sums of
+// the three products G_x G_x^T, G_y G_y^T, G_x G_y^T scaled by the entries of D (isotropic D has
+// D13 = D23 = 0), which lets the matrix products do the work.
+#include "hpcontact/fem/elasticity.hpp"
+
+namespace hpcontact::fem {
+
+Eigen::MatrixXd stiffness(const ElementValues& ev, const material::Elasticity& D, double thickness) {
+  const int n = ev.n_modes();
+  const Eigen::VectorXd s = (ev.JxW * thickness).cwiseSqrt();
+  const Eigen::MatrixXd Gx = ev.dN_dx * s.asDiagonal();
+  const Eigen::MatrixXd Gy = ev.dN_dy * s.asDiagonal();
+  Eigen::MatrixXd XX(n, n), YY(n, n), XY(n, n);
+  XX.noalias() = Gx * Gx.transpose();
+  YY.noalias() = Gy * Gy.transpose();
+  XY.noalias() = Gx * Gy.transpose();
+  const double d11 = D(0, 0), d12 = D(0, 1), d22 = D(1, 1), d33 = D(2, 2);
+  Eigen::MatrixXd K(2 * n, 2 * n);
+  K.topLeftCorner(n, n) = d11 * XX + d33 * YY;
+  K.bottomRightCorner(n, n) = d22 * YY + d33 * XX;
+  K.topRightCorner(n, n) = d12 * XY + d33 * XY.transpose();
+  K.bottomLeftCorner(n, n) = K.topRightCorner(n, n).transpose();
+  return K;
+}
+
+Eigen::VectorXd body_force(const ElementValues& ev, const Vec2& b, double thickness) {
+  const int n = ev.n_modes();
+  Eigen::VectorXd f(2 * n);
+  const Eigen::VectorXd w = ev.N * ev.JxW * thickness;
+  f.head(n) = b.x() * w;
+  f.tail(n) = b.y() * w;
+  return f;
+}
+
+Eigen::Matrix3Xd strains(const ElementValues& ev, const Eigen::VectorXd& u_e) {
+  const int n = ev.n_modes();
+  Eigen::Matrix3Xd eps(3, ev.n_points());
+  const auto ux = u_e.head(n), uy = u_e.tail(n);
+  eps.row(0) = ux.transpose() * ev.dN_dx;
+  eps.row(1) = uy.transpose() * ev.dN_dy;
+  eps.row(2) = ux.transpose() * ev.dN_dy + uy.transpose() * ev.dN_dx;
+  return eps;
+}
+
+}  // namespace hpcontact::fem

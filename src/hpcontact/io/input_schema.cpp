@@ -1,0 +1,305 @@
+// The problem-file schema table and its Markdown rendering.
+#include "hpcontact/io/input_schema.hpp"
+
+#include <sstream>
+
+namespace hpcontact::io {
+
+namespace {
+
+using T = ValueType;
+
+constexpr Bound greater_than(double v) { return {v, false}; }
+constexpr Bound at_least(double v) { return {v, true}; }
+constexpr Bound less_than(double v) { return {v, false}; }
+constexpr Bound at_most(double v) { return {v, true}; }
+
+constexpr double max_degree = 30;
+
+}  // namespace
+
+// Sections follow the pipeline: case, bodies (mesh, material, constraints and loads),
+// discretization, solver, exact solution, output. A key with a default is filled in when absent,
+// so the effective input lists it; an optional key without a default stays absent.
+// GCC's -Wextra warns about members left out of a designated initializer even when they have
+// default initializers; leaving them out is the point of the table's layout.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+const std::vector<KeySpec>& input_schema() {
+  static const std::vector<KeySpec> table{
+      {.path = "case", .type = T::string, .required = true,
+       .doc = "Short name of the case; names the output files."},
+      {.path = "description", .type = T::string, .doc = "Free text describing the case."},
+      {.path = "bodies", .type = T::section_list, .required = true,
+       .doc = "The elastic bodies, each with its own mesh, material, constraints and loads.",
+       .min_items = 1},
+
+      {.path = "bodies[].name", .type = T::string, .required = true,
+       .doc = "Name of the body, unique in the file."},
+      {.path = "bodies[].material", .type = T::section, .required = true,
+       .doc = "Material law of the body."},
+      {.path = "bodies[].nodes", .type = T::node_table, .required = true, .unit = "length",
+       .doc = "Mesh nodes by user id; the ids need not be contiguous.", .min_items = 1},
+      {.path = "bodies[].elements", .type = T::element_table, .required = true,
+       .doc = "Quadrilaterals by user id: four distinct existing node ids, counter-clockwise.",
+       .min_items = 1},
+      {.path = "bodies[].curves", .type = T::section_list,
+       .doc = "Exact geometry of mesh edges; edges not listed are straight."},
+      {.path = "bodies[].degree", .type = T::degree,
+       .doc = "Polynomial degree of every element of this body; default: discretization.degree.",
+       .lower = at_least(1), .upper = at_most(max_degree)},
+      {.path = "bodies[].degrees", .type = T::degree_table,
+       .doc = "Polynomial degree of single elements, by element id; overrides degree.",
+       .lower = at_least(1), .upper = at_most(max_degree)},
+      {.path = "bodies[].edge_sets", .type = T::edge_set_table,
+       .doc = "Named sets of element edges, each edge given by its two end nodes, for constraints "
+              "and loads."},
+      {.path = "bodies[].constraints", .type = T::section_list,
+       .doc = "Prescribed displacements on edge sets and nodes."},
+      {.path = "bodies[].loads", .type = T::section_list,
+       .doc = "Distributed loads on edge sets."},
+      {.path = "bodies[].nodal_forces", .type = T::section_list,
+       .doc = "Concentrated forces at nodes."},
+      {.path = "bodies[].body_force", .type = T::point, .default_yaml = "[0, 0]",
+       .unit = "force/length³", .doc = "Force per unit volume, [bx, by]."},
+
+      {.path = "bodies[].material.model", .type = T::choice, .default_yaml = "linear-elastic",
+       .doc = "Material law.", .choices = {"linear-elastic"}},
+      {.path = "bodies[].material.E", .type = T::number, .required = true,
+       .unit = "force/length²", .doc = "Young's modulus.", .lower = greater_than(0)},
+      {.path = "bodies[].material.nu", .type = T::number, .required = true,
+       .doc = "Poisson's ratio.", .lower = greater_than(-1), .upper = less_than(0.5)},
+      {.path = "bodies[].material.plane", .type = T::choice, .default_yaml = "strain",
+       .doc = "Plane strain or plane stress.", .choices = {"strain", "stress"}},
+      {.path = "bodies[].material.thickness", .type = T::number, .default_yaml = "1",
+       .unit = "length", .doc = "Out-of-plane thickness.", .lower = greater_than(0)},
+
+      {.path = "bodies[].curves[].nodes", .type = T::node_pair, .required = true,
+       .doc = "The edge [a, b] of an element that the curve replaces, oriented from a to b."},
+      {.path = "bodies[].curves[].arc", .type = T::section,
+       .doc = "Circular arc; give exactly one of arc and parametric."},
+      {.path = "bodies[].curves[].arc.center", .type = T::point, .required = true,
+       .unit = "length", .doc = "Centre of the circle, [x, y]."},
+      {.path = "bodies[].curves[].arc.radius", .type = T::number, .required = true,
+       .unit = "length", .doc = "Radius of the circle.", .lower = greater_than(0)},
+      {.path = "bodies[].curves[].arc.ccw", .type = T::boolean,
+       .doc = "true: counter-clockwise from a to b; false: clockwise; absent: the shorter arc."},
+      {.path = "bodies[].curves[].parametric", .type = T::section,
+       .doc = "Parametric curve; give exactly one of arc and parametric."},
+      {.path = "bodies[].curves[].parametric.x", .type = T::string, .required = true,
+       .unit = "length", .doc = "x(s) for s in [0, 1] from node a to node b (muparser formula)."},
+      {.path = "bodies[].curves[].parametric.y", .type = T::string, .required = true,
+       .unit = "length", .doc = "y(s) for s in [0, 1] from node a to node b (muparser formula)."},
+
+      {.path = "bodies[].constraints[].edges", .type = T::string_list,
+       .doc = "Names of edge sets; give edges, nodes or both.", .min_items = 1},
+      {.path = "bodies[].constraints[].nodes", .type = T::integer_list,
+       .doc = "Node ids; give edges, nodes or both.", .min_items = 1},
+      {.path = "bodies[].constraints[].ux", .type = T::scalar_text, .unit = "length",
+       .doc = "Prescribed x displacement: a number or a formula in x, y; absent: free. Give ux, "
+              "uy or both."},
+      {.path = "bodies[].constraints[].uy", .type = T::scalar_text, .unit = "length",
+       .doc = "Prescribed y displacement: a number or a formula in x, y; absent: free."},
+
+      {.path = "bodies[].loads[].edges", .type = T::string_list, .required = true,
+       .doc = "Names of the loaded edge sets.", .min_items = 1},
+      {.path = "bodies[].loads[].pressure", .type = T::number, .unit = "force/length²",
+       .doc = "Normal pressure, positive pushing into the body; give exactly one of pressure and "
+              "traction."},
+      {.path = "bodies[].loads[].traction", .type = T::point, .unit = "force/length²",
+       .doc = "Traction vector [tx, ty]; give exactly one of pressure and traction."},
+      {.path = "bodies[].loads[].resultant", .type = T::number, .unit = "force/length",
+       .doc = "If given, the load is scaled so that the magnitude of its integral over the edges "
+              "equals this.",
+       .lower = greater_than(0)},
+      {.path = "bodies[].loads[].shape", .type = T::choice, .default_yaml = "constant",
+       .doc = "Profile along the loaded part, t in [0, 1] from its start to its end: constant 1, "
+              "linear 1 - t, bspline1 (1 - t)², bspline2 1 - 2t² up to t = ½ and "
+              "2(1 - t)² beyond, hermite 1 - 3t² + 2t³, or a formula (expression).",
+       .choices = {"constant", "linear", "bspline1", "bspline2", "hermite", "expression"}},
+      {.path = "bodies[].loads[].expression", .type = T::string,
+       .doc = "Formula in x, y multiplying the load; required if and only if shape is expression."},
+      {.path = "bodies[].loads[].along", .type = T::choice, .default_yaml = "x",
+       .doc = "Coordinate along which t runs.", .choices = {"x", "y"}},
+      {.path = "bodies[].loads[].interval", .type = T::point, .unit = "length",
+       .doc = "[start, end] of t in the along coordinate, start != end; absent: the whole edges."},
+
+      {.path = "bodies[].nodal_forces[].node", .type = T::integer, .required = true,
+       .doc = "Node id."},
+      {.path = "bodies[].nodal_forces[].force", .type = T::point, .required = true,
+       .unit = "force", .doc = "Force [fx, fy]."},
+
+      {.path = "discretization", .type = T::section, .default_yaml = "{}",
+       .doc = "How the bodies are discretised."},
+      {.path = "discretization.method", .type = T::choice, .default_yaml = "p",
+       .doc = "p: hierarchic p-elements; h: Lagrange h-elements.", .choices = {"p", "h"}},
+      {.path = "discretization.degree", .type = T::degree, .default_yaml = "4",
+       .doc = "Polynomial degree of the p-version, p or [p_xi, p_eta].", .lower = at_least(1),
+       .upper = at_most(max_degree)},
+      {.path = "discretization.space", .type = T::choice, .default_yaml = "tensor",
+       .doc = "p-version shape space: full tensor product or trunk (serendipity).",
+       .choices = {"tensor", "trunk"}},
+      {.path = "discretization.element", .type = T::choice, .default_yaml = "Q8",
+       .doc = "h-version element (ignored by the p-version).", .choices = {"Q4", "Q8", "Q9"}},
+      {.path = "discretization.quadrature_extra", .type = T::integer, .default_yaml = "2",
+       .doc = "Gauss points per direction = max(p_xi, p_eta) + this.", .lower = at_least(0)},
+      {.path = "discretization.condense", .type = T::boolean, .default_yaml = "false",
+       .doc = "Static condensation of the internal modes."},
+
+      {.path = "solver", .type = T::section, .default_yaml = "{}",
+       .doc = "How the equations are solved."},
+      {.path = "solver.linear", .type = T::choice, .default_yaml = "cholmod",
+       .doc = "Sparse direct solver: CHOLMOD or Eigen's SimplicialLDLT.",
+       .choices = {"cholmod", "ldlt"}},
+
+      {.path = "exact", .type = T::section,
+       .doc = "A closed-form solution to measure the error against; absent: none."},
+      {.path = "exact.type", .type = T::choice, .required = true,
+       .doc = "Which closed form; none switches it off.", .choices = {"lame", "none"}},
+      {.path = "exact.inner_radius", .type = T::number, .unit = "length",
+       .doc = "Inner radius of the thick cylinder; required for lame.", .lower = greater_than(0)},
+      {.path = "exact.outer_radius", .type = T::number, .unit = "length",
+       .doc = "Outer radius, > inner_radius; required for lame.", .lower = greater_than(0)},
+      {.path = "exact.inner_pressure", .type = T::number, .default_yaml = "0",
+       .unit = "force/length²", .doc = "Pressure on the inner surface."},
+      {.path = "exact.outer_pressure", .type = T::number, .default_yaml = "0",
+       .unit = "force/length²", .doc = "Pressure on the outer surface."},
+      {.path = "exact.center", .type = T::point, .default_yaml = "[0, 0]", .unit = "length",
+       .doc = "Centre of the cylinder, [x, y]."},
+
+      {.path = "output", .type = T::section, .default_yaml = "{}",
+       .doc = "What is written next to the results."},
+      {.path = "output.vtu", .type = T::boolean, .default_yaml = "true",
+       .doc = "Write the solution as a VTK unstructured grid (.vtu)."},
+      {.path = "output.vtu_subdivisions", .type = T::integer, .default_yaml = "0",
+       .doc = "Sub-cells per element edge in the .vtu file; 0: automatic from the degree.",
+       .lower = at_least(0)},
+      {.path = "output.effective_input", .type = T::boolean, .default_yaml = "true",
+       .doc = "Write the effective input (defaults filled, --set applied) to reproduce the run."},
+  };
+  return table;
+}
+#pragma GCC diagnostic pop
+
+const KeySpec* find_key_spec(std::string_view pattern) {
+  for (const KeySpec& key : input_schema())
+    if (key.path == pattern) return &key;
+  return nullptr;
+}
+
+std::vector<const KeySpec*> child_key_specs(std::string_view parent_pattern) {
+  std::vector<const KeySpec*> children;
+  for (const KeySpec& key : input_schema()) {
+    std::string_view p = key.path;
+    if (!parent_pattern.empty()) {
+      if (p.size() <= parent_pattern.size() + 1 || !p.starts_with(parent_pattern) ||
+          p[parent_pattern.size()] != '.')
+        continue;
+      p.remove_prefix(parent_pattern.size() + 1);
+    }
+    if (p.find_first_of(".[") == std::string_view::npos) children.push_back(&key);
+  }
+  return children;
+}
+
+namespace {
+
+std::string format_number(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+/// "> 0", "in (-1, 0.5)", "in [1, 30]" or "" for unbounded.
+std::string describe_bounds(const KeySpec& key) {
+  if (key.lower && key.upper)
+    return "in " + std::string(key.lower->inclusive ? "[" : "(") + format_number(key.lower->value) +
+           ", " + format_number(key.upper->value) + (key.upper->inclusive ? "]" : ")");
+  if (key.lower) return (key.lower->inclusive ? ">= " : "> ") + format_number(key.lower->value);
+  if (key.upper) return (key.upper->inclusive ? "<= " : "< ") + format_number(key.upper->value);
+  return "";
+}
+
+std::string with_bounds(std::string type, const KeySpec& key) {
+  const std::string bounds = describe_bounds(key);
+  return bounds.empty() ? type : type + " " + bounds;
+}
+
+std::string escape_cell(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+std::string describe_default(const KeySpec& key) {
+  if (key.required) return "required";
+  if (key.default_yaml.empty()) return "optional";
+  if (key.default_yaml == "{}") return "(all defaults)";
+  return "`" + std::string(key.default_yaml) + "`";
+}
+
+/// The table of the keys under `parent_pattern`, then those of its sections, depth first.
+void render_section(std::ostringstream& md, std::string_view parent_pattern) {
+  const std::vector<const KeySpec*> children = child_key_specs(parent_pattern);
+  md << "| key | type | default | unit | meaning |\n|---|---|---|---|---|\n";
+  for (const KeySpec* key : children)
+    md << "| `" << key->path << "` | " << escape_cell(describe_type(*key)) << " | "
+       << describe_default(*key) << " | " << key->unit << " | " << escape_cell(key->doc) << " |\n";
+  for (const KeySpec* key : children) {
+    if (key->type != T::section && key->type != T::section_list) continue;
+    const std::string pattern =
+        std::string(key->path) + (key->type == T::section_list ? "[]" : "");
+    md << "\n## `" << pattern << "`\n\n" << key->doc << "\n\n";
+    render_section(md, pattern);
+  }
+}
+
+}  // namespace
+
+std::string describe_type(const KeySpec& key) {
+  switch (key.type) {
+    case T::section: return "section";
+    case T::section_list:
+      return key.min_items > 0 ? "list of sections, at least " + std::to_string(key.min_items)
+                               : "list of sections";
+    case T::string: return "string";
+    case T::number: return with_bounds("number", key);
+    case T::integer: return with_bounds("integer", key);
+    case T::boolean: return "bool";
+    case T::choice: {
+      std::string s = "one of: ";
+      for (std::size_t i = 0; i < key.choices.size(); ++i)
+        s += (i ? ", " : "") + std::string(key.choices[i]);
+      return s;
+    }
+    case T::point: return "[number, number]";
+    case T::node_pair: return "[node id, node id]";
+    case T::degree: return with_bounds("integer or [p_xi, p_eta], each", key);
+    case T::scalar_text: return "number or formula";
+    case T::string_list: return "list of names";
+    case T::integer_list: return "list of integers";
+    case T::node_table: return "map: node id -> [x, y]";
+    case T::element_table: return "map: element id -> [n1, n2, n3, n4]";
+    case T::degree_table: return with_bounds("map: element id -> p or [p_xi, p_eta], each", key);
+    case T::edge_set_table: return "map: name -> list of [node id, node id]";
+  }
+  return "";
+}
+
+std::string input_schema_markdown() {
+  std::ostringstream md;
+  md << "# Problem file reference\n\n"
+        "A problem file is YAML. Keys are given by their dotted path; `[]` stands for any list "
+        "index. Unknown keys are errors. A key with a default is filled in when absent (the "
+        "effective input written next to the results lists it); an optional key without a default "
+        "stays absent. Any key can be changed from the command line with "
+        "`--set path=value`, e.g. `--set bodies[0].material.E=1e5` or "
+        "`--set discretization.degree=[6,4]`.\n\n## Top level\n\n";
+  render_section(md, "");
+  return md.str();
+}
+
+}  // namespace hpcontact::io

@@ -1,0 +1,419 @@
+// Problem file -> YAML tree -> overrides -> schema check with defaults -> cross-checked ProblemSpec.
+#include "hpcontact/io/problem_reader.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <set>
+#include <utility>
+
+#include "hpcontact/core/error.hpp"
+#include "hpcontact/io/overrides.hpp"
+#include "hpcontact/io/schema_check.hpp"
+#include "hpcontact/io/yaml_source.hpp"
+
+namespace hpcontact::io {
+
+namespace {
+
+using namespace hpcontact::model;
+
+// The tree has passed check_and_fill_defaults(), so these conversions cannot fail.
+double number(const YAML::Node& node) { return *to_number(node); }
+int integer(const YAML::Node& node) { return *to_integer(node); }
+bool boolean(const YAML::Node& node) { return *to_boolean(node); }
+std::array<double, 2> point(const YAML::Node& node) { return {number(node[0]), number(node[1])}; }
+std::array<int, 2> node_pair(const YAML::Node& node) { return {integer(node[0]), integer(node[1])}; }
+std::array<int, 2> degree(const YAML::Node& node) {
+  if (node.IsScalar()) return {integer(node), integer(node)};
+  return node_pair(node);
+}
+
+/// An edge regardless of orientation: the two node ids, smaller first.
+using Edge = std::pair<int, int>;
+Edge undirected(std::array<int, 2> nodes) {
+  return {std::min(nodes[0], nodes[1]), std::max(nodes[0], nodes[1])};
+}
+
+std::string shown_pair(std::array<int, 2> nodes) {
+  return "[" + std::to_string(nodes[0]) + ", " + std::to_string(nodes[1]) + "]";
+}
+
+/// Builds the ProblemSpec from a checked tree, checking the cross references the schema cannot.
+class SpecBuilder {
+public:
+  explicit SpecBuilder(const YamlSource& source) : source_(source) {}
+
+  ProblemSpec problem(const YAML::Node& root) {
+    ProblemSpec spec;
+    spec.file = source_.file();
+    spec.case_name = root["case"].Scalar();
+    if (root["description"]) spec.description = root["description"].Scalar();
+    std::map<std::string, std::string> body_paths;  // name -> path of the body that has it
+    for (std::size_t i = 0; i < root["bodies"].size(); ++i) {
+      const std::string path = join_index("bodies", i);
+      spec.bodies.push_back(body(root["bodies"][i], path));
+      const auto [at, inserted] = body_paths.emplace(spec.bodies.back().name, path);
+      if (!inserted)
+        source_.fail(root["bodies"][i]["name"], path + ".name",
+                     "name already used by " + at->second + " (got '" + at->first + "')");
+    }
+    spec.discretization = discretization(root["discretization"]);
+    spec.solver.linear = root["solver"]["linear"].Scalar();
+    spec.solver.where = source_.where(root["solver"], "solver");
+    if (root["exact"]) spec.exact = exact(root["exact"]);
+    spec.output = output(root["output"]);
+    return spec;
+  }
+
+private:
+  BodySpec body(const YAML::Node& node, const std::string& path) {
+    BodySpec b;
+    b.name = node["name"].Scalar();
+    b.where = source_.where(node, path);
+    b.material = material(node["material"], path + ".material");
+    read_mesh(node, path, b);
+    if (node["curves"]) read_curves(node["curves"], path + ".curves", b);
+    if (node["degree"]) b.degree = degree(node["degree"]);
+    if (node["degrees"]) read_element_degrees(node["degrees"], path + ".degrees", b);
+    if (node["edge_sets"]) read_edge_sets(node["edge_sets"], path + ".edge_sets", b);
+    if (node["constraints"]) read_constraints(node["constraints"], path + ".constraints", b);
+    if (node["loads"]) read_loads(node["loads"], path + ".loads", b);
+    if (node["nodal_forces"]) read_nodal_forces(node["nodal_forces"], path + ".nodal_forces", b);
+    b.body_force = point(node["body_force"]);
+    return b;
+  }
+
+  MaterialSpec material(const YAML::Node& node, const std::string& path) {
+    MaterialSpec m;
+    m.model = node["model"].Scalar();
+    m.youngs_modulus = number(node["E"]);
+    m.poisson_ratio = number(node["nu"]);
+    m.plane = node["plane"].Scalar() == "stress" ? PlaneMode::plane_stress : PlaneMode::plane_strain;
+    m.thickness = number(node["thickness"]);
+    m.where = source_.where(node, path);
+    return m;
+  }
+
+  /// Nodes and elements in the file's order; element corners must be existing nodes.
+  void read_mesh(const YAML::Node& node, const std::string& path, BodySpec& b) {
+    node_ids_.clear();
+    element_ids_.clear();
+    edges_.clear();
+    for (auto it = node["nodes"].begin(); it != node["nodes"].end(); ++it) {
+      b.node_ids.push_back(integer(it->first));
+      b.nodes.push_back(point(it->second));
+      node_ids_.insert(b.node_ids.back());
+    }
+    const std::string elements_path = path + ".elements";
+    for (auto it = node["elements"].begin(); it != node["elements"].end(); ++it) {
+      const std::string element_path = join_key(elements_path, it->first.Scalar());
+      std::array<int, 4> corners{};
+      for (std::size_t k = 0; k < 4; ++k) {
+        corners[k] = integer(it->second[k]);
+        require_node(it->second[k], join_index(element_path, k), corners[k], path);
+      }
+      for (std::size_t k = 0; k < 4; ++k) edges_.insert(undirected({corners[k], corners[(k + 1) % 4]}));
+      b.element_ids.push_back(integer(it->first));
+      b.elements.push_back(corners);
+      element_ids_.insert(b.element_ids.back());
+    }
+  }
+
+  void read_curves(const YAML::Node& list, const std::string& path, BodySpec& b) {
+    std::map<Edge, std::string> curve_paths;  // edge -> path of the curve that replaces it
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const YAML::Node node = list[i];
+      const std::string curve_path = join_index(path, i);
+      CurveSpec c;
+      const std::array<int, 2> ends = node_pair(node["nodes"]);
+      require_edge(node["nodes"], curve_path + ".nodes", ends);
+      const auto [at, inserted] = curve_paths.emplace(undirected(ends), curve_path);
+      if (!inserted)
+        source_.fail(node["nodes"], curve_path + ".nodes",
+                     "edge already has a curve at " + at->second + " (got " + shown_pair(ends) + ")");
+      c.node_a = ends[0];
+      c.node_b = ends[1];
+      if (bool(node["arc"]) == bool(node["parametric"]))
+        source_.fail(node, curve_path,
+                     std::string("must have exactly one of 'arc' and 'parametric' (got ") +
+                         (node["arc"] ? "both" : "neither") + ")");
+      if (const YAML::Node arc = node["arc"]) {
+        c.kind = CurveKind::arc;
+        c.center = point(arc["center"]);
+        c.radius = number(arc["radius"]);
+        c.ccw = arc["ccw"] ? (boolean(arc["ccw"]) ? 1 : -1) : 0;
+      } else {
+        c.kind = CurveKind::parametric;
+        c.x_expr = node["parametric"]["x"].Scalar();
+        c.y_expr = node["parametric"]["y"].Scalar();
+      }
+      c.where = source_.where(node, curve_path);
+      b.curves.push_back(std::move(c));
+    }
+  }
+
+  void read_element_degrees(const YAML::Node& table, const std::string& path, BodySpec& b) {
+    for (auto it = table.begin(); it != table.end(); ++it) {
+      const int id = integer(it->first);
+      if (!element_ids_.count(id))
+        source_.fail(it->first, join_key(path, it->first.Scalar()),
+                     "no such element in the body's elements (got " + std::to_string(id) + ")");
+      b.element_degrees[id] = degree(it->second);
+    }
+  }
+
+  void read_edge_sets(const YAML::Node& table, const std::string& path, BodySpec& b) {
+    for (auto it = table.begin(); it != table.end(); ++it) {
+      EdgeSetSpec set;
+      set.name = it->first.Scalar();
+      const std::string set_path = join_key(path, set.name);
+      set.where = source_.where(it->second, set_path);
+      std::set<Edge> seen;
+      for (std::size_t k = 0; k < it->second.size(); ++k) {
+        const std::array<int, 2> ends = node_pair(it->second[k]);
+        const std::string edge_path = join_index(set_path, k);
+        require_edge(it->second[k], edge_path, ends);
+        if (!seen.insert(undirected(ends)).second)
+          source_.fail(it->second[k], edge_path, "edge listed twice (got " + shown_pair(ends) + ")");
+        set.edges.push_back(ends);
+      }
+      b.edge_sets.push_back(std::move(set));
+    }
+  }
+
+  void read_constraints(const YAML::Node& list, const std::string& path, BodySpec& b) {
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const YAML::Node node = list[i];
+      const std::string item_path = join_index(path, i);
+      ConstraintSpec c;
+      if (!node["edges"] && !node["nodes"])
+        source_.fail(node, item_path, "needs 'edges', 'nodes' or both (got " + shown_value(node) + ")");
+      if (!node["ux"] && !node["uy"])
+        source_.fail(node, item_path, "needs 'ux', 'uy' or both (got " + shown_value(node) + ")");
+      if (node["edges"]) c.edge_sets = edge_set_names(node["edges"], item_path + ".edges", b);
+      if (const YAML::Node nodes = node["nodes"]) {
+        for (std::size_t k = 0; k < nodes.size(); ++k) {
+          c.nodes.push_back(integer(nodes[k]));
+          require_node(nodes[k], join_index(item_path + ".nodes", k), c.nodes.back(), body_path(path));
+        }
+      }
+      if (node["ux"]) c.ux = node["ux"].Scalar();
+      if (node["uy"]) c.uy = node["uy"].Scalar();
+      c.where = source_.where(node, item_path);
+      b.constraints.push_back(std::move(c));
+    }
+  }
+
+  void read_loads(const YAML::Node& list, const std::string& path, BodySpec& b) {
+    static const std::map<std::string, LoadShape> shapes{
+        {"constant", LoadShape::constant}, {"linear", LoadShape::linear},
+        {"bspline1", LoadShape::bspline1}, {"bspline2", LoadShape::bspline2},
+        {"hermite", LoadShape::hermite},   {"expression", LoadShape::expression}};
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const YAML::Node node = list[i];
+      const std::string item_path = join_index(path, i);
+      EdgeLoadSpec load;
+      load.edge_sets = edge_set_names(node["edges"], item_path + ".edges", b);
+      if (bool(node["pressure"]) == bool(node["traction"]))
+        source_.fail(node, item_path,
+                     std::string("must have exactly one of 'pressure' and 'traction' (got ") +
+                         (node["pressure"] ? "both" : "neither") + ")");
+      if (node["pressure"]) {
+        load.kind = LoadKind::pressure;
+        load.value = {number(node["pressure"]), 0.0};
+      } else {
+        load.kind = LoadKind::traction;
+        load.value = point(node["traction"]);
+      }
+      if (node["resultant"]) load.resultant = number(node["resultant"]);
+      load.shape = shapes.at(node["shape"].Scalar());
+      const bool is_expression = load.shape == LoadShape::expression;
+      if (is_expression && !node["expression"])
+        source_.fail(node, item_path, "missing key 'expression' (required by shape: expression)");
+      if (!is_expression && node["expression"])
+        source_.fail(node["expression"], item_path + ".expression",
+                     "only allowed with shape: expression (got shape: " + node["shape"].Scalar() + ")");
+      if (is_expression) load.expression = node["expression"].Scalar();
+      load.along = node["along"].Scalar()[0];
+      if (node["interval"]) {
+        load.interval = point(node["interval"]);
+        if ((*load.interval)[0] == (*load.interval)[1])
+          source_.fail(node["interval"], item_path + ".interval",
+                       "start and end must differ (got " + shown_value(node["interval"]) + ")");
+      }
+      load.where = source_.where(node, item_path);
+      b.edge_loads.push_back(std::move(load));
+    }
+  }
+
+  void read_nodal_forces(const YAML::Node& list, const std::string& path, BodySpec& b) {
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const YAML::Node node = list[i];
+      const std::string item_path = join_index(path, i);
+      NodalForceSpec f;
+      f.node = integer(node["node"]);
+      require_node(node["node"], item_path + ".node", f.node, body_path(path));
+      f.force = point(node["force"]);
+      f.where = source_.where(node, item_path);
+      b.nodal_forces.push_back(std::move(f));
+    }
+  }
+
+  /// The edge set names of a constraint or load, each one defined in the body.
+  std::vector<std::string> edge_set_names(const YAML::Node& list, const std::string& path,
+                                          const BodySpec& b) {
+    std::vector<std::string> names;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      names.push_back(list[k].Scalar());
+      const bool defined = std::any_of(b.edge_sets.begin(), b.edge_sets.end(),
+                                       [&](const EdgeSetSpec& set) { return set.name == names.back(); });
+      if (!defined) {
+        std::string known;
+        for (const EdgeSetSpec& set : b.edge_sets) known += (known.empty() ? "" : ", ") + set.name;
+        source_.fail(list[k], join_index(path, k),
+                     "no such edge set (defined: " + (known.empty() ? "none" : known) + ") (got '" +
+                         names.back() + "')");
+      }
+    }
+    return names;
+  }
+
+  void require_node(const YAML::Node& node, const std::string& path, int id, const std::string& body) {
+    if (!node_ids_.count(id))
+      source_.fail(node, path, "no such node in " + body + ".nodes (got " + std::to_string(id) + ")");
+  }
+
+  void require_edge(const YAML::Node& node, const std::string& path, std::array<int, 2> ends) {
+    if (!edges_.count(undirected(ends)))
+      source_.fail(node, path, "not an edge of any element (got " + shown_pair(ends) + ")");
+  }
+
+  /// "bodies[0]" from "bodies[0].constraints".
+  static std::string body_path(const std::string& list_path) {
+    return list_path.substr(0, list_path.rfind('.'));
+  }
+
+  DiscretizationSpec discretization(const YAML::Node& node) {
+    DiscretizationSpec d;
+    d.method = node["method"].Scalar() == "h" ? Method::h : Method::p;
+    d.degree = degree(node["degree"]);
+    d.space = node["space"].Scalar() == "trunk" ? ShapeSpace::trunk : ShapeSpace::tensor_product;
+    const std::string element = node["element"].Scalar();
+    d.element = element == "Q4" ? LagrangeElement::q4
+                : element == "Q9" ? LagrangeElement::q9
+                                  : LagrangeElement::q8;
+    d.quadrature_extra = integer(node["quadrature_extra"]);
+    d.condense = boolean(node["condense"]);
+    d.where = source_.where(node, "discretization");
+    return d;
+  }
+
+  ExactSpec exact(const YAML::Node& node) {
+    ExactSpec e;
+    e.where = source_.where(node, "exact");
+    if (node["type"].Scalar() == "none") return e;
+    e.type = node["type"].Scalar();
+    for (const char* key : {"inner_radius", "outer_radius"})
+      if (!node[key])
+        source_.fail(node, "exact", std::string("missing key '") + key + "' (required by type: lame)");
+    e.inner_radius = number(node["inner_radius"]);
+    e.outer_radius = number(node["outer_radius"]);
+    if (e.outer_radius <= e.inner_radius)
+      source_.fail(node["outer_radius"], "exact.outer_radius",
+                   "must be > exact.inner_radius = " + node["inner_radius"].Scalar() + " (got " +
+                       node["outer_radius"].Scalar() + ")");
+    e.inner_pressure = number(node["inner_pressure"]);
+    e.outer_pressure = number(node["outer_pressure"]);
+    e.center = point(node["center"]);
+    return e;
+  }
+
+  OutputSpec output(const YAML::Node& node) {
+    OutputSpec o;
+    o.vtu = boolean(node["vtu"]);
+    o.vtu_subdivisions = integer(node["vtu_subdivisions"]);
+    o.effective_input = boolean(node["effective_input"]);
+    o.where = source_.where(node, "output");
+    return o;
+  }
+
+  const YamlSource& source_;
+  // The body being read: its node ids, element ids and element edges.
+  std::set<int> node_ids_, element_ids_;
+  std::set<Edge> edges_;
+};
+
+std::string effective_yaml(const YAML::Node& root, const std::string& file_label,
+                           const std::vector<std::string>& overrides) {
+  std::string text = "# Effective input of " + file_label + ", defaults filled in";
+  text += overrides.empty() ? ".\n" : ", with:\n";
+  for (const std::string& o : overrides) text += "#   --set " + o + "\n";
+  YAML::Emitter out;
+  out << root;
+  return text + out.c_str() + "\n";
+}
+
+std::string read_text_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw IoError(path + ": cannot read problem file: " + std::strerror(EISDIR));
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                             &std::fclose);
+  if (!file) throw IoError(path + ": cannot open problem file: " + std::strerror(errno));
+  std::string text;
+  char buffer[1 << 16];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) text.append(buffer, n);
+  if (std::ferror(file.get()))
+    throw IoError(path + ": cannot read problem file: " + std::strerror(errno));
+  return text;
+}
+
+}  // namespace
+
+ReadResult parse_problem_full(const std::string& yaml_text, const std::string& file_label,
+                              const std::vector<std::string>& overrides) {
+  YamlSource source(file_label);
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file_label + ":" + std::to_string(e.mark.line + 1) + ":" +
+                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + one_line(e.msg, 200));
+  }
+  if (!root.IsDefined() || root.IsNull()) throw InputError(file_label + ": empty problem file");
+  if (!root.IsMap())
+    throw InputError(file_label +
+                     ": must be a YAML map of sections (case:, bodies:, ...) (got " +
+                     quoted_value(root) + ")");
+  try {
+    for (const std::string& o : overrides) apply_override(root, o, source);
+    check_and_fill_defaults(root, source);
+    return {SpecBuilder(source).problem(root), effective_yaml(root, file_label, overrides)};
+  } catch (const YAML::Exception& e) {
+    // The checks above should leave yaml-cpp nothing to object to; if it does, keep the promise
+    // that bad input surfaces as a one-line InputError.
+    throw InputError(file_label + ": " + one_line(e.what(), 200));
+  }
+}
+
+ReadResult read_problem_full(const std::string& path, const std::vector<std::string>& overrides) {
+  return parse_problem_full(read_text_file(path), path, overrides);
+}
+
+model::ProblemSpec parse_problem(const std::string& yaml_text, const std::string& file_label,
+                                 const std::vector<std::string>& overrides) {
+  return parse_problem_full(yaml_text, file_label, overrides).spec;
+}
+
+model::ProblemSpec read_problem(const std::string& path, const std::vector<std::string>& overrides) {
+  return read_problem_full(path, overrides).spec;
+}
+
+}  // namespace hpcontact::io

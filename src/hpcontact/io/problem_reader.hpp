@@ -1,0 +1,45 @@
+// Reading a YAML problem file (with --set overrides) into a validated model::ProblemSpec.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hpcontact/io/input_schema.hpp"
+#include "hpcontact/model/problem_spec.hpp"
+
+namespace hpcontact::io {
+
+/// A validated problem and the effective input it was built from.
+struct ReadResult {
+  model::ProblemSpec spec;
+  /// The problem file with the overrides applied and every default filled in, as YAML text that
+  /// starts with comment lines naming the file and the overrides. Reading it back (without
+  /// overrides) gives the same spec, so a run can be reproduced from its own output.
+  /// Comments of the original file are not kept; keys keep the file's order, with filled-in
+  /// defaults after the keys that were given.
+  std::string effective_yaml;
+};
+
+/// Parses problem-file text. `file_label` names the file in messages (and becomes spec.file).
+/// `overrides` are "key.path=value" strings (--set), applied in order to the YAML tree before
+/// validation; see apply_override() in overrides.hpp. Every key is checked against
+/// input_schema(), then cross references (node ids, edges, edge set names) are checked.
+/// Throws InputError, one line: "<file>:<line>:<col>: <key.path>: <what is wrong> (got <value>)".
+ReadResult parse_problem_full(const std::string& yaml_text, const std::string& file_label,
+                              const std::vector<std::string>& overrides = {});
+
+/// Reads and parses the problem file at `path` (the label in messages is `path` as given).
+/// Throws IoError naming the path and the OS reason if the file cannot be read; InputError as
+/// parse_problem_full().
+ReadResult read_problem_full(const std::string& path,
+                             const std::vector<std::string>& overrides = {});
+
+/// parse_problem_full() without the effective input.
+model::ProblemSpec parse_problem(const std::string& yaml_text, const std::string& file_label,
+                                 const std::vector<std::string>& overrides = {});
+
+/// read_problem_full() without the effective input.
+model::ProblemSpec read_problem(const std::string& path,
+                                const std::vector<std::string>& overrides = {});
+
+}  // namespace hpcontact::io

@@ -1,0 +1,35 @@
+// Plane elasticity matrices.
+#include "hpcontact/material/linear_elastic.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "hpcontact/core/error.hpp"
+
+namespace hpcontact::material {
+
+void LinearElastic::validate(const std::string& where) const {
+  HPC_REQUIRE(std::isfinite(youngs_modulus) && youngs_modulus > 0, InputError, where,
+              ".E: Young's modulus must be > 0 (got ", youngs_modulus, ")");
+  HPC_REQUIRE(std::isfinite(poisson_ratio) && poisson_ratio > -1 && poisson_ratio < 0.5, InputError,
+              where, ".nu: Poisson's ratio must satisfy -1 < nu < 0.5 (got ", poisson_ratio, ")");
+}
+
+Elasticity LinearElastic::D() const {
+  const double E = youngs_modulus, nu = poisson_ratio;
+  Elasticity D = Elasticity::Zero();
+  if (plane == Plane::strain) {
+    const double c = E / ((1 + nu) * (1 - 2 * nu));
+    D << c * (1 - nu), c * nu, 0, c * nu, c * (1 - nu), 0, 0, 0, c * (1 - 2 * nu) / 2;
+  } else {
+    const double c = E / (1 - nu * nu);
+    D << c, c * nu, 0, c * nu, c, 0, 0, 0, c * (1 - nu) / 2;
+  }
+  return D;
+}
+
+double LinearElastic::sigma_zz(const Voigt& sigma) const {
+  return plane == Plane::strain ? poisson_ratio * (sigma(0) + sigma(1)) : 0.0;
+}
+
+}  // namespace hpcontact::material

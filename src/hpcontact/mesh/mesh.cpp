@@ -1,0 +1,107 @@
+// Mesh construction and topology checks.
+#include "hpcontact/mesh/mesh.hpp"
+
+#include <algorithm>
+
+#include "hpcontact/core/error.hpp"
+
+namespace hpcontact::mesh {
+
+namespace {
+long long pair_key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<long long>(a) << 32) | static_cast<unsigned>(b);
+}
+}  // namespace
+
+Mesh::Mesh(std::vector<Vec2> nodes, std::vector<int> node_ids, std::vector<std::array<int, 4>> quads,
+           std::vector<int> quad_ids, const std::vector<EdgeCurve>& curves, std::string context)
+    : nodes_(std::move(nodes)),
+      node_ids_(std::move(node_ids)),
+      quads_(std::move(quads)),
+      quad_ids_(std::move(quad_ids)),
+      context_(std::move(context)) {
+  HPC_ASSERT(nodes_.size() == node_ids_.size(), "ids ", node_ids_.size(), " nodes ", nodes_.size());
+  HPC_ASSERT(quads_.size() == quad_ids_.size(), "ids ", quad_ids_.size(), " quads ", quads_.size());
+  HPC_REQUIRE(!quads_.empty(), MeshError, context_, ": the mesh has no elements");
+  for (int i = 0; i < n_nodes(); ++i) {
+    HPC_REQUIRE(node_of_id_.emplace(node_ids_[i], i).second, MeshError, context_,
+                ": duplicate node id ", node_ids_[i]);
+  }
+  quad_edges_.resize(quads_.size());
+  quad_edge_reversed_.resize(quads_.size());
+  for (int q = 0; q < n_quads(); ++q) {
+    HPC_REQUIRE(quad_of_id_.emplace(quad_ids_[q], q).second, MeshError, context_,
+                ": duplicate element id ", quad_ids_[q]);
+    const auto& v = quads_[q];
+    for (int k = 0; k < 4; ++k) {
+      HPC_REQUIRE(v[k] >= 0 && v[k] < n_nodes(), MeshError, context_, ": element ", quad_ids_[q],
+                  " refers to a missing node");
+    }
+    // Counter-clockwise corners: every corner turns left (a convex, positively oriented polygon
+    // of the vertices; curved edges are checked later through the Jacobian).
+    for (int k = 0; k < 4; ++k) {
+      const Vec2 a = nodes_[v[k]], b = nodes_[v[(k + 1) % 4]], c = nodes_[v[(k + 3) % 4]];
+      const double cross = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+      HPC_REQUIRE(cross > 0, MeshError, context_, ": element ", quad_ids_[q],
+                  " is inverted or degenerate at node ", node_ids_[v[k]],
+                  " (its corners must be distinct and counter-clockwise, with every angle below 180°)");
+    }
+    for (int e = 0; e < 4; ++e) {
+      const int a = v[kEdgeVertices[e][0]], b = v[kEdgeVertices[e][1]];
+      auto [it, inserted] = edge_of_pair_.emplace(pair_key(a, b), n_edges());
+      if (inserted) {
+        Edge edge;
+        edge.v0 = std::min(a, b);
+        edge.v1 = std::max(a, b);
+        edge.quads[0] = q;
+        edge.local_edge[0] = e;
+        edges_.push_back(edge);
+      } else {
+        Edge& edge = edges_[it->second];
+        HPC_REQUIRE(edge.quads[1] < 0, MeshError, context_, ": the edge between nodes ",
+                    node_ids_[a], " and ", node_ids_[b], " belongs to more than two elements");
+        edge.quads[1] = q;
+        edge.local_edge[1] = e;
+      }
+      quad_edges_[q][e] = it->second;
+      quad_edge_reversed_[q][e] = a > b;
+    }
+  }
+  for (const auto& c : curves) {
+    const int e = find_edge(c.a, c.b);
+    HPC_REQUIRE(e >= 0, MeshError, context_, ": a curve is given between nodes ", node_ids_[c.a],
+                " and ", node_ids_[c.b], ", which are not joined by an element edge");
+    HPC_REQUIRE(!edges_[e].curve, MeshError, context_, ": two curves are given for the edge ",
+                node_ids_[c.a], "-", node_ids_[c.b]);
+    edges_[e].curve = c.a == edges_[e].v0 ? c.curve : c.curve->reversed();
+    const double tol = 1e-8 * std::max(1.0, (nodes_[c.a] - nodes_[c.b]).norm());
+    HPC_REQUIRE((c.curve->point(0.0) - nodes_[c.a]).norm() <= tol &&
+                    (c.curve->point(1.0) - nodes_[c.b]).norm() <= tol,
+                MeshError, context_, ": the curve ", c.curve->describe(), " of edge ",
+                node_ids_[c.a], "-", node_ids_[c.b], " does not end at its nodes");
+  }
+}
+
+int Mesh::find_edge(int a, int b) const {
+  auto it = edge_of_pair_.find(pair_key(a, b));
+  return it == edge_of_pair_.end() ? -1 : it->second;
+}
+
+int Mesh::node_index(int id) const {
+  auto it = node_of_id_.find(id);
+  return it == node_of_id_.end() ? -1 : it->second;
+}
+
+int Mesh::quad_index(int id) const {
+  auto it = quad_of_id_.find(id);
+  return it == quad_of_id_.end() ? -1 : it->second;
+}
+
+Vec2 Mesh::edge_point(int e, double t) const {
+  const Edge& edge = edges_[e];
+  if (edge.curve) return edge.curve->point(0.5 * (t + 1));
+  return 0.5 * (1 - t) * nodes_[edge.v0] + 0.5 * (1 + t) * nodes_[edge.v1];
+}
+
+}  // namespace hpcontact::mesh

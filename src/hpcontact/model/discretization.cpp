@@ -1,0 +1,345 @@
+// Discretisation of a problem: geometry, spaces, prescribed values (with projection onto edge
+// modes) and the external load vector.
+#include "hpcontact/model/discretization.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "hpcontact/basis/legendre.hpp"
+#include "hpcontact/basis/quadrature.hpp"
+#include "hpcontact/core/error.hpp"
+#include "hpcontact/fem/edge_load.hpp"
+#include "hpcontact/fem/elasticity.hpp"
+#include "hpcontact/fem/element_values.hpp"
+#include "hpcontact/model/expression.hpp"
+
+namespace hpcontact::model {
+
+namespace {
+
+std::string body_context(const ProblemSpec& spec, int b) {
+  return spec.file + ": bodies[" + std::to_string(b) + "] (" + spec.bodies[b].name + ")";
+}
+
+geometry::CurvePtr make_curve(const CurveSpec& c, const Vec2& a, const Vec2& b) {
+  const std::string where = c.where.str();
+  if (c.kind == CurveKind::arc)
+    return geometry::arc_through(a, b, Vec2(c.center[0], c.center[1]), c.radius, c.ccw, where);
+  auto fx = std::make_shared<Expression>(c.x_expr, std::vector<std::string>{"s"}, where + ".x");
+  auto fy = std::make_shared<Expression>(c.y_expr, std::vector<std::string>{"s"}, where + ".y");
+  return std::make_shared<geometry::FunctionCurve>(
+      [fx, fy](double s) { return Vec2((*fx)(s), (*fy)(s)); }, nullptr,
+      "parametric(" + c.x_expr + ", " + c.y_expr + ")");
+}
+
+Body make_body(const ProblemSpec& spec, int b) {
+  const BodySpec& bs = spec.bodies[b];
+  const std::string ctx = body_context(spec, b);
+  std::vector<Vec2> xy;
+  for (const auto& p : bs.nodes) xy.emplace_back(p[0], p[1]);
+  std::unordered_map<int, int> index;
+  for (size_t i = 0; i < bs.node_ids.size(); ++i) index[bs.node_ids[i]] = static_cast<int>(i);
+  auto node = [&](int id, const SourceRef& where) {
+    auto it = index.find(id);
+    HPC_REQUIRE(it != index.end(), InputError, where.str(), ": node ", id, " does not exist");
+    return it->second;
+  };
+  std::vector<std::array<int, 4>> quads;
+  for (const auto& e : bs.elements) {
+    std::array<int, 4> q;
+    for (int k = 0; k < 4; ++k) q[k] = node(e[k], bs.where);
+    quads.push_back(q);
+  }
+  std::vector<mesh::EdgeCurve> curves;
+  for (const auto& c : bs.curves) {
+    const int a = node(c.node_a, c.where), bb = node(c.node_b, c.where);
+    curves.push_back({a, bb, make_curve(c, xy[a], xy[bb])});
+  }
+  mesh::Mesh mesh(xy, bs.node_ids, quads, bs.element_ids, curves, ctx);
+
+  const DiscretizationSpec& ds = spec.discretization;
+  fem::SpaceOptions opt;
+  opt.lagrange = ds.method == Method::h;
+  opt.lagrange_type = ds.element == LagrangeElement::q4   ? basis::LagrangeType::q4
+                      : ds.element == LagrangeElement::q8 ? basis::LagrangeType::q8
+                                                          : basis::LagrangeType::q9;
+  opt.space = ds.space == ShapeSpace::trunk ? basis::Space::trunk : basis::Space::tensor_product;
+  for (int q = 0; q < mesh.n_quads(); ++q) {
+    std::array<int, 2> p = bs.degree ? *bs.degree : ds.degree;
+    if (auto it = bs.element_degrees.find(mesh.quad_id(q)); it != bs.element_degrees.end())
+      p = it->second;
+    opt.degrees.push_back(p);
+  }
+  fem::DofMap dofs(mesh, opt);
+
+  material::LinearElastic mat;
+  mat.youngs_modulus = bs.material.youngs_modulus;
+  mat.poisson_ratio = bs.material.poisson_ratio;
+  mat.plane = bs.material.plane == PlaneMode::plane_stress ? material::Plane::stress
+                                                           : material::Plane::strain;
+  mat.validate(bs.material.where.str());
+
+  Body body{bs.name, std::move(mesh), std::move(dofs), {}, {}, mat, bs.material.thickness, 0, {}};
+  for (int q = 0; q < body.mesh.n_quads(); ++q) {
+    body.maps.push_back(opt.lagrange ? mesh::ElementMap::isoparametric(body.mesh, q, opt.lagrange_type)
+                                     : mesh::ElementMap::blending(body.mesh, q));
+    body.n_gauss.push_back(body.dofs.element(q).max_degree() + ds.quadrature_extra);
+    mesh::check_jacobian(body.maps[q], body.mesh, q, body.n_gauss[q]);
+  }
+  for (const auto& set : bs.edge_sets) {
+    std::vector<int> edges;
+    for (const auto& pair : set.edges) {
+      const int e = body.mesh.find_edge(node(pair[0], set.where), node(pair[1], set.where));
+      HPC_REQUIRE(e >= 0, InputError, set.where.str(), ": nodes ", pair[0], " and ", pair[1],
+                  " are not joined by an element edge");
+      edges.push_back(e);
+    }
+    body.edge_sets[set.name] = edges;
+  }
+  return body;
+}
+
+const std::vector<int>& edge_set(const Body& body, const std::string& name, const SourceRef& where) {
+  auto it = body.edge_sets.find(name);
+  HPC_REQUIRE(it != body.edge_sets.end(), InputError, where.str(), ": no edge set named '", name,
+              "' in body '", body.name, "'");
+  return it->second;
+}
+
+/// Prescribes component `comp` = g(x, y) on an edge: vertex values, and the edge modes by the L2
+/// projection of g minus its linear interpolant onto phi_2..phi_p along the edge.
+void prescribe_edge(const Body& body, int e, int comp, const Expression& g, Discretization& d) {
+  const auto& edge = body.mesh.edge(e);
+  auto set = [&](int mode, double v) {
+    const int dof = body.dof_offset + 2 * mode + comp;
+    d.free_index[dof] = -1;
+    d.prescribed(dof) = v;
+  };
+  const Vec2 x0 = body.mesh.node(edge.v0), x1 = body.mesh.node(edge.v1);
+  const double g0 = g(x0.x(), x0.y()), g1 = g(x1.x(), x1.y());
+  set(body.dofs.vertex_mode(edge.v0), g0);
+  set(body.dofs.vertex_mode(edge.v1), g1);
+  const int p = body.dofs.edge_degree(e);
+  if (p < 2) return;
+  if (body.dofs.lagrange()) {  // the mid-edge node
+    const Vec2 xm = body.mesh.edge_point(e, 0.0);
+    set(body.dofs.edge_mode(e, 2), g(xm.x(), xm.y()));
+    return;
+  }
+  if (g.is_constant()) {
+    for (int k = 2; k <= p; ++k) set(body.dofs.edge_mode(e, k), 0.0);
+    return;
+  }
+  const int m = p - 1;
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m, m);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
+  const auto& rule = basis::gauss_legendre(p + 10);
+  std::vector<double> phi(p + 1);
+  for (int i = 0; i < rule.size(); ++i) {
+    const double t = rule.points[i], w = rule.weights[i];
+    const Vec2 x = body.mesh.edge_point(e, t);
+    const double r = g(x.x(), x.y()) - (0.5 * (1 - t) * g0 + 0.5 * (1 + t) * g1);
+    basis::hierarchic_1d(p, t, phi.data(), nullptr);
+    for (int k = 0; k < m; ++k) {
+      rhs(k) += w * phi[k + 2] * r;
+      for (int l = 0; l < m; ++l) M(k, l) += w * phi[k + 2] * phi[l + 2];
+    }
+  }
+  const Eigen::VectorXd a = M.ldlt().solve(rhs);
+  for (int k = 2; k <= p; ++k) set(body.dofs.edge_mode(e, k), a(k - 2));
+}
+
+void apply_constraints(const BodySpec& bs, const Body& body, Discretization& d) {
+  for (const auto& c : bs.constraints) {
+    const std::string where = c.where.str();
+    for (int comp = 0; comp < 2; ++comp) {
+      const auto& text = comp == 0 ? c.ux : c.uy;
+      if (!text) continue;
+      const Expression g(*text, {"x", "y"}, where + (comp == 0 ? ".ux" : ".uy"));
+      for (const auto& name : c.edge_sets)
+        for (int e : edge_set(body, name, c.where)) prescribe_edge(body, e, comp, g, d);
+      for (int id : c.nodes) {
+        const int v = body.mesh.node_index(id);
+        HPC_REQUIRE(v >= 0, InputError, where, ".nodes: node ", id, " does not exist");
+        const int dof = body.dof_offset + 2 * body.dofs.vertex_mode(v) + comp;
+        d.free_index[dof] = -1;
+        d.prescribed(dof) = g(body.mesh.node(v).x(), body.mesh.node(v).y());
+      }
+    }
+  }
+}
+
+double load_shape(LoadShape shape, double t) {
+  switch (shape) {
+    case LoadShape::constant: return 1.0;
+    case LoadShape::linear: return 1.0 - t;
+    case LoadShape::bspline1: return (1 - t) * (1 - t);
+    case LoadShape::bspline2: return t <= 0.5 ? 1 - 2 * t * t : 2 * (1 - t) * (1 - t);
+    case LoadShape::hermite: return 1 - 3 * t * t + 2 * t * t * t;
+    case LoadShape::expression: return 1.0;
+  }
+  return 1.0;
+}
+
+/// Integrates a distributed load over the loaded part of its edges. The integration on an edge
+/// is split where the load's interval starts or ends, so a load ending inside an element edge is
+/// integrated exactly (to quadrature accuracy) on both sides.
+void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d) {
+  const std::string where = ls.where.str();
+  const int axis = ls.along == 'y' ? 1 : 0;
+  std::unique_ptr<Expression> expr;
+  if (ls.shape == LoadShape::expression)
+    expr = std::make_unique<Expression>(ls.expression, std::vector<std::string>{"x", "y"},
+                                        where + ".expression");
+  // The loaded edges, each as (element, local edge).
+  std::vector<std::pair<int, int>> sides;
+  for (const auto& name : ls.edge_sets) {
+    for (int e : edge_set(body, name, ls.where)) {
+      const auto& edge = body.mesh.edge(e);
+      HPC_REQUIRE(edge.on_boundary(), InputError, where, ": edge ", body.mesh.node_id(edge.v0), "-",
+                  body.mesh.node_id(edge.v1), " of set '", name, "' is not on the boundary");
+      sides.emplace_back(edge.quads[0], edge.local_edge[0]);
+    }
+  }
+  // The interval [a, b] of the coordinate along which the profile parameter t runs.
+  double a, b;
+  if (ls.interval) {
+    a = (*ls.interval)[0];
+    b = (*ls.interval)[1];
+  } else {
+    a = std::numeric_limits<double>::infinity();
+    b = -a;
+    for (auto [q, le] : sides)
+      for (int i = 0; i <= 32; ++i) {
+        const double c = fem::edge_geometry(body.maps[q], le, -1 + i / 16.0, nullptr, nullptr)(axis);
+        a = std::min(a, c);
+        b = std::max(b, c);
+      }
+  }
+  const bool shaped = ls.shape != LoadShape::constant && ls.shape != LoadShape::expression;
+  HPC_REQUIRE(!shaped || std::abs(b - a) > 0, InputError, where,
+              ": the loaded edges have no extent along ", ls.along,
+              "; give 'along' the other coordinate or an 'interval'");
+  auto profile = [&](const Vec2& x) -> double {
+    const double c = x(axis);
+    const double lo = std::min(a, b), hi = std::max(a, b);
+    if (ls.interval && (c < lo - 1e-12 * (1 + std::abs(lo)) || c > hi + 1e-12 * (1 + std::abs(hi))))
+      return 0.0;
+    const double t = b != a ? std::clamp((c - a) / (b - a), 0.0, 1.0) : 0.0;
+    return expr ? (*expr)(x.x(), x.y()) : load_shape(ls.shape, t);
+  };
+  // Break points of each edge: where the coordinate crosses a or b.
+  auto pieces = [&](int q, int le) {
+    std::vector<double> ts{-1.0, 1.0};
+    if (!ls.interval) return ts;
+    for (double target : {a, b}) {
+      auto f = [&](double t) {
+        return fem::edge_geometry(body.maps[q], le, t, nullptr, nullptr)(axis) - target;
+      };
+      const int ns = 64;
+      for (int i = 0; i < ns; ++i) {
+        double t0 = -1 + 2.0 * i / ns, t1 = -1 + 2.0 * (i + 1) / ns, f0 = f(t0), f1 = f(t1);
+        if (f0 == 0 || f0 * f1 >= 0) continue;
+        for (int it = 0; it < 60; ++it) {
+          const double tm = 0.5 * (t0 + t1), fm = f(tm);
+          (f0 * fm <= 0 ? t1 : t0) = tm;
+          if (f0 * fm > 0) f0 = fm;
+        }
+        ts.push_back(0.5 * (t0 + t1));
+      }
+    }
+    std::sort(ts.begin(), ts.end());
+    return ts;
+  };
+  const double thickness = body.thickness;
+  double scale = 1.0;
+  const double magnitude =
+      ls.kind == LoadKind::pressure ? std::abs(ls.value[0]) : Vec2(ls.value[0], ls.value[1]).norm();
+  if (ls.resultant) {
+    // ∫ |load| ds over the loaded part, per unit value.
+    double integral = 0;
+    for (auto [q, le] : sides) {
+      const auto ts = pieces(q, le);
+      const auto& rule = basis::gauss_legendre(body.n_gauss[q] + 8);
+      for (size_t k = 0; k + 1 < ts.size(); ++k)
+        for (int i = 0; i < rule.size(); ++i) {
+          const double t = 0.5 * (ts[k] + ts[k + 1]) + 0.5 * (ts[k + 1] - ts[k]) * rule.points[i];
+          double ds;
+          const Vec2 x = fem::edge_geometry(body.maps[q], le, t, nullptr, &ds);
+          integral += 0.5 * (ts[k + 1] - ts[k]) * rule.weights[i] * ds * std::abs(profile(x));
+        }
+    }
+    HPC_REQUIRE(integral * magnitude > 0, InputError, where,
+                ": the load is zero everywhere, so it cannot be scaled to the resultant");
+    scale = *ls.resultant / (integral * magnitude);
+  }
+  const Vec2 value(ls.value[0], ls.value[1]);
+  fem::TractionFn traction = [&](const Vec2& x, const Vec2& n) -> Vec2 {
+    const double f = scale * profile(x);
+    return ls.kind == LoadKind::pressure ? Vec2(-f * ls.value[0] * n) : Vec2(f * value);
+  };
+  for (auto [q, le] : sides) {
+    const auto ts = pieces(q, le);
+    for (size_t k = 0; k + 1 < ts.size(); ++k) {
+      if (ts[k + 1] - ts[k] < 1e-14) continue;
+      const Eigen::VectorXd fe = fem::edge_load(body.dofs.element(q), body.maps[q], le, ts[k],
+                                                ts[k + 1], body.n_gauss[q] + 8, thickness, traction);
+      for (int i = 0; i < fe.size(); ++i) d.load(body.global_dof(q, i)) += fe(i);
+    }
+  }
+}
+
+}  // namespace
+
+Discretization discretize(const ProblemSpec& spec) {
+  HPC_REQUIRE(!spec.bodies.empty(), InputError, spec.file, ": no bodies");
+  Discretization d;
+  d.method = spec.discretization.method == Method::h ? "h" : "p";
+  for (size_t b = 0; b < spec.bodies.size(); ++b) {
+    d.bodies.push_back(make_body(spec, static_cast<int>(b)));
+    d.bodies.back().dof_offset = d.n_dofs;
+    d.n_dofs += d.bodies.back().dofs.n_dofs();
+  }
+  d.free_index.assign(d.n_dofs, 0);
+  d.prescribed = Eigen::VectorXd::Zero(d.n_dofs);
+  d.load = Eigen::VectorXd::Zero(d.n_dofs);
+  for (size_t b = 0; b < spec.bodies.size(); ++b) {
+    const BodySpec& bs = spec.bodies[b];
+    const Body& body = d.bodies[b];
+    apply_constraints(bs, body, d);
+    for (const auto& ls : bs.edge_loads) apply_edge_load(ls, body, d);
+    for (const auto& nf : bs.nodal_forces) {
+      const int v = body.mesh.node_index(nf.node);
+      HPC_REQUIRE(v >= 0, InputError, nf.where.str(), ": node ", nf.node, " does not exist");
+      for (int comp = 0; comp < 2; ++comp)
+        d.load(body.dof_offset + 2 * body.dofs.vertex_mode(v) + comp) += nf.force[comp];
+    }
+    const Vec2 bf(bs.body_force[0], bs.body_force[1]);
+    if (bf.norm() > 0) {
+      for (int q = 0; q < body.mesh.n_quads(); ++q) {
+        const auto ev = fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q],
+                                            body.mesh, q);
+        const Eigen::VectorXd fe = fem::body_force(ev, bf, body.thickness);
+        for (int i = 0; i < fe.size(); ++i) d.load(body.global_dof(q, i)) += fe(i);
+      }
+    }
+  }
+  // Free numbering: external modes of all bodies first, then internal modes.
+  for (int pass = 0; pass < 2; ++pass) {
+    for (const Body& body : d.bodies) {
+      for (int m = 0; m < body.dofs.n_modes(); ++m) {
+        const bool internal = m >= body.dofs.n_external_modes();
+        if (internal != (pass == 1)) continue;
+        for (int comp = 0; comp < 2; ++comp) {
+          const int dof = body.dof_offset + 2 * m + comp;
+          if (d.free_index[dof] >= 0) d.free_index[dof] = d.n_free++;
+        }
+      }
+    }
+    if (pass == 0) d.n_free_external = d.n_free;
+  }
+  return d;
+}
+
+}  // namespace hpcontact::model

@@ -1,0 +1,54 @@
+// From a ProblemSpec to the discrete model: meshes, element maps, mode numbering, constraints, loads.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "hpcontact/fem/dof_map.hpp"
+#include "hpcontact/material/linear_elastic.hpp"
+#include "hpcontact/mesh/element_map.hpp"
+#include "hpcontact/mesh/mesh.hpp"
+#include "hpcontact/model/problem_spec.hpp"
+
+namespace hpcontact::model {
+
+/// One discretised body. Its dofs occupy [dof_offset, dof_offset + dofs.n_dofs()) globally.
+struct Body {
+  std::string name;
+  mesh::Mesh mesh;
+  fem::DofMap dofs;
+  std::vector<mesh::ElementMap> maps;  ///< per element
+  std::vector<int> n_gauss;            ///< Gauss points per direction, per element
+  material::LinearElastic material;
+  double thickness = 1.0;
+  int dof_offset = 0;
+  std::map<std::string, std::vector<int>> edge_sets;  ///< name -> mesh edges
+
+  /// Global dof of local dof `local` (component-blocked) of element q.
+  int global_dof(int q, int local) const {
+    const auto& es = dofs.element(q);
+    const int n = es.n_modes();
+    return dof_offset + 2 * es.modes[local % n] + local / n;
+  }
+};
+
+/// The whole discrete problem. Free dofs are numbered external modes first (all bodies), then
+/// internal modes, so the condensed system is the leading block.
+struct Discretization {
+  std::vector<Body> bodies;
+  std::string method;  ///< "p" or "h"
+  int n_dofs = 0;      ///< all dofs, free and prescribed
+  int n_free = 0;      ///< free unknowns (summary.json "dofs")
+  int n_free_external = 0;
+  std::vector<int> free_index;  ///< per dof: its index among the free ones, or -1 if prescribed
+  Eigen::VectorXd prescribed;   ///< per dof: its prescribed value (0 where free)
+  Eigen::VectorXd load;         ///< external load per dof (edge loads, nodal forces, body force)
+};
+
+/// Builds the discretisation; input errors name the problem file and key (InputError, MeshError).
+Discretization discretize(const ProblemSpec& spec);
+
+}  // namespace hpcontact::model

@@ -1,0 +1,59 @@
+// muparser behind a small value type.
+#include "hpcontact/model/expression.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+#include <muParser.h>
+
+#include "hpcontact/core/error.hpp"
+
+namespace hpcontact::model {
+
+struct Expression::Impl {
+  mu::Parser parser;
+  double vars[2] = {0, 0};
+};
+
+Expression::Expression(const std::string& text, const std::vector<std::string>& names,
+                       const std::string& where)
+    : text_(text), where_(where), names_(names) {
+  char* end = nullptr;
+  value_ = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() && *end == '\0' && std::isfinite(value_)) {
+    constant_ = true;
+    return;
+  }
+  impl_ = std::make_unique<Impl>();
+  try {
+    for (size_t i = 0; i < names_.size() && i < 2; ++i)
+      impl_->parser.DefineVar(names_[i], &impl_->vars[i]);
+    impl_->parser.DefineConst("pi", 3.14159265358979323846);
+    impl_->parser.SetExpr(text_);
+    impl_->parser.Eval();
+  } catch (const mu::Parser::exception_type& e) {
+    throw InputError(where_ + ": cannot evaluate '" + text_ + "': " + e.GetMsg());
+  }
+}
+
+Expression::~Expression() = default;
+
+Expression::Expression(const Expression& other)
+    : Expression(other.text_, other.names_, other.where_) {}
+
+double Expression::operator()(double a, double b) const {
+  if (constant_) return value_;
+  impl_->vars[0] = a;
+  impl_->vars[1] = b;
+  double v;
+  try {
+    v = impl_->parser.Eval();
+  } catch (const mu::Parser::exception_type& e) {
+    throw InputError(where_ + ": cannot evaluate '" + text_ + "': " + e.GetMsg());
+  }
+  HPC_REQUIRE(std::isfinite(v), InputError, where_, ": '", text_, "' is not finite at (", a, ", ",
+              b, ")");
+  return v;
+}
+
+}  // namespace hpcontact::model

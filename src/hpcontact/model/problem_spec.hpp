@@ -1,0 +1,154 @@
+// The problem description as plain data: what a problem file says, validated once when read.
+#pragma once
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hpcontact::model {
+
+/// Where a value came from, for messages: "thick-cylinder.yaml:12:5: bodies[0].material.nu".
+struct SourceRef {
+  std::string file;
+  int line = 0;  ///< 1-based; 0 when unknown (e.g. a --set override)
+  int column = 0;
+  std::string key;  ///< dotted key path with [i] indices
+  std::string origin;  ///< "" when the value is in the file; else "from --set" or "default"
+  /// "file:line:col: key (origin)", leaving out the parts that are unknown or empty.
+  std::string str() const;
+};
+
+enum class PlaneMode { plane_strain, plane_stress };
+
+struct MaterialSpec {
+  std::string model = "linear-elastic";
+  double youngs_modulus = 0;  ///< E [force/length²]
+  double poisson_ratio = 0;   ///< ν
+  PlaneMode plane = PlaneMode::plane_strain;
+  double thickness = 1.0;  ///< out-of-plane thickness [length]
+  SourceRef where;
+};
+
+enum class CurveKind { arc, parametric };
+
+/// Exact geometry of one mesh edge between two nodes (user ids), oriented from node a to node b.
+struct CurveSpec {
+  int node_a = 0, node_b = 0;
+  CurveKind kind = CurveKind::arc;
+  std::array<double, 2> center{0, 0};  ///< arc
+  double radius = 0;                   ///< arc
+  int ccw = 0;                         ///< arc: +1 counter-clockwise, -1 clockwise, 0 shorter arc
+  std::string x_expr, y_expr;          ///< parametric: x(s), y(s) for s in [0, 1] from node a to b
+  SourceRef where;
+};
+
+/// A set of mesh edges, each given by its two end nodes (user ids).
+struct EdgeSetSpec {
+  std::string name;
+  std::vector<std::array<int, 2>> edges;
+  SourceRef where;
+};
+
+/// A prescribed displacement component on edges and/or nodes; value may be an expression in x, y.
+struct ConstraintSpec {
+  std::vector<std::string> edge_sets;  ///< names of EdgeSetSpec
+  std::vector<int> nodes;              ///< user node ids
+  std::optional<std::string> ux, uy;   ///< number or expression in x, y; unset = free
+  SourceRef where;
+};
+
+enum class LoadKind { pressure, traction };
+
+/// Load profile shapes along the loaded part, parameter t in [0, 1] from its start to its end:
+/// constant 1; linear 1 - t; bspline1 (1 - t)² (one-sided quadratic B-spline, ½(1-t)² up to scale);
+/// bspline2 1 - 2t² (t <= ½), 2(1 - t)² (t >= ½) (eq. 4.9 up to scale); hermite 1 - 3t² + 2t³
+/// (eq. 4.10 mapped from [-1, 1] and scaled to 1 at t = 0); expression: a user formula in x, y.
+enum class LoadShape { constant, linear, bspline1, bspline2, hermite, expression };
+
+/// Distributed load on edges: pressure (normal, positive pushes into the body) or traction (vector).
+struct EdgeLoadSpec {
+  std::vector<std::string> edge_sets;
+  LoadKind kind = LoadKind::pressure;
+  std::array<double, 2> value{0, 0};  ///< pressure: value[0]; traction: (tx, ty) at t = 0
+  std::optional<double> resultant;    ///< if set, scales the load so its |∫ load ds| equals it
+  LoadShape shape = LoadShape::constant;
+  std::string expression;  ///< shape == expression: formula in x, y multiplying value
+  char along = 'x';        ///< coordinate along which t runs: 'x' or 'y'
+  std::optional<std::array<double, 2>> interval;  ///< [start, end] in that coordinate; default: whole edges
+  SourceRef where;
+};
+
+/// Concentrated force at a node (user id).
+struct NodalForceSpec {
+  int node = 0;
+  std::array<double, 2> force{0, 0};
+  SourceRef where;
+};
+
+struct BodySpec {
+  std::string name;
+  MaterialSpec material;
+  std::vector<int> node_ids;
+  std::vector<std::array<double, 2>> nodes;
+  std::vector<int> element_ids;
+  std::vector<std::array<int, 4>> elements;  ///< user node ids, counter-clockwise
+  std::vector<CurveSpec> curves;
+  std::optional<std::array<int, 2>> degree;  ///< (p_xi, p_eta) for all elements; default: discretization.degree
+  std::map<int, std::array<int, 2>> element_degrees;  ///< per element user id
+  std::vector<EdgeSetSpec> edge_sets;
+  std::vector<ConstraintSpec> constraints;
+  std::vector<EdgeLoadSpec> edge_loads;
+  std::vector<NodalForceSpec> nodal_forces;
+  std::array<double, 2> body_force{0, 0};  ///< force per volume
+  SourceRef where;
+};
+
+enum class Method { p, h };
+enum class ShapeSpace { tensor_product, trunk };
+enum class LagrangeElement { q4, q8, q9 };
+
+struct DiscretizationSpec {
+  Method method = Method::p;
+  std::array<int, 2> degree{4, 4};  ///< p-version default (p_xi, p_eta)
+  ShapeSpace space = ShapeSpace::tensor_product;
+  LagrangeElement element = LagrangeElement::q8;  ///< h-version element
+  int quadrature_extra = 2;  ///< Gauss points per direction = max(p_xi, p_eta) + quadrature_extra
+  bool condense = false;     ///< static condensation of internal modes
+  SourceRef where;
+};
+
+struct SolverSpec {
+  std::string linear = "cholmod";  ///< "cholmod" or "ldlt"
+  SourceRef where;
+};
+
+/// A closed-form solution to measure the error against.
+struct ExactSpec {
+  std::string type;  ///< "" (none) or "lame"
+  double inner_radius = 0, outer_radius = 0;
+  double inner_pressure = 0, outer_pressure = 0;
+  std::array<double, 2> center{0, 0};
+  SourceRef where;
+};
+
+struct OutputSpec {
+  bool vtu = true;
+  int vtu_subdivisions = 0;  ///< 0: automatic from the degree
+  bool effective_input = true;
+  SourceRef where;
+};
+
+struct ProblemSpec {
+  std::string file;  ///< the problem file, for messages
+  std::string case_name;
+  std::string description;
+  std::vector<BodySpec> bodies;
+  DiscretizationSpec discretization;
+  SolverSpec solver;
+  ExactSpec exact;
+  OutputSpec output;
+};
+
+}  // namespace hpcontact::model

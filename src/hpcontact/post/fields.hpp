@@ -1,0 +1,43 @@
+// Displacement, strain and stress of a solution anywhere in an element, and derived measures.
+#pragma once
+
+#include <functional>
+
+#include <Eigen/Dense>
+
+#include "hpcontact/model/discretization.hpp"
+
+namespace hpcontact::post {
+
+struct PointResult {
+  Vec2 x;                    ///< physical point
+  Vec2 u;                    ///< displacement
+  Eigen::Vector3d strain;    ///< (xx, yy, gamma_xy)
+  Eigen::Vector3d stress;    ///< (xx, yy, xy)
+  double stress_zz = 0;      ///< out of plane: nu (sxx + syy) in plane strain
+  double von_mises = 0;      ///< from all four stress components
+  double principal_1 = 0;    ///< larger in-plane principal stress
+  double principal_2 = 0;    ///< smaller in-plane principal stress
+};
+
+/// Local coefficients of element q (component-blocked) from the global dof vector u.
+Eigen::VectorXd element_coefficients(const model::Body& body, int q, const Eigen::VectorXd& u);
+
+/// Fields at reference point (xi, eta) of element q of a body.
+PointResult evaluate(const model::Body& body, int q, double xi, double eta, const Eigen::VectorXd& u);
+
+/// von Mises stress from sxx, syy, szz, sxy.
+double von_mises(double sxx, double syy, double szz, double sxy);
+
+/// U = ½ B(u, u) = ½ ∫ eps^T D eps t dA over all bodies (seed eq. 2.31).
+double strain_energy(const model::Discretization& d, const Eigen::VectorXd& u);
+
+/// Exact strain (xx, yy, gamma_xy) as a function of the physical point.
+using StrainField = std::function<Eigen::Vector3d(const Vec2&)>;
+
+/// ||u_exact - u||_E² = ½ ∫ (eps_ex - eps)^T D (eps_ex - eps) t dA, integrated with
+/// `extra_points` more Gauss points per direction than the solve used.
+double energy_error_squared(const model::Discretization& d, const Eigen::VectorXd& u,
+                            const StrainField& exact, int extra_points = 4);
+
+}  // namespace hpcontact::post

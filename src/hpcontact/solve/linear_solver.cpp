@@ -1,0 +1,46 @@
+// CHOLMOD supernodal Cholesky through Eigen's wrapper, with Eigen's SimplicialLDLT as alternative.
+#include "hpcontact/solve/linear_solver.hpp"
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/SparseCholesky>
+
+#include "hpcontact/core/error.hpp"
+
+namespace hpcontact::solve {
+
+struct LinearSolver::Impl {
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholmod;
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
+};
+
+LinearSolverKind linear_solver_kind(const std::string& name, const std::string& where) {
+  if (name == "cholmod") return LinearSolverKind::cholmod;
+  if (name == "ldlt") return LinearSolverKind::ldlt;
+  throw InputError(where + ": unknown linear solver '" + name + "' (expected cholmod or ldlt)");
+}
+
+LinearSolver::LinearSolver(LinearSolverKind kind) : kind_(kind), impl_(std::make_unique<Impl>()) {}
+LinearSolver::~LinearSolver() = default;
+LinearSolver::LinearSolver(LinearSolver&&) noexcept = default;
+LinearSolver& LinearSolver::operator=(LinearSolver&&) noexcept = default;
+
+void LinearSolver::factorize(const SparseMatrix& A) {
+  bool ok;
+  if (kind_ == LinearSolverKind::cholmod) {
+    impl_->cholmod.compute(A);
+    ok = impl_->cholmod.info() == Eigen::Success;
+  } else {
+    impl_->ldlt.compute(A);
+    ok = impl_->ldlt.info() == Eigen::Success && (impl_->ldlt.vectorD().array() > 0).all();
+  }
+  HPC_REQUIRE(ok, NumericalError,
+              "the stiffness matrix is singular or not positive definite: a body is not "
+              "constrained against rigid-body motion, or an element is degenerate");
+}
+
+Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
+  return kind_ == LinearSolverKind::cholmod ? Eigen::VectorXd(impl_->cholmod.solve(b))
+                                            : Eigen::VectorXd(impl_->ldlt.solve(b));
+}
+
+}  // namespace hpcontact::solve

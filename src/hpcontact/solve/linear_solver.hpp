@@ -1,0 +1,37 @@
+// Sparse direct solution of symmetric positive definite systems (CHOLMOD or Eigen's LDLT).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <Eigen/Sparse>
+
+namespace hpcontact::solve {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+enum class LinearSolverKind { cholmod, ldlt };
+
+/// Parses "cholmod" / "ldlt"; InputError naming `where` otherwise.
+LinearSolverKind linear_solver_kind(const std::string& name, const std::string& where);
+
+/// Factorises once, solves many right-hand sides.
+class LinearSolver {
+public:
+  explicit LinearSolver(LinearSolverKind kind = LinearSolverKind::cholmod);
+  ~LinearSolver();
+  LinearSolver(LinearSolver&&) noexcept;
+  LinearSolver& operator=(LinearSolver&&) noexcept;
+
+  /// Factorises A (symmetric; the lower triangle is used). Throws NumericalError if A is not
+  /// positive definite, which for a stiffness matrix means a rigid-body motion is unconstrained.
+  void factorize(const SparseMatrix& A);
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+
+private:
+  struct Impl;
+  LinearSolverKind kind_;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace hpcontact::solve

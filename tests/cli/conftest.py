@@ -1,0 +1,30 @@
+"""Fixtures of the command-line tests: the path of the built hpcontact program."""
+import os
+import subprocess
+
+import pytest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def pytest_addoption(parser):
+    parser.addoption("--hpcontact", default=os.path.join(ROOT, "build", "hpcontact"),
+                     help="path of the hpcontact executable")
+
+
+@pytest.fixture(scope="session")
+def hpcontact(request):
+    path = request.config.getoption("--hpcontact")
+    if not os.path.exists(path):
+        pytest.fail(f"hpcontact executable not found at {path}")
+
+    def run(*args, timeout=300):
+        return subprocess.run([path, *map(str, args)], capture_output=True, text=True,
+                              timeout=timeout)
+
+    return run
+
+
+@pytest.fixture(scope="session")
+def root():
+    return ROOT

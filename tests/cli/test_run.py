@@ -1,0 +1,119 @@
+"""End-to-end runs of the hpcontact program: results written, bad input refused clearly."""
+import json
+import os
+import signal
+import xml.etree.ElementTree as ET
+
+import pytest
+
+LAME = "examples/lame/thick-cylinder.yaml"
+
+
+def test_lame_run_writes_summary_vtu_and_input(hpcontact, root, tmp_path):
+    """A run of the Lamé example leaves summary.json (RESULTS.md keys), a VTU and input.yaml."""
+    out = tmp_path / "lame"
+    r = hpcontact("run", os.path.join(root, LAME), "--out", out)
+    assert r.returncode == 0, r.stderr
+    s = json.loads((out / "summary.json").read_text())
+    for key in ("case", "method", "dofs", "strain_energy", "newton_iterations", "load_steps",
+                "converged", "wall_time_s"):
+        assert key in s
+    assert s["converged"] is True and s["method"] == "p"
+    assert s["error"]["energy_rel_percent"] <= 0.01
+    tree = ET.parse(out / "solution.vtu")
+    names = {a.get("Name") for a in tree.iter("DataArray")}
+    assert {"displacement", "von_mises", "sigma_xx", "sigma_zz", "principal_1"} <= names
+    # the effective input reproduces the run
+    r2 = hpcontact("run", out / "input.yaml", "--out", tmp_path / "again", "-q")
+    assert r2.returncode == 0, r2.stderr
+    s2 = json.loads((tmp_path / "again" / "summary.json").read_text())
+    assert s2["strain_energy"] == s["strain_energy"]
+
+
+def test_set_override_changes_degree(hpcontact, root, tmp_path):
+    """--set discretization.degree=3 runs the example at p = 3 (fewer dofs, larger error)."""
+    r = hpcontact("run", os.path.join(root, LAME), "--out", tmp_path, "-q",
+                  "--set", "discretization.degree=3")
+    assert r.returncode == 0, r.stderr
+    s = json.loads((tmp_path / "summary.json").read_text())
+    # 6 nodes, 7 edges (2 modes each at p = 3), 2 × 4 internal modes; 4 modes fixed per component
+    assert s["dofs"] == 2 * (6 + 7 * 2 + 2 * 4) - 2 * 4
+    assert s["error"]["energy_rel_percent"] > 0.01
+
+
+def test_check_describes_without_solving(hpcontact, root, tmp_path):
+    """check prints bodies, elements, degrees and free dofs, and writes nothing."""
+    r = hpcontact("check", os.path.join(root, LAME))
+    assert r.returncode == 0, r.stderr
+    assert "2 elements" in r.stdout and "free dofs 288" in r.stdout
+
+
+BAD_INPUTS = {
+    "empty.yaml": ("", "empty"),
+    "truncated.yaml": ("case: x\nbodies:\n  - name: a\n    material: {E: 1", "truncated"),
+    "garbage.yaml": ("\x00\x01\x02\xff\xfe binary", None),
+    "wrong-type.yaml": (None, "material.E"),
+    "negative-E.yaml": (None, "material.E"),
+    "nu-half.yaml": (None, "material.nu"),
+    "inverted.yaml": (None, "element 1"),
+    "unknown-key.yaml": (None, "colour"),
+    "missing-edge.yaml": (None, "edge_sets"),
+}
+
+
+def lame_text(root):
+    with open(os.path.join(root, LAME)) as f:
+        return f.read()
+
+
+def damaged(root, name):
+    text, _ = BAD_INPUTS[name]
+    if text is not None:
+        return text
+    t = lame_text(root)
+    if name == "wrong-type.yaml":
+        return t.replace("E: 200000", "E: stiff")
+    if name == "negative-E.yaml":
+        return t.replace("E: 200000", "E: -200000")
+    if name == "nu-half.yaml":
+        return t.replace("nu: 0.3", "nu: 0.5")
+    if name == "inverted.yaml":
+        return t.replace("1: [1, 2, 4, 3]", "1: [1, 3, 4, 2]")
+    if name == "unknown-key.yaml":
+        return t.replace("method: p", "method: p\n  colour: red")
+    if name == "missing-edge.yaml":
+        return t.replace("bottom: [[1, 2]]", "bottom: [[1, 4]]")
+    raise KeyError(name)
+
+
+@pytest.mark.parametrize("name", sorted(BAD_INPUTS))
+def test_bad_input_fails_cleanly(hpcontact, root, tmp_path, name):
+    """Damaged input ends with exit code 1, one message naming the file, no crash, no summary."""
+    path = tmp_path / name
+    path.write_bytes(damaged(root, name).encode("utf-8", "surrogateescape")
+                     if isinstance(damaged(root, name), str) else damaged(root, name))
+    out = tmp_path / "out"
+    r = hpcontact("run", path, "--out", out, "-q")
+    assert r.returncode == 1, (r.returncode, r.stdout, r.stderr)
+    assert r.returncode != -signal.SIGSEGV
+    assert name in r.stderr, r.stderr
+    _, fragment = BAD_INPUTS[name]
+    if fragment and fragment not in ("empty", "truncated"):
+        assert fragment in r.stderr, r.stderr
+    assert not (out / "summary.json").exists()
+
+
+def test_cli_mistakes_exit_2(hpcontact, root, tmp_path):
+    """Unknown sub-command or missing file: one-line message and the usage, exit code 2."""
+    for args in (["frobnicate"], ["run", tmp_path / "nope.yaml"], ["run"]):
+        r = hpcontact(*args)
+        assert r.returncode == 2, (args, r.stderr)
+        assert "hpcontact" in r.stderr and "Usage" in r.stderr
+
+
+def test_bad_set_override_is_an_input_error(hpcontact, root, tmp_path):
+    """A --set naming a key that does not exist is refused with the key in the message."""
+    r = hpcontact("run", os.path.join(root, LAME), "--out", tmp_path, "--set",
+                  "discretization.colour=3")
+    assert r.returncode == 1
+    assert "discretization.colour" in r.stderr

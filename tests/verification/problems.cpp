@@ -1,0 +1,119 @@
+// Construction of the verification problems.
+#include "problems.hpp"
+
+#include <cmath>
+
+namespace hpcontact::test_problems {
+
+model::BodySpec body(const std::string& name, double E, double nu) {
+  model::BodySpec b;
+  b.name = name;
+  b.material.youngs_modulus = E;
+  b.material.poisson_ratio = nu;
+  return b;
+}
+
+void add_node(model::BodySpec& b, int id, double x, double y) {
+  b.node_ids.push_back(id);
+  b.nodes.push_back({x, y});
+}
+
+void add_element(model::BodySpec& b, int id, int n1, int n2, int n3, int n4) {
+  b.element_ids.push_back(id);
+  b.elements.push_back({n1, n2, n3, n4});
+}
+
+void add_edge_set(model::BodySpec& b, const std::string& name, std::vector<std::array<int, 2>> edges) {
+  model::EdgeSetSpec s;
+  s.name = name;
+  s.edges = std::move(edges);
+  b.edge_sets.push_back(s);
+}
+
+model::ProblemSpec distorted_patch(int p) {
+  model::ProblemSpec spec;
+  spec.file = "distorted-patch";
+  spec.case_name = "distorted-patch";
+  auto b = body("patch", 1000.0, 0.25);
+  //  7 --- 8 --- 9
+  //  |     |     |
+  //  4 --- 5 --- 6
+  //  |     |     |
+  //  1 --- 2 --- 3
+  add_node(b, 1, 0, 0);
+  add_node(b, 2, 0.9, 0);
+  add_node(b, 3, 2, 0);
+  add_node(b, 4, 0, 1.1);
+  add_node(b, 5, 1.2, 0.75);
+  add_node(b, 6, 2, 0.8);
+  add_node(b, 7, 0, 2);
+  add_node(b, 8, 1.3, 2);
+  add_node(b, 9, 2, 2);
+  add_element(b, 1, 1, 2, 5, 4);
+  add_element(b, 2, 2, 3, 6, 5);
+  add_element(b, 3, 4, 5, 8, 7);
+  add_element(b, 4, 5, 6, 9, 8);
+  add_edge_set(b, "bottom", {{1, 2}, {2, 3}});
+  add_edge_set(b, "right", {{3, 6}, {6, 9}});
+  add_edge_set(b, "top", {{9, 8}, {8, 7}});
+  add_edge_set(b, "left", {{7, 4}, {4, 1}});
+  add_edge_set(b, "boundary",
+               {{1, 2}, {2, 3}, {3, 6}, {6, 9}, {9, 8}, {8, 7}, {7, 4}, {4, 1}});
+  spec.bodies.push_back(b);
+  spec.discretization.degree = {p, p};
+  return spec;
+}
+
+model::ProblemSpec quarter_circle_2x2(int p) {
+  const double R = 10.0;
+  auto on_arc = [&](double alpha_deg) {
+    const double a = alpha_deg * M_PI / 180.0;
+    return std::array<double, 2>{R * std::sin(a), R - R * std::cos(a)};
+  };
+  const double alpha_A = std::asin(2.48 / R) * 180.0 / M_PI;
+  model::ProblemSpec spec;
+  spec.file = "quarter-circle";
+  spec.case_name = "quarter-circle-2x2";
+  auto b = body("cylinder", 210000.0, 0.3);
+  //  centre line y = R:  7 (0,R) --- 8 --- 9 (R,R)
+  //  symmetry x = 0:     4 ---------- 5 ---- 6 (arc)
+  //                      1 (0,0) ---- 2=A -- 3 (arc)
+  const auto A = on_arc(alpha_A), a3 = on_arc(40.0), a6 = on_arc(65.0);
+  add_node(b, 1, 0.0, 0.0);
+  add_node(b, 2, A[0], A[1]);
+  add_node(b, 3, a3[0], a3[1]);
+  add_node(b, 4, 0.0, 4.0);
+  add_node(b, 5, 3.6, 4.6);
+  add_node(b, 6, a6[0], a6[1]);
+  add_node(b, 7, 0.0, R);
+  add_node(b, 8, 5.0, R);
+  add_node(b, 9, R, R);
+  add_element(b, 1, 1, 2, 5, 4);
+  add_element(b, 2, 2, 3, 6, 5);
+  add_element(b, 3, 4, 5, 8, 7);
+  add_element(b, 4, 5, 6, 9, 8);
+  for (auto [a, c] : std::vector<std::array<int, 2>>{{1, 2}, {2, 3}, {3, 6}, {6, 9}}) {
+    model::CurveSpec cs;
+    cs.node_a = a;
+    cs.node_b = c;
+    cs.kind = model::CurveKind::arc;
+    cs.center = {0.0, R};
+    cs.radius = R;
+    b.curves.push_back(cs);
+  }
+  add_edge_set(b, "symmetry", {{1, 4}, {4, 7}});
+  add_edge_set(b, "centre", {{7, 8}, {8, 9}});
+  add_edge_set(b, "arc", {{1, 2}, {2, 3}, {3, 6}, {6, 9}});
+  model::ConstraintSpec sym;
+  sym.edge_sets = {"symmetry"};
+  sym.ux = "0";
+  model::ConstraintSpec top;
+  top.edge_sets = {"centre"};
+  top.uy = "-0.01";
+  b.constraints = {sym, top};
+  spec.bodies.push_back(b);
+  spec.discretization.degree = {p, p};
+  return spec;
+}
+
+}  // namespace hpcontact::test_problems

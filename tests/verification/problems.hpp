@@ -1,0 +1,28 @@
+// Problems built in code for the verification tests: patches, polynomial fields, the quarter circle.
+#pragma once
+
+#include <string>
+
+#include "hpcontact/model/problem_spec.hpp"
+
+namespace hpcontact::test_problems {
+
+/// A body with the material set and nothing else.
+model::BodySpec body(const std::string& name, double E, double nu);
+
+/// Adds node (id, x, y) and element (id, n1..n4) entries.
+void add_node(model::BodySpec& b, int id, double x, double y);
+void add_element(model::BodySpec& b, int id, int n1, int n2, int n3, int n4);
+void add_edge_set(model::BodySpec& b, const std::string& name, std::vector<std::array<int, 2>> edges);
+
+/// The square [0,2]² as 2×2 quadrilaterals with the centre node moved to (1.2, 0.75) and the
+/// mid-side nodes moved off their straight positions: a distorted patch. Edge set "boundary"
+/// holds its 8 boundary edges; "left", "right", "bottom", "top" the sides.
+model::ProblemSpec distorted_patch(int p);
+
+/// Quarter of the Hertz cylinder (R = 10, centre (0, 10)): 2×2 elements, 9 nodes, exact arc,
+/// node A on the arc at x = 2.48. Edge sets "symmetry" (x = 0), "centre" (y = 10), "arc".
+/// ux = 0 on "symmetry", uy = -0.01 on "centre"; no contact (a linear problem).
+model::ProblemSpec quarter_circle_2x2(int p);
+
+}  // namespace hpcontact::test_problems
