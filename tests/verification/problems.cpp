@@ -117,3 +117,59 @@ model::ProblemSpec quarter_circle_2x2(int p) {
 }
 
 }  // namespace hpcontact::test_problems
+
+namespace hpcontact::test_problems {
+
+model::ProblemSpec lame_quarter(int n_r, int n_theta) {
+  const double a = 10, b = 20;
+  model::ProblemSpec spec;
+  spec.file = "lame-quarter";
+  spec.case_name = "lame-quarter";
+  auto bs = body("cylinder", 200000.0, 0.3);
+  auto id = [&](int i, int j) { return 1 + j * (n_r + 1) + i; };  // i radial, j angular
+  for (int j = 0; j <= n_theta; ++j)
+    for (int i = 0; i <= n_r; ++i) {
+      const double r = a + (b - a) * i / n_r, t = 0.5 * M_PI * j / n_theta;
+      add_node(bs, id(i, j), r * std::cos(t), r * std::sin(t));
+    }
+  int e = 1;
+  for (int j = 0; j < n_theta; ++j)
+    for (int i = 0; i < n_r; ++i) add_element(bs, e++, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  std::vector<std::array<int, 2>> inner, bottom, left;
+  for (int j = 0; j <= n_theta; ++j)
+    for (int i = 0; i <= n_r; ++i) {
+      if (j < n_theta) {
+        model::CurveSpec c;
+        c.node_a = id(i, j);
+        c.node_b = id(i, j + 1);
+        c.radius = a + (b - a) * i / n_r;
+        bs.curves.push_back(c);
+        if (i == 0) inner.push_back({id(0, j), id(0, j + 1)});
+      }
+    }
+  for (int i = 0; i < n_r; ++i) {
+    bottom.push_back({id(i, 0), id(i + 1, 0)});
+    left.push_back({id(i, n_theta), id(i + 1, n_theta)});
+  }
+  add_edge_set(bs, "inner", inner);
+  add_edge_set(bs, "bottom", bottom);
+  add_edge_set(bs, "left", left);
+  model::ConstraintSpec c1, c2;
+  c1.edge_sets = {"bottom"};
+  c1.uy = "0";
+  c2.edge_sets = {"left"};
+  c2.ux = "0";
+  bs.constraints = {c1, c2};
+  model::EdgeLoadSpec load;
+  load.edge_sets = {"inner"};
+  load.value = {100.0, 0.0};
+  bs.edge_loads = {load};
+  spec.bodies.push_back(bs);
+  spec.exact.type = "lame";
+  spec.exact.inner_radius = a;
+  spec.exact.outer_radius = b;
+  spec.exact.inner_pressure = 100;
+  return spec;
+}
+
+}  // namespace hpcontact::test_problems

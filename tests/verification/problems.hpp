@@ -26,3 +26,11 @@ model::ProblemSpec distorted_patch(int p);
 model::ProblemSpec quarter_circle_2x2(int p);
 
 }  // namespace hpcontact::test_problems
+
+namespace hpcontact::test_problems {
+
+/// The Lamé quarter cylinder (radii 10, 20, internal pressure 100, E = 200000, nu = 0.3) as a
+/// structured n_r × n_theta mesh with exact arcs; "exact" names the Lamé solution.
+model::ProblemSpec lame_quarter(int n_r, int n_theta);
+
+}  // namespace hpcontact::test_problems

@@ -26,6 +26,8 @@ constexpr double max_degree = 30;
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 const std::vector<KeySpec>& input_schema() {
+  // One entry per key, laid out by hand to read as a table.
+  // clang-format off
   static const std::vector<KeySpec> table{
       {.path = "case", .type = T::string, .required = true,
        .doc = "Short name of the case; names the output files."},
@@ -177,6 +179,7 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "output.effective_input", .type = T::boolean, .default_yaml = "true",
        .doc = "Write the effective input (defaults filled, --set applied) to reproduce the run."},
   };
+  // clang-format on
   return table;
 }
 #pragma GCC diagnostic pop
@@ -238,7 +241,7 @@ std::string describe_default(const KeySpec& key) {
   if (key.required) return "required";
   if (key.default_yaml.empty()) return "optional";
   if (key.default_yaml == "{}") return "(all defaults)";
-  return "`" + std::string(key.default_yaml) + "`";
+  return std::string("`").append(key.default_yaml).append("`");
 }
 
 /// The table of the keys under `parent_pattern`, then those of its sections, depth first.
@@ -250,8 +253,7 @@ void render_section(std::ostringstream& md, std::string_view parent_pattern) {
        << describe_default(*key) << " | " << key->unit << " | " << escape_cell(key->doc) << " |\n";
   for (const KeySpec* key : children) {
     if (key->type != T::section && key->type != T::section_list) continue;
-    const std::string pattern =
-        std::string(key->path) + (key->type == T::section_list ? "[]" : "");
+    const std::string pattern = std::string(key->path) + (key->type == T::section_list ? "[]" : "");
     md << "\n## `" << pattern << "`\n\n" << key->doc << "\n\n";
     render_section(md, pattern);
   }

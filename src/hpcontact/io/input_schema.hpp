@@ -1,4 +1,5 @@
-// The one declaration of every problem-file key (type, default, unit, meaning) that validation and docs share.
+// The one declaration of every problem-file key (type, default, unit, meaning) that validation and
+// docs share.
 #pragma once
 
 #include <optional>

@@ -82,8 +82,8 @@ void apply_override(YAML::Node& root, const std::string& override_text, YamlSour
       if (!current.IsSequence())
         throw InputError(label + path + " is not a list (got " + shown_value(current) + ")");
       if (step.index >= current.size())
-        throw InputError(label + join_index(path, step.index) + ": no such list element (" +
-                         path + " has " + std::to_string(current.size()) + ")");
+        throw InputError(label + join_index(path, step.index) + ": no such list element (" + path +
+                         " has " + std::to_string(current.size()) + ")");
       path = join_index(path, step.index);
       if (last) {
         current[step.index] = value;

@@ -1,8 +1,10 @@
-// Problem file -> YAML tree -> overrides -> schema check with defaults -> cross-checked ProblemSpec.
+// Problem file -> YAML tree -> overrides -> schema check with defaults -> cross-checked
+// ProblemSpec.
 #include "hpcontact/io/problem_reader.hpp"
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -10,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <sstream>
 #include <utility>
 
 #include "hpcontact/core/error.hpp"
@@ -28,7 +31,9 @@ double number(const YAML::Node& node) { return *to_number(node); }
 int integer(const YAML::Node& node) { return *to_integer(node); }
 bool boolean(const YAML::Node& node) { return *to_boolean(node); }
 std::array<double, 2> point(const YAML::Node& node) { return {number(node[0]), number(node[1])}; }
-std::array<int, 2> node_pair(const YAML::Node& node) { return {integer(node[0]), integer(node[1])}; }
+std::array<int, 2> node_pair(const YAML::Node& node) {
+  return {integer(node[0]), integer(node[1])};
+}
 std::array<int, 2> degree(const YAML::Node& node) {
   if (node.IsScalar()) return {integer(node), integer(node)};
   return node_pair(node);
@@ -41,12 +46,14 @@ Edge undirected(std::array<int, 2> nodes) {
 }
 
 std::string shown_pair(std::array<int, 2> nodes) {
-  return "[" + std::to_string(nodes[0]) + ", " + std::to_string(nodes[1]) + "]";
+  std::ostringstream os;
+  os << '[' << nodes[0] << ", " << nodes[1] << ']';
+  return os.str();
 }
 
 /// Builds the ProblemSpec from a checked tree, checking the cross references the schema cannot.
 class SpecBuilder {
-public:
+ public:
   explicit SpecBuilder(const YamlSource& source) : source_(source) {}
 
   ProblemSpec problem(const YAML::Node& root) {
@@ -71,7 +78,7 @@ public:
     return spec;
   }
 
-private:
+ private:
   BodySpec body(const YAML::Node& node, const std::string& path) {
     BodySpec b;
     b.name = node["name"].Scalar();
@@ -94,7 +101,8 @@ private:
     m.model = node["model"].Scalar();
     m.youngs_modulus = number(node["E"]);
     m.poisson_ratio = number(node["nu"]);
-    m.plane = node["plane"].Scalar() == "stress" ? PlaneMode::plane_stress : PlaneMode::plane_strain;
+    m.plane =
+        node["plane"].Scalar() == "stress" ? PlaneMode::plane_stress : PlaneMode::plane_strain;
     m.thickness = number(node["thickness"]);
     m.where = source_.where(node, path);
     return m;
@@ -118,7 +126,8 @@ private:
         corners[k] = integer(it->second[k]);
         require_node(it->second[k], join_index(element_path, k), corners[k], path);
       }
-      for (std::size_t k = 0; k < 4; ++k) edges_.insert(undirected({corners[k], corners[(k + 1) % 4]}));
+      for (std::size_t k = 0; k < 4; ++k)
+        edges_.insert(undirected({corners[k], corners[(k + 1) % 4]}));
       b.element_ids.push_back(integer(it->first));
       b.elements.push_back(corners);
       element_ids_.insert(b.element_ids.back());
@@ -135,8 +144,9 @@ private:
       require_edge(node["nodes"], curve_path + ".nodes", ends);
       const auto [at, inserted] = curve_paths.emplace(undirected(ends), curve_path);
       if (!inserted)
-        source_.fail(node["nodes"], curve_path + ".nodes",
-                     "edge already has a curve at " + at->second + " (got " + shown_pair(ends) + ")");
+        source_.fail(
+            node["nodes"], curve_path + ".nodes",
+            "edge already has a curve at " + at->second + " (got " + shown_pair(ends) + ")");
       c.node_a = ends[0];
       c.node_b = ends[1];
       if (bool(node["arc"]) == bool(node["parametric"]))
@@ -180,7 +190,8 @@ private:
         const std::string edge_path = join_index(set_path, k);
         require_edge(it->second[k], edge_path, ends);
         if (!seen.insert(undirected(ends)).second)
-          source_.fail(it->second[k], edge_path, "edge listed twice (got " + shown_pair(ends) + ")");
+          source_.fail(it->second[k], edge_path,
+                       "edge listed twice (got " + shown_pair(ends) + ")");
         set.edges.push_back(ends);
       }
       b.edge_sets.push_back(std::move(set));
@@ -193,14 +204,16 @@ private:
       const std::string item_path = join_index(path, i);
       ConstraintSpec c;
       if (!node["edges"] && !node["nodes"])
-        source_.fail(node, item_path, "needs 'edges', 'nodes' or both (got " + shown_value(node) + ")");
+        source_.fail(node, item_path,
+                     "needs 'edges', 'nodes' or both (got " + shown_value(node) + ")");
       if (!node["ux"] && !node["uy"])
         source_.fail(node, item_path, "needs 'ux', 'uy' or both (got " + shown_value(node) + ")");
       if (node["edges"]) c.edge_sets = edge_set_names(node["edges"], item_path + ".edges", b);
       if (const YAML::Node nodes = node["nodes"]) {
         for (std::size_t k = 0; k < nodes.size(); ++k) {
           c.nodes.push_back(integer(nodes[k]));
-          require_node(nodes[k], join_index(item_path + ".nodes", k), c.nodes.back(), body_path(path));
+          require_node(nodes[k], join_index(item_path + ".nodes", k), c.nodes.back(),
+                       body_path(path));
         }
       }
       if (node["ux"]) c.ux = node["ux"].Scalar();
@@ -237,8 +250,9 @@ private:
       if (is_expression && !node["expression"])
         source_.fail(node, item_path, "missing key 'expression' (required by shape: expression)");
       if (!is_expression && node["expression"])
-        source_.fail(node["expression"], item_path + ".expression",
-                     "only allowed with shape: expression (got shape: " + node["shape"].Scalar() + ")");
+        source_.fail(
+            node["expression"], item_path + ".expression",
+            "only allowed with shape: expression (got shape: " + node["shape"].Scalar() + ")");
       if (is_expression) load.expression = node["expression"].Scalar();
       load.along = node["along"].Scalar()[0];
       if (node["interval"]) {
@@ -271,8 +285,9 @@ private:
     std::vector<std::string> names;
     for (std::size_t k = 0; k < list.size(); ++k) {
       names.push_back(list[k].Scalar());
-      const bool defined = std::any_of(b.edge_sets.begin(), b.edge_sets.end(),
-                                       [&](const EdgeSetSpec& set) { return set.name == names.back(); });
+      const bool defined =
+          std::any_of(b.edge_sets.begin(), b.edge_sets.end(),
+                      [&](const EdgeSetSpec& set) { return set.name == names.back(); });
       if (!defined) {
         std::string known;
         for (const EdgeSetSpec& set : b.edge_sets) known += (known.empty() ? "" : ", ") + set.name;
@@ -284,9 +299,11 @@ private:
     return names;
   }
 
-  void require_node(const YAML::Node& node, const std::string& path, int id, const std::string& body) {
+  void require_node(const YAML::Node& node, const std::string& path, int id,
+                    const std::string& body) {
     if (!node_ids_.count(id))
-      source_.fail(node, path, "no such node in " + body + ".nodes (got " + std::to_string(id) + ")");
+      source_.fail(node, path,
+                   "no such node in " + body + ".nodes (got " + std::to_string(id) + ")");
   }
 
   void require_edge(const YAML::Node& node, const std::string& path, std::array<int, 2> ends) {
@@ -305,7 +322,7 @@ private:
     d.degree = degree(node["degree"]);
     d.space = node["space"].Scalar() == "trunk" ? ShapeSpace::trunk : ShapeSpace::tensor_product;
     const std::string element = node["element"].Scalar();
-    d.element = element == "Q4" ? LagrangeElement::q4
+    d.element = element == "Q4"   ? LagrangeElement::q4
                 : element == "Q9" ? LagrangeElement::q9
                                   : LagrangeElement::q8;
     d.quadrature_extra = integer(node["quadrature_extra"]);
@@ -321,7 +338,8 @@ private:
     e.type = node["type"].Scalar();
     for (const char* key : {"inner_radius", "outer_radius"})
       if (!node[key])
-        source_.fail(node, "exact", std::string("missing key '") + key + "' (required by type: lame)");
+        source_.fail(node, "exact",
+                     std::string("missing key '") + key + "' (required by type: lame)");
     e.inner_radius = number(node["inner_radius"]);
     e.outer_radius = number(node["outer_radius"]);
     if (e.outer_radius <= e.inner_radius)
@@ -385,12 +403,12 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
     root = YAML::Load(yaml_text);
   } catch (const YAML::ParserException& e) {
     throw InputError(file_label + ":" + std::to_string(e.mark.line + 1) + ":" +
-                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + one_line(e.msg, 200));
+                     std::to_string(e.mark.column + 1) +
+                     ": YAML syntax error: " + one_line(e.msg, 200));
   }
   if (!root.IsDefined() || root.IsNull()) throw InputError(file_label + ": empty problem file");
   if (!root.IsMap())
-    throw InputError(file_label +
-                     ": must be a YAML map of sections (case:, bodies:, ...) (got " +
+    throw InputError(file_label + ": must be a YAML map of sections (case:, bodies:, ...) (got " +
                      quoted_value(root) + ")");
   try {
     for (const std::string& o : overrides) apply_override(root, o, source);
@@ -412,7 +430,8 @@ model::ProblemSpec parse_problem(const std::string& yaml_text, const std::string
   return parse_problem_full(yaml_text, file_label, overrides).spec;
 }
 
-model::ProblemSpec read_problem(const std::string& path, const std::vector<std::string>& overrides) {
+model::ProblemSpec read_problem(const std::string& path,
+                                const std::vector<std::string>& overrides) {
   return read_problem_full(path, overrides).spec;
 }
 

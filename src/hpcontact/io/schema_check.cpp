@@ -14,7 +14,7 @@ namespace {
 using T = ValueType;
 
 class SchemaChecker {
-public:
+ public:
   explicit SchemaChecker(YamlSource& source) : source_(source) {}
 
   /// Checks the keys of `map` (a YAML map) declared under `pattern`; `path` is its concrete path.
@@ -32,7 +32,8 @@ public:
                                      [&](const KeySpec* child) { return name_of(child) == name; });
       if (!known) {
         std::string allowed;
-        for (const KeySpec* child : children) allowed += (allowed.empty() ? "" : ", ") + name_of(child);
+        for (const KeySpec* child : children)
+          allowed += (allowed.empty() ? "" : ", ") + name_of(child);
         source_.fail(it->first, key_path, "unknown key (allowed here: " + allowed + ")");
       }
     }
@@ -41,9 +42,7 @@ public:
       const std::string name = name_of(child);
       const std::string key_path = join_key(path, name);
       if (!lookup[name]) {
-        if (child->required)
-          source_.fail(map, path,
-                       "missing required key '" + name + "'");
+        if (child->required) source_.fail(map, path, "missing required key '" + name + "'");
         if (child->default_yaml.empty()) continue;
         // A section starts as an empty block map; its own defaults are filled in below.
         map[name] = child->type == T::section ? YAML::Node(YAML::NodeType::Map)
@@ -54,7 +53,7 @@ public:
     }
   }
 
-private:
+ private:
   void check_value(const YAML::Node& node, const KeySpec& key, const std::string& path) {
     switch (key.type) {
       case T::section:
@@ -72,7 +71,8 @@ private:
         return;
       }
       case T::string:
-        if (!node.IsScalar()) source_.fail(node, path, "must be a string (got " + shown_value(node) + ")");
+        if (!node.IsScalar())
+          source_.fail(node, path, "must be a string (got " + shown_value(node) + ")");
         return;
       case T::scalar_text:
         if (!node.IsScalar() || node.Scalar().empty())
@@ -101,59 +101,67 @@ private:
           check_integer(node[i], KeySpec{}, join_index(path, i));
         return;
       case T::node_table:
-        for_each_table_entry(node, key, path, true, [&](const YAML::Node& value, const std::string& p) {
-          check_pair(value, p, false, "[x, y]");
-        });
+        for_each_table_entry(node, key, path, true,
+                             [&](const YAML::Node& value, const std::string& p) {
+                               check_pair(value, p, false, "[x, y]");
+                             });
         return;
       case T::element_table:
-        for_each_table_entry(node, key, path, true, [&](const YAML::Node& value, const std::string& p) {
-          check_element(value, p);
-        });
+        for_each_table_entry(
+            node, key, path, true,
+            [&](const YAML::Node& value, const std::string& p) { check_element(value, p); });
         return;
       case T::degree_table:
-        for_each_table_entry(node, key, path, true, [&](const YAML::Node& value, const std::string& p) {
-          check_degree(value, key, p);
-        });
+        for_each_table_entry(
+            node, key, path, true,
+            [&](const YAML::Node& value, const std::string& p) { check_degree(value, key, p); });
         return;
       case T::edge_set_table:
-        for_each_table_entry(node, key, path, false, [&](const YAML::Node& value, const std::string& p) {
-          if (!value.IsSequence() || value.size() == 0)
-            source_.fail(value, p, "must be a non-empty list of [a, b] node pairs (got " +
-                                       shown_value(value) + ")");
-          for (std::size_t i = 0; i < value.size(); ++i)
-            check_pair(value[i], join_index(p, i), true, "[a, b] with two node ids");
-        });
+        for_each_table_entry(
+            node, key, path, false, [&](const YAML::Node& value, const std::string& p) {
+              if (!value.IsSequence() || value.size() == 0)
+                source_.fail(value, p,
+                             "must be a non-empty list of [a, b] node pairs (got " +
+                                 shown_value(value) + ")");
+              for (std::size_t i = 0; i < value.size(); ++i)
+                check_pair(value[i], join_index(p, i), true, "[a, b] with two node ids");
+            });
         return;
     }
   }
 
   std::string key_name(const YAML::Node& key, const std::string& parent_path) {
     if (!key.IsScalar() || key.Scalar().empty())
-      source_.fail(key, parent_path,
-                   "keys must be names (got " + shown_value(key) + ")");
+      source_.fail(key, parent_path, "keys must be names (got " + shown_value(key) + ")");
     return key.Scalar();
   }
 
   void require_map(const YAML::Node& node, const std::string& path) {
-    if (!node.IsMap()) source_.fail(node, path, "must be a map of keys (got " + shown_value(node) + ")");
+    if (!node.IsMap())
+      source_.fail(node, path, "must be a map of keys (got " + shown_value(node) + ")");
   }
 
   void require_list(const YAML::Node& node, const KeySpec& key, const std::string& path,
                     const std::string& what) {
-    if (!node.IsSequence()) source_.fail(node, path, "must be " + what + " (got " + shown_value(node) + ")");
+    if (!node.IsSequence())
+      source_.fail(node, path, "must be " + what + " (got " + shown_value(node) + ")");
     if (node.size() < static_cast<std::size_t>(key.min_items))
-      source_.fail(node, path, "must have at least " + std::to_string(key.min_items) +
-                                   (key.min_items == 1 ? " entry" : " entries") + " (got " +
-                                   shown_value(node) + ")");
+      source_.fail(node, path,
+                   "must have at least " + std::to_string(key.min_items) +
+                       (key.min_items == 1 ? " entry" : " entries") + " (got " + shown_value(node) +
+                       ")");
   }
 
-  void check_bounds(const YAML::Node& node, double value, const KeySpec& key, const std::string& path) {
+  void check_bounds(const YAML::Node& node, double value, const KeySpec& key,
+                    const std::string& path) {
     if (key.lower && (key.lower->inclusive ? value < key.lower->value : value <= key.lower->value))
-      source_.fail(node, path, std::string("must be ") + (key.lower->inclusive ? ">= " : "> ") +
-                                   shown_bound(key.lower->value) + " (got " + node.Scalar() + ")");
+      source_.fail(node, path,
+                   std::string("must be ") + (key.lower->inclusive ? ">= " : "> ") +
+                       shown_bound(key.lower->value) + " (got " + node.Scalar() + ")");
     if (key.upper && (key.upper->inclusive ? value > key.upper->value : value >= key.upper->value))
-      source_.fail(node, path, std::string("must be ") + (key.upper->inclusive ? "<= " : "< ") +
-                                   shown_bound(key.upper->value) + " (got " + node.Scalar() + ")");
+      source_.fail(node, path,
+                   std::string("must be ") + (key.upper->inclusive ? "<= " : "< ") +
+                       shown_bound(key.upper->value) + " (got " + node.Scalar() + ")");
   }
 
   static std::string shown_bound(double v) {
@@ -179,12 +187,14 @@ private:
       for (std::string_view choice : key.choices)
         if (node.Scalar() == choice) return;
     std::string allowed;
-    for (std::string_view choice : key.choices) allowed += (allowed.empty() ? "" : ", ") + std::string(choice);
+    for (std::string_view choice : key.choices)
+      allowed += (allowed.empty() ? "" : ", ") + std::string(choice);
     source_.fail(node, path, "must be one of " + allowed + " (got " + quoted_value(node) + ")");
   }
 
   /// [x, y] numbers, or [a, b] integers when `integers`.
-  void check_pair(const YAML::Node& node, const std::string& path, bool integers, const std::string& what) {
+  void check_pair(const YAML::Node& node, const std::string& path, bool integers,
+                  const std::string& what) {
     if (!node.IsSequence() || node.size() != 2)
       source_.fail(node, path, "must be " + what + " (got " + shown_value(node) + ")");
     for (std::size_t i = 0; i < 2; ++i) {
@@ -201,13 +211,15 @@ private:
       return;
     }
     if (!node.IsSequence() || node.size() != 2)
-      source_.fail(node, path, "must be an integer or [p_xi, p_eta] (got " + shown_value(node) + ")");
+      source_.fail(node, path,
+                   "must be an integer or [p_xi, p_eta] (got " + shown_value(node) + ")");
     for (std::size_t i = 0; i < 2; ++i) check_integer(node[i], key, join_index(path, i));
   }
 
   void check_element(const YAML::Node& node, const std::string& path) {
     if (!node.IsSequence() || node.size() != 4)
-      source_.fail(node, path, "must be [n1, n2, n3, n4] with four node ids (got " + shown_value(node) + ")");
+      source_.fail(node, path,
+                   "must be [n1, n2, n3, n4] with four node ids (got " + shown_value(node) + ")");
     std::set<int> distinct;
     for (std::size_t i = 0; i < 4; ++i) {
       check_integer(node[i], KeySpec{}, join_index(path, i));
@@ -223,18 +235,21 @@ private:
   void for_each_table_entry(const YAML::Node& node, const KeySpec& key, const std::string& path,
                             bool integer_keys, Check check) {
     if (!node.IsMap())
-      source_.fail(node, path, std::string("must be a map ") + (integer_keys ? "id" : "name") +
-                                   " -> value (got " + shown_value(node) + ")");
+      source_.fail(node, path,
+                   std::string("must be a map ") + (integer_keys ? "id" : "name") +
+                       " -> value (got " + shown_value(node) + ")");
     if (node.size() < static_cast<std::size_t>(key.min_items))
-      source_.fail(node, path, "must have at least " + std::to_string(key.min_items) +
-                                   (key.min_items == 1 ? " entry" : " entries") + " (got " +
-                                   shown_value(node) + ")");
+      source_.fail(node, path,
+                   "must have at least " + std::to_string(key.min_items) +
+                       (key.min_items == 1 ? " entry" : " entries") + " (got " + shown_value(node) +
+                       ")");
     std::set<std::string> seen;
     for (auto it = node.begin(); it != node.end(); ++it) {
       const std::string name = key_name(it->first, path);
       const std::string entry_path = join_key(path, name);
       if (integer_keys && !to_integer(it->first))
-        source_.fail(it->first, entry_path, "must be an integer id (got " + quoted_value(it->first) + ")");
+        source_.fail(it->first, entry_path,
+                     "must be an integer id (got " + quoted_value(it->first) + ")");
       const std::string canonical = integer_keys ? std::to_string(*to_integer(it->first)) : name;
       if (!seen.insert(canonical).second) source_.fail(it->first, entry_path, "duplicate id");
       check(it->second, entry_path);

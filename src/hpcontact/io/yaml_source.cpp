@@ -82,7 +82,8 @@ std::string shown_value(const YAML::Node& node) {
 }
 
 std::string quoted_value(const YAML::Node& node) {
-  if (node.IsDefined() && node.IsScalar()) return "'" + one_line(node.Scalar()) + "'";
+  if (node.IsDefined() && node.IsScalar())
+    return std::string("'").append(one_line(node.Scalar())).append("'");
   return shown_value(node);
 }
 
@@ -91,8 +92,7 @@ std::optional<double> to_number(const YAML::Node& node) {
   const std::string_view s = number_text(node);
   double value = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(value))
-    return std::nullopt;
+  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(value)) return std::nullopt;
   return value;
 }
 

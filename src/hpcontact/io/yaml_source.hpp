@@ -1,10 +1,12 @@
-// Where the nodes of a problem file's YAML tree came from, and the scalar conversions messages rely on.
+// Where the nodes of a problem file's YAML tree came from, and the scalar conversions messages rely
+// on.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hpcontact/model/problem_spec.hpp"
@@ -14,7 +16,7 @@ namespace hpcontact::io {
 /// The file label of a YAML tree plus the key paths whose nodes are not from the file (a --set
 /// override or a filled-in default), whose YAML marks therefore mean nothing.
 class YamlSource {
-public:
+ public:
   explicit YamlSource(std::string file) : file_(std::move(file)) {}
 
   const std::string& file() const { return file_; }
@@ -32,7 +34,7 @@ public:
   [[noreturn]] void fail(const YAML::Node& node, const std::string& path,
                          const std::string& what) const;
 
-private:
+ private:
   std::string file_;
   std::vector<std::string> override_paths_;
   std::vector<std::string> default_paths_;
@@ -43,7 +45,7 @@ std::string join_key(const std::string& parent, const std::string& key);
 /// "a[3]".
 std::string join_index(const std::string& parent, std::size_t index);
 
-/// Text fit for a one-line message: newlines as "\\n", other control characters as '?',
+/// Text fit for a one-line message: newlines as "\n", other control characters as '?',
 /// shortened to `max_length` characters (plus "...").
 std::string one_line(std::string_view text, std::size_t max_length = 60);
 

@@ -1,7 +1,5 @@
 // Unit tests of the problem-file reader: the Lamé example, defaults, --set overrides, the schema
 // docs, and one-line input errors that name the file, line, key path and value.
-#include "hpcontact/io/problem_reader.hpp"
-
 #include <gtest/gtest.h>
 
 #include <set>
@@ -9,6 +7,7 @@
 #include <vector>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/io/problem_reader.hpp"
 
 #ifndef HPC_SOURCE_DIR
 #define HPC_SOURCE_DIR "/work/main"
@@ -171,8 +170,8 @@ TEST(ProblemReader, FillsDefaultsEqualToSpecDefaults) {
 // The effective input, read back, shall give the same problem and the same effective input.
 TEST(ProblemReader, EffectiveInputReproducesTheRun) {
   const std::vector<std::string> sets{"discretization.degree=[6, 4]", "bodies[0].material.E=1e5"};
-  const hio::ReadResult first = hio::read_problem_full(
-      HPC_SOURCE_DIR "/examples/lame/thick-cylinder.yaml", sets);
+  const hio::ReadResult first =
+      hio::read_problem_full(HPC_SOURCE_DIR "/examples/lame/thick-cylinder.yaml", sets);
   EXPECT_NE(first.effective_yaml.find("#   --set bodies[0].material.E=1e5"), std::string::npos);
   const hio::ReadResult second = hio::parse_problem_full(first.effective_yaml, "effective.yaml");
   EXPECT_EQ(without_comments(second.effective_yaml), without_comments(first.effective_yaml));
@@ -186,10 +185,10 @@ TEST(ProblemReader, EffectiveInputReproducesTheRun) {
 TEST(ProblemReader, SetOverridesChangeValues) {
   hm::ProblemSpec spec = hio::parse_problem(square, label, {"discretization.degree=10"});
   EXPECT_EQ(spec.discretization.degree, (std::array<int, 2>{10, 10}));
-  spec = hio::parse_problem(square, label,
-                            {"discretization.degree=[6,4]", "bodies[0].material.E=1e5",
-                             "solver.linear=ldlt", "bodies[0].material.E=2e5",
-                             "bodies[0].nodes.3=[1.5, 1]", "bodies[0].degree=3"});
+  spec = hio::parse_problem(
+      square, label,
+      {"discretization.degree=[6,4]", "bodies[0].material.E=1e5", "solver.linear=ldlt",
+       "bodies[0].material.E=2e5", "bodies[0].nodes.3=[1.5, 1]", "bodies[0].degree=3"});
   EXPECT_EQ(spec.discretization.degree, (std::array<int, 2>{6, 4}));
   EXPECT_EQ(spec.bodies[0].material.youngs_modulus, 2e5);
   EXPECT_EQ(spec.solver.linear, "ldlt");
@@ -291,8 +290,9 @@ TEST(ProblemReader, RejectsIncompressiblePoissonRatio) {
 
 // An element shall reference existing nodes only, four distinct ones.
 TEST(ProblemReader, RejectsElementWithUnknownNode) {
-  input_error(with(square, "1: [1, 2, 3, 4]", "1: [1, 2, 3, 7]"),
-              {"case.yaml:11:", "bodies[0].elements.1[3]: no such node in bodies[0].nodes (got 7)"});
+  input_error(
+      with(square, "1: [1, 2, 3, 4]", "1: [1, 2, 3, 7]"),
+      {"case.yaml:11:", "bodies[0].elements.1[3]: no such node in bodies[0].nodes (got 7)"});
   input_error(with(square, "1: [1, 2, 3, 4]", "1: [1, 2, 3, 3]"),
               {"case.yaml:11:", "bodies[0].elements.1: must have four distinct node ids"});
 }
@@ -307,8 +307,9 @@ TEST(ProblemReader, RejectsDuplicateIds) {
 
 // Every edge of an edge set shall be an edge of some element.
 TEST(ProblemReader, RejectsEdgeSetWithNonEdge) {
-  input_error(with(square, "bottom: [[1, 2]]", "bottom: [[1, 2], [1, 3]]"),
-              {"case.yaml:13:", "bodies[0].edge_sets.bottom[1]: not an edge of any element (got [1, 3])"});
+  input_error(
+      with(square, "bottom: [[1, 2]]", "bottom: [[1, 2], [1, 3]]"),
+      {"case.yaml:13:", "bodies[0].edge_sets.bottom[1]: not an edge of any element (got [1, 3])"});
   input_error(with(square, "bottom: [[1, 2]]", "bottom: [[1, 2], [2, 1]]"),
               {"bodies[0].edge_sets.bottom[1]: edge listed twice"});
 }
@@ -334,28 +335,32 @@ TEST(ProblemReader, RejectsIncompleteConstraint) {
 
 // Constraint values shall be kept verbatim, numbers and formulas alike.
 TEST(ProblemReader, KeepsConstraintValuesAsText) {
-  const hm::ProblemSpec spec = hio::parse_problem(
-      with(square, "ux: 0, uy: 0", "ux: -0.01, uy: \"0.001*x\""), label);
+  const hm::ProblemSpec spec =
+      hio::parse_problem(with(square, "ux: 0, uy: 0", "ux: -0.01, uy: \"0.001*x\""), label);
   EXPECT_EQ(spec.bodies[0].constraints[0].ux, "-0.01");
   EXPECT_EQ(spec.bodies[0].constraints[0].uy, "0.001*x");
 }
 
 // A curve shall replace an element edge, at most one curve per edge, given as arc or parametric.
 TEST(ProblemReader, ChecksCurves) {
-  const std::string arc = "    curves:\n      - {nodes: [2, 3], arc: {center: [0, 0.5], radius: 1.2}}\n";
+  const std::string arc =
+      "    curves:\n      - {nodes: [2, 3], arc: {center: [0, 0.5], radius: 1.2}}\n";
   const std::string text = with(square, "    edge_sets:\n", arc + "    edge_sets:\n");
-  const hm::ProblemSpec spec = hio::parse_problem(
-      with(text, "radius: 1.2}", "radius: 1.2, ccw: false}"), label);
+  const hm::ProblemSpec spec =
+      hio::parse_problem(with(text, "radius: 1.2}", "radius: 1.2, ccw: false}"), label);
   EXPECT_EQ(spec.bodies[0].curves[0].ccw, -1);
-  input_error(with(text, "- {nodes: [2, 3]", "- {nodes: [1, 3]"),
-              {"case.yaml:13:", "bodies[0].curves[0].nodes: not an edge of any element (got [1, 3])"});
+  input_error(
+      with(text, "- {nodes: [2, 3]", "- {nodes: [1, 3]"),
+      {"case.yaml:13:", "bodies[0].curves[0].nodes: not an edge of any element (got [1, 3])"});
   input_error(with(text, "    edge_sets:\n",
                    "      - {nodes: [3, 2], parametric: {x: 1, y: s}}\n    edge_sets:\n"),
-              {"case.yaml:14:", "bodies[0].curves[1].nodes: edge already has a curve at bodies[0].curves[0]"});
+              {"case.yaml:14:",
+               "bodies[0].curves[1].nodes: edge already has a curve at bodies[0].curves[0]"});
   input_error(with(text, "arc: {center: [0, 0.5], radius: 1.2}", "parametric: {x: s}"),
               {"bodies[0].curves[0].parametric: missing required key 'y'"});
-  input_error(with(text, ", arc: {center: [0, 0.5], radius: 1.2}", ""),
-              {"bodies[0].curves[0]: must have exactly one of 'arc' and 'parametric' (got neither)"});
+  input_error(
+      with(text, ", arc: {center: [0, 0.5], radius: 1.2}", ""),
+      {"bodies[0].curves[0]: must have exactly one of 'arc' and 'parametric' (got neither)"});
 }
 
 // A load shall be either a pressure or a traction, with a formula exactly when its shape says so.
@@ -373,8 +378,10 @@ TEST(ProblemReader, ChecksLoads) {
   EXPECT_EQ(load.along, 'y');
   EXPECT_EQ(load.interval, (std::array<double, 2>{1, 0}));
   EXPECT_EQ(load.resultant, 5.0);
-  input_error(with(square, "pressure: 10}", "pressure: 10, traction: [1, 0]}"),
-              {"case.yaml:18:", "bodies[0].loads[0]: must have exactly one of 'pressure' and 'traction' (got both)"});
+  input_error(
+      with(square, "pressure: 10}", "pressure: 10, traction: [1, 0]}"),
+      {"case.yaml:18:",
+       "bodies[0].loads[0]: must have exactly one of 'pressure' and 'traction' (got both)"});
   input_error(with(square, "pressure: 10}", "pressure: 10, shape: expression}"),
               {"bodies[0].loads[0]: missing key 'expression'"});
   input_error(with(square, "pressure: 10}", "pressure: 10, expression: x}"),
@@ -383,8 +390,8 @@ TEST(ProblemReader, ChecksLoads) {
 
 // Per-element degrees shall name existing elements; degrees shall lie in [1, 30].
 TEST(ProblemReader, ChecksDegrees) {
-  const hm::ProblemSpec spec =
-      hio::parse_problem(with(square, "    edge_sets:\n", "    degrees: {1: [3, 5]}\n    edge_sets:\n"), label);
+  const hm::ProblemSpec spec = hio::parse_problem(
+      with(square, "    edge_sets:\n", "    degrees: {1: [3, 5]}\n    edge_sets:\n"), label);
   EXPECT_EQ(spec.bodies[0].element_degrees.at(1), (std::array<int, 2>{3, 5}));
   input_error(with(square, "    edge_sets:\n", "    degrees: {2: 3}\n    edge_sets:\n"),
               {"case.yaml:12:", "bodies[0].degrees.2: no such element"});
