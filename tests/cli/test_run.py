@@ -117,3 +117,11 @@ def test_bad_set_override_is_an_input_error(hpcontact, root, tmp_path):
                   "discretization.colour=3")
     assert r.returncode == 1
     assert "discretization.colour" in r.stderr
+
+
+def test_docs_input_md_is_current(hpcontact, root):
+    """docs/input.md is exactly what `hpcontact --help-input` prints (regenerate it if not)."""
+    r = hpcontact("--help-input")
+    assert r.returncode == 0
+    with open(os.path.join(root, "docs", "input.md")) as f:
+        assert f.read() == r.stdout, "docs/input.md is stale: run build/hpcontact --help-input > docs/input.md"

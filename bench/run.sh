@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Builds hpc_bench (Release), runs every benchmark into build/bench/results.json and writes BENCHMARKS.md.
+# Usage: bash bench/run.sh [hpc_bench options, e.g. --benchmark_filter=Element]; BUILD_DIR overrides build/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build_dir=${BUILD_DIR:-build}
+
+if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
+  cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
+fi
+if ! grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$build_dir/CMakeCache.txt"; then
+  echo "bench/run.sh: $build_dir is not a Release build; timings would be meaningless." >&2
+  echo "  reconfigure: cmake -S . -B $build_dir -DCMAKE_BUILD_TYPE=Release" >&2
+  exit 1
+fi
+cmake --build "$build_dir" --target hpc_bench
+
+# Three repetitions of at least 0.2 s each; the report uses the median (and the spread, cv).
+# The whole run takes about a minute on two cores.
+results="$build_dir/bench/results.json"
+"$build_dir/bench/hpc_bench" \
+  --benchmark_min_time=0.2 \
+  --benchmark_repetitions=3 \
+  --benchmark_report_aggregates_only=true \
+  --benchmark_out_format=json \
+  --benchmark_out="$results" \
+  "$@"
+
+/usr/bin/python3 bench/report.py "$results" BENCHMARKS.md
+echo "bench/run.sh: wrote BENCHMARKS.md (raw results: $results)"

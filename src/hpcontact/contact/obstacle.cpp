@@ -1,0 +1,50 @@
+// Gap functions of the rigid plane and circle.
+#include "hpcontact/contact/obstacle.hpp"
+
+#include <sstream>
+
+#include "hpcontact/core/error.hpp"
+
+namespace hpcontact::contact {
+
+RigidPlane::RigidPlane(Vec2 point, Vec2 normal) : p_(point), n_(normal) {
+  HPC_REQUIRE(normal.norm() > 0, InputError, "a rigid plane needs a non-zero normal");
+  n_.normalize();
+}
+
+double RigidPlane::gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const {
+  if (normal) *normal = n_;
+  if (dnormal_dx) dnormal_dx->setZero();
+  return (x - p_).dot(n_);
+}
+
+std::string RigidPlane::describe() const {
+  std::ostringstream os;
+  os << "plane(point=(" << p_.x() << "," << p_.y() << "), normal=(" << n_.x() << "," << n_.y()
+     << "))";
+  return os.str();
+}
+
+RigidCircle::RigidCircle(Vec2 center, double radius, bool inside)
+    : c_(center), r_(radius), inside_(inside) {
+  HPC_REQUIRE(radius > 0, InputError, "a rigid circle needs a radius > 0 (got ", radius, ")");
+}
+
+double RigidCircle::gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const {
+  const Vec2 d = x - c_;
+  const double r = d.norm();
+  const Vec2 e = r > 0 ? Vec2(d / r) : Vec2(1, 0);
+  const double s = inside_ ? -1.0 : 1.0;  // the outward normal of the obstacle
+  if (normal) *normal = s * e;
+  if (dnormal_dx) *dnormal_dx = r > 0 ? Mat2(s * (Mat2::Identity() - e * e.transpose()) / r) : Mat2::Zero();
+  return s * (r - r_);
+}
+
+std::string RigidCircle::describe() const {
+  std::ostringstream os;
+  os << (inside_ ? "hole" : "disc") << "(center=(" << c_.x() << "," << c_.y() << "), radius=" << r_
+     << ")";
+  return os.str();
+}
+
+}  // namespace hpcontact::contact

@@ -1,0 +1,48 @@
+// Rigid obstacles: a signed gap and its outward normal at any point of the plane.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "hpcontact/geometry/vec2.hpp"
+
+namespace hpcontact::contact {
+
+/// A rigid body seen from a deformable one: gap(x) > 0 outside it, < 0 when x penetrates.
+class Obstacle {
+public:
+  virtual ~Obstacle() = default;
+  /// Signed normal gap g_N of point x (seed eq. 3.7 with the obstacle as body 1), its outward
+  /// unit normal n at the closest point, and dn/dx (for the consistent tangent).
+  virtual double gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const = 0;
+  virtual std::string describe() const = 0;
+};
+
+using ObstaclePtr = std::shared_ptr<const Obstacle>;
+
+/// Half-plane {(x - point)·normal < 0}; the body lies on the side the normal points to.
+class RigidPlane final : public Obstacle {
+public:
+  RigidPlane(Vec2 point, Vec2 normal);
+  double gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const override;
+  std::string describe() const override;
+
+private:
+  Vec2 p_, n_;
+};
+
+/// Rigid disc of radius r (the body outside it), or, with `inside`, a rigid circular hole the
+/// body lies within.
+class RigidCircle final : public Obstacle {
+public:
+  RigidCircle(Vec2 center, double radius, bool inside);
+  double gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const override;
+  std::string describe() const override;
+
+private:
+  Vec2 c_;
+  double r_;
+  bool inside_;
+};
+
+}  // namespace hpcontact::contact
