@@ -26,7 +26,7 @@ void BM_Discretize(benchmark::State& state) {
   state.counters["p"] = p;
   state.counters["dofs"] = n_free;
 }
-BENCHMARK(BM_Discretize)->Arg(8)->Arg(15)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Discretize)->Arg(8)->Arg(15)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 // discretize + assemble + factorise + solve; state.range(1) = 1 condenses the internal modes.
 // The counters assembly_ms and solve_ms are solve_linear()'s own split, averaged over iterations.

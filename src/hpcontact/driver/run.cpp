@@ -4,10 +4,13 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include "hpcontact/analytic/lame.hpp"
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/linear_solve.hpp"
 #include "hpcontact/post/fields.hpp"
 #include "hpcontact/post/vtu.hpp"
@@ -59,32 +62,55 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     say(os.str());
   }
 
-  model::LinearSolveOptions lo;
-  lo.condense = spec.discretization.condense;
-  lo.solver = solve::linear_solver_kind(spec.solver.linear, spec.solver.where.str() + "linear");
-  const auto sol = model::solve_linear(d, lo);
-  {
+  RunResult result{{}, {}, {}};
+  post::Summary& s = result.summary;
+  std::vector<model::ContactResult> contact;
+  std::vector<model::ContactPair> pairs;
+  if (spec.contact.empty()) {
+    model::LinearSolveOptions lo;
+    lo.condense = spec.discretization.condense;
+    lo.solver = solve::linear_solver_kind(spec.solver.linear, spec.solver.where.str() + "linear");
+    const auto sol = model::solve_linear(d, lo);
     std::ostringstream os;
     os << "solved: system of " << sol.n_system << " unknowns, assembly " << sol.assembly_seconds
        << " s, factorisation and solve " << sol.solve_seconds << " s";
     say(os.str());
+    result.u = sol.u;
+    s.newton_iterations = 1;
+    s.load_steps = 1;
+    s.extra["system_size"] = sol.n_system;
+    s.extra["condensed"] = spec.discretization.condense;
+    s.extra["solve_time_s"] = sol.solve_seconds;
+    s.extra["assembly_time_s"] = sol.assembly_seconds;
+  } else {
+    const auto sol = model::solve_contact(spec, d, options.progress);
+    HPC_REQUIRE(sol.converged, NumericalError, spec.file, ": the solver stopped: ", sol.message);
+    result.u = sol.u;
+    s.newton_iterations = sol.newton_iterations;
+    s.load_steps = sol.load_steps;
+    s.extra["load_factor"] = sol.load_factor;
+    contact = sol.contact;
+    pairs = model::make_contact_pairs(spec, d);
   }
-
-  RunResult result{{}, std::move(d), sol.u};
+  result.discretization = std::move(d);
   const auto& disc = result.discretization;
-  post::Summary& s = result.summary;
   s.case_name = spec.case_name;
   s.method = disc.method;
   s.dofs = disc.n_free;
   s.strain_energy = post::strain_energy(disc, result.u);
-  s.newton_iterations = 1;
-  s.load_steps = 1;
   s.converged = true;
   s.error = exact_error(spec, disc, result.u, s.strain_energy);
-  s.extra["system_size"] = sol.n_system;
-  s.extra["condensed"] = spec.discretization.condense;
-  s.extra["solve_time_s"] = sol.solve_seconds;
-  s.extra["assembly_time_s"] = sol.assembly_seconds;
+  if (!contact.empty()) {
+    nlohmann::json cj;
+    const auto& c = contact.front();
+    cj["half_width"] = c.half_width;
+    cj["gamma_star"] = nlohmann::json::array();
+    for (const auto& g : c.gamma_star) cj["gamma_star"].push_back({g.x(), g.y()});
+    cj["p_max"] = c.p_max;
+    cj["resultant"] = {c.resultant.x(), c.resultant.y()};
+    cj["max_penetration"] = c.max_penetration;
+    s.extra["contact"] = cj;
+  }
 
   if (!options.out_dir.empty()) {
     namespace fs = std::filesystem;
@@ -95,6 +121,19 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     fs::remove(out / "summary.json", ec);  // a stale summary must not pass for this run's
     if (!options.effective_input.empty())
       post::write_text_file((out / "input.yaml").string(), options.effective_input);
+    if (!contact.empty()) {
+      // The interface curve: one row per contact Gauss point.
+      std::ostringstream csv;
+      csv << std::setprecision(12) << "pair,X,Y,x,y,gap,pressure\n";
+      for (size_t k = 0; k < contact.size(); ++k)
+        for (size_t i = 0; i < contact[k].states.size(); ++i) {
+          const auto& st = contact[k].states[i];
+          const auto& X = pairs[k].points[i].X;
+          csv << k << ',' << X.x() << ',' << X.y() << ',' << st.x.x() << ',' << st.x.y() << ','
+              << st.gap << ',' << st.pressure << '\n';
+        }
+      post::write_text_file((out / "contact.csv").string(), csv.str());
+    }
     if (spec.output.vtu) {
       post::write_vtu((out / "solution.vtu").string(), disc, result.u, spec.output.vtu_subdivisions);
       say("wrote " + (out / "solution.vtu").string());

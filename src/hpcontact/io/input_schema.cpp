@@ -19,8 +19,8 @@ constexpr double max_degree = 30;
 }  // namespace
 
 // Sections follow the pipeline: case, bodies (mesh, material, constraints and loads),
-// discretization, solver, exact solution, output. A key with a default is filled in when absent,
-// so the effective input lists it; an optional key without a default stays absent.
+// discretization, solver, contact, exact solution, output. A key with a default is filled in when
+// absent, so the effective input lists it; an optional key without a default stays absent.
 // GCC's -Wextra warns about members left out of a designated initializer even when they have
 // default initializers; leaving them out is the point of the table's layout.
 #pragma GCC diagnostic push
@@ -153,6 +153,60 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "solver.linear", .type = T::choice, .default_yaml = "cholmod",
        .doc = "Sparse direct solver: CHOLMOD or Eigen's SimplicialLDLT.",
        .choices = {"cholmod", "ldlt"}},
+      {.path = "solver.tangent", .type = T::choice, .default_yaml = "analytic",
+       .doc = "Newton tangent: analytic, or by finite differences of the residual (seed eq. 3.36).",
+       .choices = {"analytic", "finite-difference"}},
+      {.path = "solver.load_steps", .type = T::integer, .default_yaml = "1",
+       .doc = "Number of equal load steps.", .lower = at_least(1)},
+      {.path = "solver.max_iterations", .type = T::integer, .default_yaml = "30",
+       .doc = "Newton iterations per load step.", .lower = at_least(1)},
+      {.path = "solver.tolerance", .type = T::number, .default_yaml = "1e-10",
+       .doc = "Newton convergence: relative residual norm.",
+       .lower = greater_than(0)},
+      {.path = "solver.max_cuts", .type = T::integer, .default_yaml = "5",
+       .doc = "Halvings of a load step that does not converge.",
+       .lower = at_least(0)},
+      {.path = "solver.target_resultant", .type = T::section,
+       .doc = "Load control by force: the prescribed displacements are scaled until the contact "
+              "resultant's component equals value."},
+      {.path = "solver.target_resultant.value", .type = T::number, .required = true,
+       .unit = "force", .doc = "The contact resultant's component to reach.",
+       .lower = greater_than(0)},
+      {.path = "solver.target_resultant.component", .type = T::choice, .default_yaml = "y",
+       .doc = "Which component of the contact resultant is controlled.", .choices = {"x", "y"}},
+      {.path = "solver.target_resultant.tolerance", .type = T::number, .default_yaml = "1e-9",
+       .doc = "Relative tolerance on reaching value.", .lower = greater_than(0)},
+
+      {.path = "contact", .type = T::section_list,
+       .doc = "Contact boundaries of bodies against rigid obstacles, enforced by a normal penalty; "
+              "absent: no contact."},
+      {.path = "contact[].body", .type = T::string, .required = true,
+       .doc = "Name of the body in contact."},
+      {.path = "contact[].edges", .type = T::string_list, .required = true,
+       .doc = "Names of the body's edge sets that may come into contact.", .min_items = 1},
+      {.path = "contact[].obstacle", .type = T::section, .required = true,
+       .doc = "The rigid obstacle."},
+      {.path = "contact[].penalty", .type = T::number, .required = true,
+       .unit = "force/length³",
+       .doc = "Normal penalty eps_N (seed eq. 3.19); the seed uses 1000·E.", .lower = greater_than(0)},
+      {.path = "contact[].quadrature", .type = T::integer, .default_yaml = "50",
+       .doc = "Gauss points per contact edge, independent of p (seed: 50).",
+       .lower = at_least(1), .upper = at_most(200)},
+
+      {.path = "contact[].obstacle.type", .type = T::choice, .required = true,
+       .doc = "plane: a straight line; circle: a disc (or a hole with inside).",
+       .choices = {"plane", "circle"}},
+      {.path = "contact[].obstacle.point", .type = T::point, .default_yaml = "[0, 0]",
+       .unit = "length", .doc = "plane: a point of the line, [x, y]."},
+      {.path = "contact[].obstacle.normal", .type = T::point, .default_yaml = "[0, 1]",
+       .doc = "plane: normal pointing away from the obstacle towards the body, [nx, ny], non-zero "
+              "(normalised when read)."},
+      {.path = "contact[].obstacle.center", .type = T::point, .default_yaml = "[0, 0]",
+       .unit = "length", .doc = "circle: centre, [x, y]."},
+      {.path = "contact[].obstacle.radius", .type = T::number, .unit = "length",
+       .doc = "circle: radius; required if and only if type is circle.", .lower = greater_than(0)},
+      {.path = "contact[].obstacle.inside", .type = T::boolean, .default_yaml = "false",
+       .doc = "circle: false: the body stays outside the circle; true: inside it."},
 
       {.path = "exact", .type = T::section,
        .doc = "A closed-form solution to measure the error against; absent: none."},

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -71,8 +72,8 @@ class SpecBuilder {
                      "name already used by " + at->second + " (got '" + at->first + "')");
     }
     spec.discretization = discretization(root["discretization"]);
-    spec.solver.linear = root["solver"]["linear"].Scalar();
-    spec.solver.where = source_.where(root["solver"], "solver");
+    spec.solver = solver(root["solver"]);
+    if (root["contact"]) spec.contact = contact(root["contact"], "contact", spec.bodies);
     if (root["exact"]) spec.exact = exact(root["exact"]);
     spec.output = output(root["output"]);
     return spec;
@@ -329,6 +330,77 @@ class SpecBuilder {
     d.condense = boolean(node["condense"]);
     d.where = source_.where(node, "discretization");
     return d;
+  }
+
+  SolverSpec solver(const YAML::Node& node) {
+    SolverSpec s;
+    s.linear = node["linear"].Scalar();
+    s.tangent = node["tangent"].Scalar();
+    s.load_steps = integer(node["load_steps"]);
+    s.max_iterations = integer(node["max_iterations"]);
+    s.tolerance = number(node["tolerance"]);
+    s.max_cuts = integer(node["max_cuts"]);
+    if (const YAML::Node target = node["target_resultant"]) {
+      TargetResultantSpec t;
+      t.value = number(target["value"]);
+      t.component = target["component"].Scalar() == "x" ? 0 : 1;
+      t.tolerance = number(target["tolerance"]);
+      s.target_resultant = t;
+    }
+    s.where = source_.where(node, "solver");
+    return s;
+  }
+
+  /// The contact pairs; each names an existing body and edge sets of that body.
+  std::vector<ContactPairSpec> contact(const YAML::Node& list, const std::string& path,
+                                       const std::vector<BodySpec>& bodies) {
+    std::vector<ContactPairSpec> pairs;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const YAML::Node node = list[i];
+      const std::string item_path = join_index(path, i);
+      ContactPairSpec c;
+      c.body = node["body"].Scalar();
+      const auto body = std::find_if(bodies.begin(), bodies.end(),
+                                     [&](const BodySpec& b) { return b.name == c.body; });
+      if (body == bodies.end()) {
+        std::string known;
+        for (const BodySpec& b : bodies) known += (known.empty() ? "" : ", ") + b.name;
+        source_.fail(node["body"], item_path + ".body",
+                     "no such body (defined: " + known + ") (got '" + c.body + "')");
+      }
+      c.edge_sets = edge_set_names(node["edges"], item_path + ".edges", *body);
+      c.obstacle = obstacle(node["obstacle"], item_path + ".obstacle");
+      c.penalty = number(node["penalty"]);
+      c.quadrature = integer(node["quadrature"]);
+      c.where = source_.where(node, item_path);
+      pairs.push_back(std::move(c));
+    }
+    return pairs;
+  }
+
+  ObstacleSpec obstacle(const YAML::Node& node, const std::string& path) {
+    ObstacleSpec o;
+    o.kind = node["type"].Scalar() == "circle" ? ObstacleKind::circle : ObstacleKind::plane;
+    o.point = point(node["point"]);
+    o.normal = point(node["normal"]);
+    // Normalised; scaled by its largest component first so that huge components cannot overflow.
+    const double largest = std::max(std::abs(o.normal[0]), std::abs(o.normal[1]));
+    if (largest == 0)
+      source_.fail(node["normal"], path + ".normal",
+                   "must be non-zero (got " + shown_value(node["normal"]) + ")");
+    o.normal = {o.normal[0] / largest, o.normal[1] / largest};
+    const double length = std::hypot(o.normal[0], o.normal[1]);
+    o.normal = {o.normal[0] / length, o.normal[1] / length};
+    o.center = point(node["center"]);
+    const bool is_circle = o.kind == ObstacleKind::circle;
+    if (is_circle && !node["radius"])
+      source_.fail(node, path, "missing key 'radius' (required by type: circle)");
+    if (!is_circle && node["radius"])
+      source_.fail(node["radius"], path + ".radius",
+                   "only allowed with type: circle (got type: " + node["type"].Scalar() + ")");
+    if (is_circle) o.radius = number(node["radius"]);
+    o.inside = boolean(node["inside"]);
+    return o;
   }
 
   ExactSpec exact(const YAML::Node& node) {

@@ -119,8 +119,45 @@ struct DiscretizationSpec {
   SourceRef where;
 };
 
+/// Load control by a target force: the prescribed displacements are scaled by the factor for
+/// which the contact resultant's component equals `value` (the Hertz case: v such that F/2).
+struct TargetResultantSpec {
+  double value = 0;
+  int component = 1;  ///< 0: x, 1: y
+  double tolerance = 1e-9;  ///< relative
+};
+
 struct SolverSpec {
   std::string linear = "cholmod";  ///< "cholmod" or "ldlt"
+  std::string tangent = "analytic";  ///< "analytic" or "finite-difference" (seed eq. 3.36)
+  int load_steps = 1;
+  int max_iterations = 30;   ///< Newton iterations per load step
+  double tolerance = 1e-10;  ///< relative residual norm
+  int max_cuts = 5;          ///< halvings of a load step that does not converge
+  std::optional<TargetResultantSpec> target_resultant;
+  SourceRef where;
+};
+
+enum class ObstacleKind { plane, circle };
+
+/// A rigid obstacle: a plane through `point` with outward `normal` (towards the body), or a
+/// circle (the body outside it, or inside it with `inside`).
+struct ObstacleSpec {
+  ObstacleKind kind = ObstacleKind::plane;
+  std::array<double, 2> point{0, 0}, normal{0, 1};
+  std::array<double, 2> center{0, 0};
+  double radius = 0;
+  bool inside = false;
+};
+
+/// A contact boundary of a body against a rigid obstacle, enforced by a normal penalty at the
+/// Gauss points of its edges.
+struct ContactPairSpec {
+  std::string body;                    ///< body name
+  std::vector<std::string> edge_sets;  ///< its contact edges
+  ObstacleSpec obstacle;
+  double penalty = 0;   ///< eps_N > 0 [force/length³]
+  int quadrature = 50;  ///< Gauss points per contact edge, independent of p (seed: 50)
   SourceRef where;
 };
 
@@ -147,6 +184,7 @@ struct ProblemSpec {
   std::vector<BodySpec> bodies;
   DiscretizationSpec discretization;
   SolverSpec solver;
+  std::vector<ContactPairSpec> contact;
   ExactSpec exact;
   OutputSpec output;
 };

@@ -64,7 +64,7 @@ BlendingQuad four_curved_edges() {
       [](double s) { return Vec2(2, 0.2 - 0.3 * pi * std::cos(pi * s)); }, "E1");
   // E2: X2 -> X3 as the reversal of an arc from X3 to X2 bulging to the right.
   const Vec2 a(2.2, 1.8), b(2, 0.2), m = 0.5 * (a + b);
-  const Vec2 chord_normal = Vec2((b - a).y(), -(b - a).x()).normalized();  // points left of a->b
+  const Vec2 chord_normal = Vec2((b - a).y(), -(b - a).x()).normalized();  // right of a->b: inward
   const Vec2 centre = m + 3.0 * chord_normal;
   q.edges[1] = arc_through(a, b, centre, (a - centre).norm(), 0, "E2")->reversed();
   // E3: X4 -> X3, a segment given as a curve (zero deviation from the chord).

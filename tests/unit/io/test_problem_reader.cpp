@@ -148,7 +148,15 @@ TEST(ProblemReader, FillsDefaultsEqualToSpecDefaults) {
   EXPECT_EQ(spec.discretization.element, d.element);
   EXPECT_EQ(spec.discretization.quadrature_extra, d.quadrature_extra);
   EXPECT_EQ(spec.discretization.condense, d.condense);
-  EXPECT_EQ(spec.solver.linear, hm::SolverSpec{}.linear);
+  const hm::SolverSpec solver;
+  EXPECT_EQ(spec.solver.linear, solver.linear);
+  EXPECT_EQ(spec.solver.tangent, solver.tangent);
+  EXPECT_EQ(spec.solver.load_steps, solver.load_steps);
+  EXPECT_EQ(spec.solver.max_iterations, solver.max_iterations);
+  EXPECT_EQ(spec.solver.tolerance, solver.tolerance);
+  EXPECT_EQ(spec.solver.max_cuts, solver.max_cuts);
+  EXPECT_FALSE(spec.solver.target_resultant.has_value());
+  EXPECT_TRUE(spec.contact.empty());
   EXPECT_EQ(spec.output.vtu, hm::OutputSpec{}.vtu);
   EXPECT_EQ(spec.output.vtu_subdivisions, hm::OutputSpec{}.vtu_subdivisions);
   EXPECT_EQ(spec.output.effective_input, hm::OutputSpec{}.effective_input);
@@ -407,6 +415,115 @@ TEST(ProblemReader, ChecksExactSolution) {
               {"exact.outer_radius: must be > exact.inner_radius = 2 (got 1)"});
   input_error(square + "exact: {inner_radius: 2}\n", {"exact: missing required key 'type'"});
   EXPECT_EQ(hio::parse_problem(square + "exact: {type: none}\n", label).exact.type, "");
+}
+
+// A contact section shall give a ContactPairSpec with the stated values and the spec's defaults.
+TEST(ProblemReader, ReadsContactPair) {
+  const hm::ProblemSpec spec = hio::parse_problem(
+      square + "contact:\n  - body: block\n    edges: [bottom]\n"
+               "    obstacle: {type: plane, point: [0, -0.5], normal: [0, 2]}\n"
+               "    penalty: 1e6\n",
+      label);
+  ASSERT_EQ(spec.contact.size(), 1u);
+  const hm::ContactPairSpec& c = spec.contact[0];
+  EXPECT_EQ(c.body, "block");
+  EXPECT_EQ(c.edge_sets, (std::vector<std::string>{"bottom"}));
+  EXPECT_EQ(c.penalty, 1e6);
+  EXPECT_EQ(c.quadrature, hm::ContactPairSpec{}.quadrature);
+  EXPECT_EQ(c.where.line, 20);
+  EXPECT_EQ(c.obstacle.kind, hm::ObstacleKind::plane);
+  EXPECT_EQ(c.obstacle.point, (std::array<double, 2>{0, -0.5}));
+  EXPECT_EQ(c.obstacle.normal, (std::array<double, 2>{0, 1}));  // normalised
+  const hm::ObstacleSpec o;
+  EXPECT_EQ(c.obstacle.center, o.center);
+  EXPECT_EQ(c.obstacle.radius, o.radius);
+  EXPECT_EQ(c.obstacle.inside, o.inside);
+  const hm::ProblemSpec circle = hio::parse_problem(
+      square + "contact:\n  - {body: block, edges: [top, bottom], penalty: 5, quadrature: 8,\n"
+               "     obstacle: {type: circle, center: [0.5, 3], radius: 2, inside: true}}\n",
+      label);
+  const hm::ContactPairSpec& d = circle.contact[0];
+  EXPECT_EQ(d.edge_sets, (std::vector<std::string>{"top", "bottom"}));
+  EXPECT_EQ(d.quadrature, 8);
+  EXPECT_EQ(d.obstacle.kind, hm::ObstacleKind::circle);
+  EXPECT_EQ(d.obstacle.center, (std::array<double, 2>{0.5, 3}));
+  EXPECT_EQ(d.obstacle.radius, 2.0);
+  EXPECT_TRUE(d.obstacle.inside);
+  EXPECT_EQ(d.obstacle.normal, o.normal);
+}
+
+// The body of a contact pair shall be named in bodies; the error shall list the bodies.
+TEST(ProblemReader, RejectsContactWithUnknownBody) {
+  input_error(square + "contact:\n  - {body: blok, edges: [bottom], penalty: 1, "
+                       "obstacle: {type: plane}}\n",
+              {"case.yaml:20:", "contact[0].body: no such body (defined: block) (got 'blok')"});
+}
+
+// The edges of a contact pair shall be edge sets of its body.
+TEST(ProblemReader, RejectsContactWithUnknownEdgeSet) {
+  input_error(square + "contact:\n  - {body: block, edges: [bottom, side], penalty: 1, "
+                       "obstacle: {type: plane}}\n",
+              {"case.yaml:20:", "contact[0].edges[1]: no such edge set", "defined: bottom, top",
+               "(got 'side')"});
+  input_error(square + "contact:\n  - {body: block, edges: [], penalty: 1, "
+                       "obstacle: {type: plane}}\n",
+              {"contact[0].edges: must have at least 1 entry"});
+}
+
+// The contact penalty shall be positive.
+TEST(ProblemReader, RejectsNonPositivePenalty) {
+  const std::string text = square + "contact:\n  - {body: block, edges: [bottom], penalty: 1, "
+                                    "obstacle: {type: plane}}\n";
+  input_error(with(text, "penalty: 1,", "penalty: 0,"),
+              {"case.yaml:20:", "contact[0].penalty: must be > 0 (got 0)"});
+  input_error(with(text, "penalty: 1,", "penalty: -3,"), {"contact[0].penalty: must be > 0"});
+  input_error(with(text, "penalty: 1, ", ""), {"contact[0]: missing required key 'penalty'"});
+}
+
+// An obstacle shall be complete: a circle needs its radius (a plane has none), a plane a
+// non-zero normal.
+TEST(ProblemReader, ChecksObstacle) {
+  const std::string text = square + "contact:\n  - {body: block, edges: [bottom], penalty: 1, "
+                                    "obstacle: {type: plane}}\n";
+  input_error(with(text, "type: plane", "type: circle"),
+              {"case.yaml:20:", "contact[0].obstacle: missing key 'radius' (required by type: "
+                                "circle)"});
+  input_error(with(text, "type: plane", "type: plane, radius: 1"),
+              {"contact[0].obstacle.radius: only allowed with type: circle"});
+  input_error(with(text, "type: plane", "type: plane, normal: [0, 0]"),
+              {"contact[0].obstacle.normal: must be non-zero (got [0, 0])"});
+  input_error(with(text, "type: plane", "type: circle, radius: 0"),
+              {"contact[0].obstacle.radius: must be > 0 (got 0)"});
+  input_error(with(text, "penalty: 1,", "penalty: 1, quadrature: 201,"),
+              {"contact[0].quadrature: must be <= 200 (got 201)"});
+}
+
+// The solver's Newton settings and load control by force shall be read, component y as 1.
+TEST(ProblemReader, ReadsSolverSettingsAndTargetResultant) {
+  const hm::ProblemSpec spec = hio::parse_problem(
+      square + "solver:\n  tangent: finite-difference\n  load_steps: 4\n  max_iterations: 12\n"
+               "  tolerance: 1e-8\n  max_cuts: 0\n  target_resultant: {value: 250}\n",
+      label);
+  EXPECT_EQ(spec.solver.tangent, "finite-difference");
+  EXPECT_EQ(spec.solver.load_steps, 4);
+  EXPECT_EQ(spec.solver.max_iterations, 12);
+  EXPECT_EQ(spec.solver.tolerance, 1e-8);
+  EXPECT_EQ(spec.solver.max_cuts, 0);
+  ASSERT_TRUE(spec.solver.target_resultant.has_value());
+  EXPECT_EQ(spec.solver.target_resultant->value, 250.0);
+  EXPECT_EQ(spec.solver.target_resultant->component, 1);
+  EXPECT_EQ(spec.solver.target_resultant->tolerance, hm::TargetResultantSpec{}.tolerance);
+  const hm::ProblemSpec x = hio::parse_problem(
+      square + "solver: {target_resultant: {value: 1, component: x, tolerance: 1e-6}}\n", label);
+  EXPECT_EQ(x.solver.target_resultant->component, 0);
+  EXPECT_EQ(x.solver.target_resultant->tolerance, 1e-6);
+  input_error(square + "solver: {target_resultant: {component: y}}\n",
+              {"solver.target_resultant: missing required key 'value'"});
+  input_error(square + "solver: {target_resultant: {value: 0}}\n",
+              {"solver.target_resultant.value: must be > 0 (got 0)"});
+  input_error(square + "solver: {load_steps: 0}\n", {"solver.load_steps: must be >= 1 (got 0)"});
+  input_error(square + "solver: {tangent: secant}\n",
+              {"solver.tangent: must be one of analytic, finite-difference (got 'secant')"});
 }
 
 // Body names shall be unique.

@@ -1,0 +1,213 @@
+"""Writes BENCHMARKS.md from hpc_bench's JSON results (bench/run.sh calls it; standard library only)."""
+
+import datetime
+import json
+import math
+import os
+import subprocess
+import sys
+
+UNIT_SECONDS = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
+
+
+def load(path):
+    """Returns (context, {run name: {aggregate or "single": entry}}); times are converted to seconds."""
+    with open(path, encoding="utf-8") as f:
+        data = json.load(f)
+    runs = {}
+    for b in data["benchmarks"]:
+        name = b["run_name"].removesuffix("/real_time")
+        kind = b.get("aggregate_name", "single") if b.get("run_type") == "aggregate" else "single"
+        if b.get("aggregate_unit", "time") == "time":
+            scale = UNIT_SECONDS[b["time_unit"]]
+            b = dict(b, real_time=b["real_time"] * scale, cpu_time=b["cpu_time"] * scale)
+        runs.setdefault(name, {})[kind] = b
+    return data["context"], runs
+
+
+def central(runs, name):
+    """The median over repetitions (or the single run), or None if the benchmark was not run."""
+    r = runs.get(name)
+    if not r:
+        return None
+    return r.get("median") or r.get("single") or r.get("mean")
+
+
+def repetitions(runs):
+    return max((e.get("repetitions", 1) for r in runs.values() for e in r.values()), default=1)
+
+
+def spread(runs, name, key="real_time"):
+    """Coefficient of variation over repetitions as text, '' without repetitions."""
+    cv = runs.get(name, {}).get("cv")
+    return f"{100 * cv[key]:.0f} %" if cv else ""
+
+
+def fmt_time(seconds):
+    if seconds is None:
+        return "—"
+    for unit, scale in (("s", 1.0), ("ms", 1e-3), ("µs", 1e-6), ("ns", 1e-9)):
+        if seconds >= scale or unit == "ns":
+            value = seconds / scale
+            digits = 0 if value >= 100 else 1 if value >= 10 else 2
+            return f"{value:.{digits}f} {unit}"
+
+
+def fmt_ratio(a, b):
+    return f"{a / b:.1f}×" if a and b else "—"
+
+
+def cpu_model():
+    try:
+        with open("/proc/cpuinfo", encoding="utf-8") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return "unknown CPU"
+
+
+def blas_library():
+    """The BLAS that libblas.so.3 resolves to (CHOLMOD's factorisation speed depends on it)."""
+    for path in ("/usr/lib/x86_64-linux-gnu/libblas.so.3", "/usr/lib/aarch64-linux-gnu/libblas.so.3"):
+        if os.path.exists(path):
+            real = os.path.realpath(path)
+            kind = "OpenBLAS" if "openblas" in real else "BLIS" if "blis" in real else \
+                "MKL" if "mkl" in real else "reference (netlib)" if "/blas/libblas.so" in real else ""
+            return (f"{kind}, " if kind else "") + f"`{real}`"
+    return "unknown"
+
+
+def git_revision():
+    try:
+        rev = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True,
+                             check=True).stdout.strip()
+        dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"],
+                               capture_output=True, text=True, check=True).stdout.strip()
+        return rev + (" with uncommitted changes" if dirty else "")
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def element_section(runs):
+    rows = []
+    for p in range(1, 21):
+        b = central(runs, f"BM_ElementStiffness/{p}")
+        if b:
+            rows.append((p, b))
+    out = ["## Element stiffness against p", "",
+           "One curved element (element 1 of the Hertz quarter circle 2×2: an exact arc edge, the",
+           "blending map evaluated at every Gauss point), tensor-product space, (p + 2)² Gauss points.",
+           "One thread. `per mode²·point` is the time divided by modes² × Gauss points, the cost",
+           "of the straightforward B^T D B sum.", "",
+           "| p | modes | matrix size | Gauss points | time | per mode²·point | spread |",
+           "|---:|---:|---:|---:|---:|---:|---:|"]
+    for p, b in rows:
+        modes, points, t = int(b["modes"]), int(b["gauss_points"]), b["real_time"]
+        out.append(f"| {p} | {modes} | {2 * modes} | {points} | {fmt_time(t)} | "
+                   f"{fmt_time(t / (modes * modes * points))} | "
+                   f"{spread(runs, f'BM_ElementStiffness/{p}')} |")
+    t10, t20 = central(runs, "BM_ElementStiffness/10"), central(runs, "BM_ElementStiffness/20")
+    if t10 and t20:
+        slope = math.log(t20["real_time"] / t10["real_time"]) / math.log(2.0)
+        out += ["", f"Between p = 10 and p = 20 the time grows like p^{slope:.1f} "
+                    "(modes² × Gauss points grows like p^6)."]
+    return out
+
+
+def solve_section(runs):
+    out = ["## Whole problems", "",
+           "The Hertz quarter circle 2×2 (4 elements, 2 of them curved, prescribed displacement, no",
+           "contact) at uniform p. `solve` times discretize + assembly + factorisation + solve;",
+           "`condensed` eliminates each element's internal modes before assembly (the condensation",
+           "counts as assembly) and recovers them after. Wall-clock time, OpenMP threads on all cores.",
+           "`assembly` and `factorise + solve` are solve_linear()'s own split of the same runs.", "",
+           "| run | p | dofs | system size | time | assembly | factorise + solve | spread |",
+           "|---|---:|---:|---:|---:|---:|---:|---:|"]
+    for p in (8, 15):
+        name = f"BM_Discretize/{p}"
+        b = central(runs, name)
+        if b:
+            out.append(f"| discretize only | {p} | {int(b['dofs'])} | | {fmt_time(b['real_time'])} "
+                       f"| | | {spread(runs, name)} |")
+    for condense in (0, 1):
+        for p in (8, 15):
+            name = f"BM_LinearSolve/p:{p}/condense:{condense}"
+            b = central(runs, name)
+            if b:
+                label = "solve, condensed" if condense else "solve, full"
+                out.append(f"| {label} | {p} | {int(b['dofs'])} | {int(b['n_system'])} | "
+                           f"{fmt_time(b['real_time'])} | {fmt_time(b['assembly_ms'] * 1e-3)} | "
+                           f"{fmt_time(b['solve_ms'] * 1e-3)} | {spread(runs, name)} |")
+    b = central(runs, "BM_LameEndToEnd")
+    if b:
+        out.append(f"| Lamé example end to end | {int(b['p'])} | {int(b['dofs'])} | | "
+                   f"{fmt_time(b['real_time'])} | | | {spread(runs, 'BM_LameEndToEnd')} |")
+    out += ["", "`Lamé example end to end` is examples/lame/thick-cylinder.yaml (2 elements) read,",
+            "discretised, solved and post-processed (stresses, energy, error against the closed form)",
+            "as `hpcontact run` does, without writing files."]
+
+    ratios = []
+    for p in (8, 15):
+        full = central(runs, f"BM_LinearSolve/p:{p}/condense:0")
+        cond = central(runs, f"BM_LinearSolve/p:{p}/condense:1")
+        if full and cond:
+            ratios.append(f"| full / condensed, p = {p}: total time | "
+                          f"{fmt_ratio(full['real_time'], cond['real_time'])} |")
+            ratios.append(f"| full / condensed, p = {p}: factorise + solve | "
+                          f"{fmt_ratio(full['solve_ms'], cond['solve_ms'])} |")
+    for condense, label in ((0, "full"), (1, "condensed")):
+        a = central(runs, f"BM_LinearSolve/p:15/condense:{condense}")
+        b = central(runs, f"BM_LinearSolve/p:8/condense:{condense}")
+        if a and b:
+            ratios.append(f"| p = 15 / p = 8, {label} solve | {fmt_ratio(a['real_time'], b['real_time'])} "
+                          f"(dofs {fmt_ratio(a['dofs'], b['dofs'])}) |")
+    e15, full15 = central(runs, "BM_ElementStiffness/15"), central(runs, "BM_LinearSolve/p:15/condense:0")
+    if full15:
+        ratios.append(f"| p = 15, full solve: share of factorise + solve | "
+                      f"{100 * full15['solve_ms'] * 1e-3 / full15['real_time']:.0f} % |")
+    if e15 and full15:
+        ratios.append(f"| p = 15, full solve: share of 4 element stiffnesses (one thread) | "
+                      f"{100 * 4 * e15['real_time'] / full15['real_time']:.0f} % |")
+    if ratios:
+        out += ["", "Ratios within this run:", "", "| ratio | value |", "|---|---:|"] + ratios
+    return out
+
+
+def main(results_path, output_path):
+    context, runs = load(results_path)
+    now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    cores = len(os.sched_getaffinity(0))
+    load_avg = context.get("load_avg") or []
+    lines = [
+        f"Generated by `make bench` (bench/run.sh) on {now}, {cpu_model()}, {cores} cores — "
+        "do not edit by hand; run `make bench` to regenerate.",
+        "",
+        "# Benchmarks",
+        "",
+        f"Commit {git_revision()}; Release build; BLAS {blas_library()}; "
+        f"OMP_NUM_THREADS={os.environ.get('OMP_NUM_THREADS', 'unset (all cores)')}; "
+        f"load average at start {', '.join(f'{x:.1f}' for x in load_avg) or 'unknown'}. "
+        f"Raw results: `{results_path}` (Google Benchmark JSON).",
+        "",
+        f"How to read it: each time is the median of {repetitions(runs)} repetitions (run in random order), "
+        "each",
+        "repetition running the operation as often as fits in 0.2 s (at least once). `spread` is",
+        "the coefficient of variation across the repetitions: above ~10 % the machine was busy and",
+        "that row is unreliable; compare rows of the same run (the ratios) rather than figures",
+        "across machines or days. Set-up (building the problem, and for the element kernel the whole",
+        "discretisation) is outside the timed region unless the row says otherwise. The",
+        "factorisation is CHOLMOD's supernodal Cholesky on the BLAS named above, so the",
+        "factorise + solve column depends on that library as much as on this code.",
+        "",
+    ]
+    lines += element_section(runs) + [""] + solve_section(runs) + [""]
+    with open(output_path, "w", encoding="utf-8") as f:
+        f.write("\n".join(lines))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit("usage: report.py RESULTS.json BENCHMARKS.md")
+    main(sys.argv[1], sys.argv[2])

@@ -1,0 +1,41 @@
+// Gauss-point penalty contact against a rigid obstacle with its consistent tangent.
+#include "hpcontact/contact/penalty.hpp"
+
+namespace hpcontact::contact {
+
+void penalty_contact(const std::vector<ContactPoint>& points, const Obstacle& obstacle,
+                     double eps_n, const Eigen::VectorXd& u, Eigen::VectorXd& force,
+                     std::vector<Eigen::Triplet<double>>* tangent, int offset,
+                     std::vector<PointState>* states) {
+  if (states) states->assign(points.size(), PointState{});
+  for (size_t i = 0; i < points.size(); ++i) {
+    const ContactPoint& cp = points[i];
+    const int m = static_cast<int>(cp.modes.size());
+    Vec2 ux = Vec2::Zero();
+    for (int k = 0; k < m; ++k) ux += cp.N(k) * Vec2(u(2 * cp.modes[k]), u(2 * cp.modes[k] + 1));
+    const Vec2 x = cp.X + ux;
+    Vec2 n;
+    Mat2 dn;
+    const double g = obstacle.gap(x, &n, tangent ? &dn : nullptr);
+    const double pen = g < 0 ? -g : 0.0;
+    if (states) (*states)[i] = PointState{x, g, eps_n * pen, eps_n * pen * n};
+    if (pen == 0.0) continue;
+    const Vec2 f = cp.weight * eps_n * pen * n;
+    for (int k = 0; k < m; ++k) {
+      force(2 * cp.modes[k]) += cp.N(k) * f.x();
+      force(2 * cp.modes[k] + 1) += cp.N(k) * f.y();
+    }
+    if (!tangent) continue;
+    const Mat2 C = cp.weight * eps_n * (n * n.transpose() + g * dn);
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; b < m; ++b) {
+        const double nn = cp.N(a) * cp.N(b);
+        for (int r = 0; r < 2; ++r)
+          for (int c = 0; c < 2; ++c)
+            tangent->emplace_back(offset + 2 * cp.modes[a] + r, offset + 2 * cp.modes[b] + c,
+                                  nn * C(r, c));
+      }
+  }
+}
+
+}  // namespace hpcontact::contact

@@ -1,0 +1,36 @@
+// Normal penalty contact of a body's contact points against a rigid obstacle (seed eq. 3.19–3.24).
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include "hpcontact/contact/contact_boundary.hpp"
+#include "hpcontact/contact/obstacle.hpp"
+
+namespace hpcontact::contact {
+
+/// State of one contact point after an evaluation.
+struct PointState {
+  Vec2 x;                 ///< deformed position
+  double gap = 0;         ///< signed normal gap g_N (negative: penetration)
+  double pressure = 0;    ///< penalty pressure p_N = eps_N <-g_N> (>= 0, compressive)
+  Vec2 traction;          ///< traction on the body, p_N n_obstacle
+};
+
+/// Penalty contribution of all points against an obstacle.
+///
+/// With g = g_N(x + u) and the penetration <-g> = max(0, -g), the contact virtual work is
+///   delta Pi_c = -eps_N ∫ <-g> n · delta u ds,
+/// i.e. the body receives the force f_c = eps_N ∫ N^T <-g> n ds. Its consistent tangent
+/// (derivative of -f_c with respect to u) at an active point is
+///   K_c = eps_N ∫ N^T (n n^T + g dn/dx) N ds.
+/// `u` holds the body's dofs (dof = 2·mode + component); `force` receives f_c at the same
+/// indices; `tangent` (may be null) receives triplets of K_c, offset by `offset` in both indices.
+void penalty_contact(const std::vector<ContactPoint>& points, const Obstacle& obstacle,
+                     double eps_n, const Eigen::VectorXd& u, Eigen::VectorXd& force,
+                     std::vector<Eigen::Triplet<double>>* tangent, int offset,
+                     std::vector<PointState>* states);
+
+}  // namespace hpcontact::contact

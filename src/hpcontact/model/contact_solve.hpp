@@ -1,0 +1,57 @@
+// The contact problem: linear elastic bodies, penalty contact, load steps, Newton, force control.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "hpcontact/contact/obstacle.hpp"
+#include "hpcontact/contact/penalty.hpp"
+#include "hpcontact/model/discretization.hpp"
+#include "hpcontact/solve/newton.hpp"
+
+namespace hpcontact::model {
+
+/// A resolved contact pair: the body, its contact points, the obstacle and the penalty.
+struct ContactPair {
+  int body = -1;
+  std::vector<contact::ContactPoint> points;
+  std::vector<int> edges;  ///< mesh edges of the contact boundary, in order
+  contact::ObstaclePtr obstacle;
+  double penalty = 0;
+  Vec2 reference_point = Vec2::Zero();  ///< obstacle point used for the half width
+  Vec2 tangent = Vec2(1, 0);            ///< obstacle tangent used for the half width
+};
+
+/// Contact pairs of a problem; InputError naming the key when a pair is wrong.
+std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discretization& d);
+
+/// State of the contact after a solve: per pair, its points' states and derived figures.
+struct ContactResult {
+  std::vector<contact::PointState> states;  ///< per contact point of the pair
+  Vec2 resultant = Vec2::Zero();            ///< ∫ traction ds on the body
+  double p_max = 0, max_penetration = 0;
+  std::vector<Vec2> gamma_star;  ///< ends of the contact zone (Pegasus on the gap, seed §4.7)
+  double half_width = 0;         ///< largest |(Γ* - reference point)·tangent|
+};
+
+struct NonlinearSolution {
+  Eigen::VectorXd u;  ///< all dofs
+  bool converged = false;
+  std::string message;  ///< why it stopped, when not converged
+  int newton_iterations = 0, load_steps = 0;
+  double load_factor = 1;  ///< factor on the prescribed displacements and loads
+  std::vector<ContactResult> contact;
+};
+
+using ProgressFn = std::function<void(const std::string&)>;
+
+/// Solves the (nonlinear) contact problem with load steps and Newton's method; with
+/// solver.target_resultant, finds the load factor by the secant method.
+NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d,
+                                const ProgressFn& progress = {});
+
+}  // namespace hpcontact::model

@@ -1,0 +1,56 @@
+// Plain Newton–Raphson with a full tangent refactorised every iteration.
+#include "hpcontact/solve/newton.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "hpcontact/core/error.hpp"
+
+namespace hpcontact::solve {
+
+SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOptions& options,
+                   const IterationCallback& callback) {
+  SolveReport report;
+  Eigen::VectorXd r(system.size());
+  SparseMatrix K;
+  LinearSolver solver(options.linear_solver);
+  double scale = 0;
+  for (int it = 0;; ++it) {
+    system.evaluate(x, r, &K);
+    const double rn = r.norm();
+    report.residual_history.push_back(rn);
+    if (!std::isfinite(rn)) {
+      report.status = SolveStatus::not_finite;
+      report.message = "the residual is not finite (NaN or Inf) at iteration " + std::to_string(it);
+      return report;
+    }
+    if (it == 0) scale = std::max(rn, options.reference_norm);
+    if (rn == 0.0 || (it > 0 && rn <= options.tolerance * scale)) {
+      report.status = SolveStatus::converged;
+      report.iterations = it;
+      return report;
+    }
+    if (it == options.max_iterations) {
+      std::ostringstream os;
+      os << "no convergence in " << it << " iterations: |R| = " << rn << " (tolerance "
+         << options.tolerance * scale << ")";
+      report.status = SolveStatus::max_iterations;
+      report.message = os.str();
+      report.iterations = it;
+      return report;
+    }
+    try {
+      solver.factorize(K);
+    } catch (const NumericalError& e) {
+      report.status = SolveStatus::singular;
+      report.message = e.what();
+      report.iterations = it;
+      return report;
+    }
+    const Eigen::VectorXd dx = solver.solve(-r);
+    x += dx;
+    if (callback) callback(it + 1, rn, dx.norm());
+  }
+}
+
+}  // namespace hpcontact::solve

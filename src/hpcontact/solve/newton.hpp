@@ -1,0 +1,50 @@
+// Newton–Raphson for R(x) = 0 with a sparse tangent; knows residuals and tangents, no FE.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "hpcontact/solve/linear_solver.hpp"
+
+namespace hpcontact::solve {
+
+/// A nonlinear system R(x) = 0 and its tangent dR/dx.
+class NonlinearSystem {
+public:
+  virtual ~NonlinearSystem() = default;
+  virtual int size() const = 0;
+  /// R(x) into r; if K is not null, the tangent dR/dx (symmetric) into *K.
+  virtual void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, SparseMatrix* K) = 0;
+};
+
+struct NewtonOptions {
+  int max_iterations = 30;
+  /// Converged when ||R|| <= tolerance · max(||R_0||, reference_norm) and the last correction is
+  /// small (||dx|| <= tolerance · ||x||), or ||R|| == 0.
+  double tolerance = 1e-10;
+  double reference_norm = 0;  ///< scale of R when R_0 is tiny (e.g. the norm of the external load)
+  LinearSolverKind linear_solver = LinearSolverKind::cholmod;
+};
+
+enum class SolveStatus { converged, max_iterations, not_finite, singular };
+
+/// Outcome of a solve; non-convergence is a status, not an exception.
+struct SolveReport {
+  SolveStatus status = SolveStatus::max_iterations;
+  std::string message;
+  int iterations = 0;
+  std::vector<double> residual_history;  ///< ||R|| before each iteration, and at the end
+  bool ok() const { return status == SolveStatus::converged; }
+};
+
+/// Called after each iteration with (iteration, ||R||, ||dx||).
+using IterationCallback = std::function<void(int, double, double)>;
+
+/// Newton's method from the initial guess in x (updated in place).
+SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOptions& options,
+                   const IterationCallback& callback = {});
+
+}  // namespace hpcontact::solve

@@ -1,0 +1,119 @@
+// Penalty contact against a rigid obstacle: the Hertz examples, condensation, the analytic tangent.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hpcontact/contact/penalty.hpp"
+#include "hpcontact/driver/run.hpp"
+#include "hpcontact/io/problem_reader.hpp"
+#include "hpcontact/model/contact_solve.hpp"
+#include "hpcontact/post/fields.hpp"
+
+using namespace hpcontact;
+
+namespace {
+std::string example(const std::string& name) {
+  return std::string(HPC_SOURCE_DIR) + "/examples/hertz/" + name;
+}
+}  // namespace
+
+// The Hertz examples run as they are: 220, 544 and 1860 free unknowns, Newton converges, and
+// force control finds the displacement whose contact resultant is F/2 = 35000 N (within 0.1 %;
+// the secant iteration's own tolerance is 1e-9).
+TEST(HertzExamples, DofsAndResultant) {
+  for (auto [name, dofs] : {std::pair{"p5.yaml", 220}, std::pair{"p8.yaml", 544},
+                            std::pair{"p15.yaml", 1860}}) {
+    const auto spec = io::read_problem(example(name));
+    const auto s = driver::run_problem(spec, {}).summary;
+    EXPECT_TRUE(s.converged);
+    EXPECT_EQ(s.dofs, dofs) << name;
+    const auto& c = s.extra.at("contact");
+    EXPECT_NEAR(c.at("resultant")[1].get<double>(), 35000.0, 35.0) << name;
+    EXPECT_NEAR(c.at("resultant")[0].get<double>(), 0.0, 1e-6) << name;
+    EXPECT_GT(c.at("max_penetration").get<double>(), 0.0);
+    EXPECT_FALSE(c.at("gamma_star").empty());
+  }
+}
+
+// Statically condensing the internal modes before Newton gives the same contact solution as
+// Newton on all free unknowns (displacements within 1e-8 relative).
+TEST(ContactSolve, CondensedEqualsFull) {
+  for (const char* name : {"p5.yaml", "p8.yaml"}) {
+    auto full = io::read_problem(example(name), {"discretization.condense=false"});
+    auto cond = io::read_problem(example(name), {"discretization.condense=true"});
+    const auto a = driver::run_problem(full, {});
+    const auto b = driver::run_problem(cond, {});
+    EXPECT_LT((a.u - b.u).norm(), 1e-8 * a.u.norm()) << name;
+  }
+}
+
+namespace {
+
+/// Max |K_analytic - K_fd| / max |K_analytic| for the penalty force of one contact pair at the
+/// state u, by central differences of f_c with step h on the dofs of the contact boundary.
+double tangent_mismatch(const model::Discretization& d, model::ContactPair pair,
+                        const Eigen::VectorXd& u_global, double h) {
+  const auto& body = d.bodies[pair.body];
+  const int n = body.dofs.n_dofs();
+  const Eigen::VectorXd u = u_global.segment(body.dof_offset, n);
+  // Points within 1e-5 of the contact switch (g = 0) would change state under the differences:
+  // the force is not differentiable there, so they are left out of the comparison.
+  {
+    std::vector<contact::PointState> states;
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+    contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty, u, f, nullptr, 0, &states);
+    std::vector<contact::ContactPoint> kept;
+    for (size_t i = 0; i < states.size(); ++i)
+      if (std::abs(states[i].gap) > 1e-5) kept.push_back(pair.points[i]);
+    pair.points = kept;
+  }
+  std::vector<Eigen::Triplet<double>> t;
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+  contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty, u, f, &t, 0, nullptr);
+  Eigen::SparseMatrix<double> K(n, n);
+  K.setFromTriplets(t.begin(), t.end());
+  const Eigen::MatrixXd Ka = Eigen::MatrixXd(K);
+  std::vector<int> dofs;
+  for (const auto& cp : pair.points)
+    for (int m : cp.modes) dofs.push_back(2 * m), dofs.push_back(2 * m + 1);
+  std::sort(dofs.begin(), dofs.end());
+  dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+  double diff = 0;
+  for (int j : dofs) {
+    Eigen::VectorXd up = u, um = u, fp = Eigen::VectorXd::Zero(n), fm = Eigen::VectorXd::Zero(n);
+    up(j) += h;
+    um(j) -= h;
+    contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty, up, fp, nullptr, 0, nullptr);
+    contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty, um, fm, nullptr, 0, nullptr);
+    // K is the derivative of -f_c.
+    const Eigen::VectorXd col = -(fp - fm) / (2 * h);
+    for (int i : dofs) diff = std::max(diff, std::abs(col(i) - Ka(i, j)));
+  }
+  return diff / Ka.cwiseAbs().maxCoeff();
+}
+
+}  // namespace
+
+// The analytic contact tangent equals the central finite-difference tangent of the contact force
+// on a converged Hertz state (relative difference < 1e-8, the accuracy of the differences), for the plane and for a rigid circle,
+// whose curvature term (g dn/dx) the analytic tangent includes.
+TEST(ContactTangent, AnalyticEqualsFiniteDifference) {
+  const auto spec = io::read_problem(example("p5.yaml"));
+  const auto result = driver::run_problem(spec, {});
+  const auto& d = result.discretization;
+  auto pairs = model::make_contact_pairs(spec, d);
+  ASSERT_EQ(pairs.size(), 1u);
+  // Step 1e-6: the round-off of the gap (~1e-14 at coordinates ~50) stays far below it.
+  const double plane = tangent_mismatch(d, pairs[0], result.u, 1e-6);
+  RecordProperty("mismatch_plane", std::to_string(plane));
+  EXPECT_LT(plane, 1e-8);
+
+  auto circle_spec = spec;
+  circle_spec.contact[0].obstacle.kind = model::ObstacleKind::circle;
+  circle_spec.contact[0].obstacle.center = {0.0, -50.0};
+  circle_spec.contact[0].obstacle.radius = 50.0;
+  auto circle_pairs = model::make_contact_pairs(circle_spec, d);
+  const double circle = tangent_mismatch(d, circle_pairs[0], result.u, 1e-6);
+  RecordProperty("mismatch_circle", std::to_string(circle));
+  EXPECT_LT(circle, 1e-8);
+}
