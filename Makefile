@@ -14,10 +14,11 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# The main job: the Lamé example until contact exists (then the Hertz benchmark).
+# The main job: the Hertz benchmark (p = 8, force control to F/2), and the Lamé cylinder.
 run: build
+	@$(BUILD_DIR)/hpcontact run examples/hertz/p8.yaml --out results/hertz-p8
 	@$(BUILD_DIR)/hpcontact run examples/lame/thick-cylinder.yaml --out results/lame
-	@echo "results: results/lame/summary.json, results/lame/solution.vtu (open in ParaView)"
+	@echo "results: results/hertz-p8/ (summary.json, contact.csv, solution.vtu), results/lame/ (summary.json, solution.vtu); open the .vtu files in ParaView"
 
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -LE slow

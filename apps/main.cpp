@@ -40,6 +40,7 @@ int run_command(const std::string& file, std::string out_dir, const std::vector<
         std::cout << " (error norm " << *s.error->energy_norm_rel_percent << " %)";
     }
     std::cout << "\n  results in " << out_dir << "/ (summary.json";
+    if (!read.spec.contact.empty()) std::cout << ", contact.csv";
     if (read.spec.output.vtu) std::cout << ", solution.vtu";
     std::cout << ", input.yaml), " << s.wall_time_s << " s\n";
   }

@@ -125,3 +125,24 @@ def test_docs_input_md_is_current(hpcontact, root):
     assert r.returncode == 0
     with open(os.path.join(root, "docs", "input.md")) as f:
         assert f.read() == r.stdout, "docs/input.md is stale: run build/hpcontact --help-input > docs/input.md"
+
+
+def test_hertz_run_writes_contact_curve(hpcontact, root, tmp_path):
+    """The Hertz p8 example converges to F/2 and writes the interface curve contact.csv."""
+    r = hpcontact("run", os.path.join(root, "examples/hertz/p8.yaml"), "--out", tmp_path, "-q")
+    assert r.returncode == 0, r.stderr
+    s = json.loads((tmp_path / "summary.json").read_text())
+    assert s["converged"] and s["dofs"] == 544
+    assert abs(s["contact"]["resultant"][1] - 35000) < 35
+    lines = (tmp_path / "contact.csv").read_text().splitlines()
+    assert lines[0] == "pair,X,Y,x,y,gap,pressure" and len(lines) == 1 + 2 * 50
+
+
+def test_newton_failure_is_reported_not_summarised(hpcontact, root, tmp_path):
+    """A Newton run that cannot converge cuts the step, then stops: exit 1, a message naming
+    the load step and the residual history, and no summary.json."""
+    r = hpcontact("run", os.path.join(root, "examples/hertz/p5.yaml"), "--out", tmp_path, "-q",
+                  "--set", "solver.max_iterations=1", "--set", "solver.max_cuts=2")
+    assert r.returncode == 1, r.stderr
+    assert "load step" in r.stderr and "residual history" in r.stderr and "2 cuts" in r.stderr
+    assert not (tmp_path / "summary.json").exists()
