@@ -229,11 +229,14 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
     const double t = b != a ? std::clamp((c - a) / (b - a), 0.0, 1.0) : 0.0;
     return expr ? (*expr)(x.x(), x.y()) : load_shape(ls.shape, t);
   };
-  // Break points of each edge: where the coordinate crosses a or b.
+  // Break points of each edge: where the coordinate crosses a or b, and the joint t = 1/2 of
+  // the two-sided B-spline (its second derivative jumps there).
+  std::vector<double> targets;
+  if (ls.interval) targets = {a, b};
+  if (ls.shape == LoadShape::bspline2) targets.push_back(0.5 * (a + b));
   auto pieces = [&](int q, int le) {
     std::vector<double> ts{-1.0, 1.0};
-    if (!ls.interval) return ts;
-    for (double target : {a, b}) {
+    for (double target : targets) {
       auto f = [&](double t) {
         return fem::edge_geometry(body.maps[q], le, t, nullptr, nullptr)(axis) - target;
       };
