@@ -135,7 +135,8 @@ def test_hertz_run_writes_contact_curve(hpcontact, root, tmp_path):
     assert s["converged"] and s["dofs"] == 544
     assert abs(s["contact"]["resultant"][1] - 35000) < 35
     lines = (tmp_path / "contact.csv").read_text().splitlines()
-    assert lines[0] == "pair,X,Y,x,y,gap,pressure" and len(lines) == 1 + 2 * 50
+    assert lines[0] == "pair,X,Y,x,y,gap,pressure,pressure_from_stress"
+    assert len(lines) == 1 + 2 * 50
 
 
 def test_newton_failure_is_reported_not_summarised(hpcontact, root, tmp_path):

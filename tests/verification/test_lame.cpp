@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include "hpcontact/analytic/lame.hpp"
 #include "hpcontact/driver/run.hpp"
@@ -70,4 +72,19 @@ TEST(Lame, EnergyDifferenceEqualsErrorNorm) {
   const auto s = driver::run_problem(spec, {}).summary;
   EXPECT_NEAR(s.error->energy_rel_percent, *s.error->energy_norm_rel_percent,
               1e-3 * *s.error->energy_norm_rel_percent);
+}
+
+// Nodes written to a few digits (here 7.07107 for 10/sqrt(2)) are accepted on their arc and
+// moved onto it, so the geometry stays exact: the run gives the same error as the exact input.
+TEST(Lame, RoundedNodeCoordinatesAreSnappedOntoTheirArcs) {
+  std::ifstream in(kExample);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  const std::string exact = "[7.0710678118654755, 7.0710678118654755]";
+  yaml.replace(yaml.find(exact), exact.size(), "[7.07107, 7.07107]");
+  const auto spec = io::parse_problem(yaml, "rounded.yaml");
+  const auto s = driver::run_problem(spec, {}).summary;
+  const auto reference = driver::run_problem(io::read_problem(kExample), {}).summary;
+  EXPECT_NEAR(*s.error->energy_norm_rel_percent, *reference.error->energy_norm_rel_percent, 1e-9);
 }

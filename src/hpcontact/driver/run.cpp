@@ -124,13 +124,13 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     if (!contact.empty()) {
       // The interface curve: one row per contact Gauss point.
       std::ostringstream csv;
-      csv << std::setprecision(12) << "pair,X,Y,x,y,gap,pressure\n";
+      csv << std::setprecision(12) << "pair,X,Y,x,y,gap,pressure,pressure_from_stress\n";
       for (size_t k = 0; k < contact.size(); ++k)
         for (size_t i = 0; i < contact[k].states.size(); ++i) {
           const auto& st = contact[k].states[i];
           const auto& X = pairs[k].points[i].X;
           csv << k << ',' << X.x() << ',' << X.y() << ',' << st.x.x() << ',' << st.x.y() << ','
-              << st.gap << ',' << st.pressure << '\n';
+              << st.gap << ',' << st.pressure << ',' << contact[k].stress_pressure[i] << '\n';
         }
       post::write_text_file((out / "contact.csv").string(), csv.str());
     }

@@ -9,6 +9,7 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/condensation.hpp"
 #include "hpcontact/fem/edge_load.hpp"
+#include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/model/linear_solve.hpp"
 
 namespace hpcontact::model {
@@ -203,6 +204,22 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
   ContactResult res;
   contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty,
                            u.segment(body.dof_offset, n), fc, nullptr, 0, &res.states);
+  const auto D = body.material.D();
+  for (const auto& cp : pair.points) {
+    const auto& es = body.dofs.element(cp.element);
+    const auto r = fem::edge_reference_point(cp.local_edge, cp.t);
+    const auto pv = fem::point_values(es, body.maps[cp.element], r[0], r[1]);
+    Eigen::Vector3d eps = Eigen::Vector3d::Zero();
+    for (int a = 0; a < es.n_modes(); ++a) {
+      const int dof = body.dof_offset + 2 * es.modes[a];
+      eps += Eigen::Vector3d(u(dof) * pv.dN_dx(a), u(dof + 1) * pv.dN_dy(a),
+                             u(dof) * pv.dN_dy(a) + u(dof + 1) * pv.dN_dx(a));
+    }
+    const Eigen::Vector3d sig = D * eps;
+    const Vec2& n = cp.normal;
+    res.stress_pressure.push_back(-(n.x() * n.x() * sig(0) + n.y() * n.y() * sig(1) +
+                                    2 * n.x() * n.y() * sig(2)));
+  }
   for (size_t i = 0; i < pair.points.size(); ++i) {
     const auto& s = res.states[i];
     res.resultant += pair.points[i].weight * s.traction;

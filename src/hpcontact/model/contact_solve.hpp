@@ -32,6 +32,9 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
 /// State of the contact after a solve: per pair, its points' states and derived figures.
 struct ContactResult {
   std::vector<contact::PointState> states;  ///< per contact point of the pair
+  /// Normal pressure -n·σ·n from the stresses of the body at each contact point (the seed's
+  /// plotted pressure), n the undeformed outward normal.
+  std::vector<double> stress_pressure;
   Vec2 resultant = Vec2::Zero();            ///< ∫ traction ds on the body
   double p_max = 0, max_penetration = 0;
   std::vector<Vec2> gamma_star;  ///< ends of the contact zone (Pegasus on the gap, seed §4.7)

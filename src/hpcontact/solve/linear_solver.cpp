@@ -19,7 +19,9 @@ LinearSolverKind linear_solver_kind(const std::string& name, const std::string& 
   throw InputError(where + ": unknown linear solver '" + name + "' (expected cholmod or ldlt)");
 }
 
-LinearSolver::LinearSolver(LinearSolverKind kind) : kind_(kind), impl_(std::make_unique<Impl>()) {}
+LinearSolver::LinearSolver(LinearSolverKind kind) : kind_(kind), impl_(std::make_unique<Impl>()) {
+  impl_->cholmod.cholmod().print = 0;  // failures are reported through info(), not printed
+}
 LinearSolver::~LinearSolver() = default;
 LinearSolver::LinearSolver(LinearSolver&&) noexcept = default;
 LinearSolver& LinearSolver::operator=(LinearSolver&&) noexcept = default;
