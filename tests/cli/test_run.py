@@ -137,6 +137,14 @@ def test_hertz_run_writes_contact_curve(hpcontact, root, tmp_path):
     lines = (tmp_path / "contact.csv").read_text().splitlines()
     assert lines[0] == "pair,X,Y,x,y,gap,pressure,pressure_from_stress"
     assert len(lines) == 1 + 2 * 50
+    # the comparison with the closed forms: its keys, and its curves on [0, 1.5 b_Hertz]
+    for key in ("e_L2_hertz_percent", "e_L2_shtayerman_percent", "e_seed_hertz_percent",
+                "e_seed_shtayerman_percent", "hertz_half_width", "shtayerman_half_width"):
+        assert key in s["contact"], key
+    assert abs(s["contact"]["hertz_half_width"] - 1.96524) < 1e-5
+    curve = (tmp_path / "pressure.csv").read_text().splitlines()
+    assert curve[0] == "x,pressure_from_stress,pressure_penalty,hertz,shtayerman"
+    assert len(curve) == 1002
 
 
 def test_newton_failure_is_reported_not_summarised(hpcontact, root, tmp_path):

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "hpcontact/analytic/lame.hpp"
+#include "hpcontact/driver/contact_compare.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/linear_solve.hpp"
@@ -109,6 +110,13 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     cj["p_max"] = c.p_max;
     cj["resultant"] = {c.resultant.x(), c.resultant.y()};
     cj["max_penetration"] = c.max_penetration;
+    if (const auto& cmp = spec.contact.front().compare) {
+      namespace fs = std::filesystem;
+      const std::string csv =
+          options.out_dir.empty() ? "" : (fs::path(options.out_dir) / "pressure.csv").string();
+      if (!csv.empty()) fs::create_directories(options.out_dir);
+      cj.update(compare_pressure(spec, *cmp, disc, pairs.front(), result.u, csv));
+    }
     s.extra["contact"] = cj;
   }
 

@@ -192,6 +192,18 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "contact[].quadrature", .type = T::integer, .default_yaml = "50",
        .doc = "Gauss points per contact edge, independent of p (seed: 50).",
        .lower = at_least(1), .upper = at_most(200)},
+      {.path = "contact[].compare", .type = T::section,
+       .doc = "Measure the contact pressure against Hertz and Shtayerman (a cylinder on the "
+              "obstacle) and, optionally, a reference curve; absent: no comparison."},
+      {.path = "contact[].compare.radius", .type = T::number, .required = true, .unit = "length",
+       .doc = "Radius of the cylinder.", .lower = greater_than(0)},
+      {.path = "contact[].compare.force", .type = T::number, .required = true,
+       .unit = "force/length",
+       .doc = "Force on the whole cylinder per unit thickness (F; the quarter model carries F/2).",
+       .lower = greater_than(0)},
+      {.path = "contact[].compare.reference", .type = T::string,
+       .doc = "CSV with columns x and pressure (a contact.csv of an overkill run, its "
+              "pressure_from_stress column), relative to this file; absent: none."},
 
       {.path = "contact[].obstacle.type", .type = T::choice, .required = true,
        .doc = "plane: a straight line; circle: a disc (or a hole with inside).",

@@ -372,6 +372,14 @@ class SpecBuilder {
       c.obstacle = obstacle(node["obstacle"], item_path + ".obstacle");
       c.penalty = number(node["penalty"]);
       c.quadrature = integer(node["quadrature"]);
+      if (const YAML::Node cmp = node["compare"]) {
+        PressureCompareSpec pc;
+        pc.radius = number(cmp["radius"]);
+        pc.force = number(cmp["force"]);
+        if (cmp["reference"]) pc.reference = cmp["reference"].Scalar();
+        pc.where = source_.where(cmp, item_path + ".compare");
+        c.compare = pc;
+      }
       c.where = source_.where(node, item_path);
       pairs.push_back(std::move(c));
     }

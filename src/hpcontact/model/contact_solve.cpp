@@ -196,6 +196,22 @@ Vec2 pegasus(const Body& body, const ContactPair& pair, int q, int le, double a,
   return x;
 }
 
+/// -n·σ·n at local edge parameter t of element q.
+double stress_pressure(const Body& body, int q, int le, double t, const Vec2& n,
+                       const Eigen::VectorXd& u) {
+  const auto& es = body.dofs.element(q);
+  const auto r = fem::edge_reference_point(le, t);
+  const auto pv = fem::point_values(es, body.maps[q], r[0], r[1]);
+  Eigen::Vector3d eps = Eigen::Vector3d::Zero();
+  for (int a = 0; a < es.n_modes(); ++a) {
+    const int dof = body.dof_offset + 2 * es.modes[a];
+    eps += Eigen::Vector3d(u(dof) * pv.dN_dx(a), u(dof + 1) * pv.dN_dy(a),
+                           u(dof) * pv.dN_dy(a) + u(dof + 1) * pv.dN_dx(a));
+  }
+  const Eigen::Vector3d sig = body.material.D() * eps;
+  return -(n.x() * n.x() * sig(0) + n.y() * n.y() * sig(1) + 2 * n.x() * n.y() * sig(2));
+}
+
 ContactResult contact_result(const Discretization& d, const ContactPair& pair,
                              const Eigen::VectorXd& u) {
   const Body& body = d.bodies[pair.body];
@@ -204,22 +220,8 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
   ContactResult res;
   contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty,
                            u.segment(body.dof_offset, n), fc, nullptr, 0, &res.states);
-  const auto D = body.material.D();
-  for (const auto& cp : pair.points) {
-    const auto& es = body.dofs.element(cp.element);
-    const auto r = fem::edge_reference_point(cp.local_edge, cp.t);
-    const auto pv = fem::point_values(es, body.maps[cp.element], r[0], r[1]);
-    Eigen::Vector3d eps = Eigen::Vector3d::Zero();
-    for (int a = 0; a < es.n_modes(); ++a) {
-      const int dof = body.dof_offset + 2 * es.modes[a];
-      eps += Eigen::Vector3d(u(dof) * pv.dN_dx(a), u(dof + 1) * pv.dN_dy(a),
-                             u(dof) * pv.dN_dy(a) + u(dof + 1) * pv.dN_dx(a));
-    }
-    const Eigen::Vector3d sig = D * eps;
-    const Vec2& n = cp.normal;
-    res.stress_pressure.push_back(-(n.x() * n.x() * sig(0) + n.y() * n.y() * sig(1) +
-                                    2 * n.x() * n.y() * sig(2)));
-  }
+  for (const auto& cp : pair.points)
+    res.stress_pressure.push_back(stress_pressure(body, cp.element, cp.local_edge, cp.t, cp.normal, u));
   for (size_t i = 0; i < pair.points.size(); ++i) {
     const auto& s = res.states[i];
     res.resultant += pair.points[i].weight * s.traction;
@@ -238,6 +240,46 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
 }
 
 }  // namespace
+
+std::optional<BoundaryPressure> pressure_along(const Discretization& d, const ContactPair& pair,
+                                               const Eigen::VectorXd& u, double s) {
+  const Body& body = d.bodies[pair.body];
+  for (int e : pair.edges) {
+    const auto& edge = body.mesh.edge(e);
+    const int q = edge.quads[0], le = edge.local_edge[0];
+    auto coord = [&](double t) {
+      Vec2 x;
+      gap_at(body, pair, q, le, t, u, &x);
+      return (x - pair.reference_point).dot(pair.tangent) - s;
+    };
+    const int n = 32;
+    for (int i = 0; i < n; ++i) {
+      double a = -1 + 2.0 * i / n, b = -1 + 2.0 * (i + 1) / n, fa = coord(a), fb = coord(b);
+      const double tol = 1e-12 * (1 + std::abs(s));  // s on a node: round-off must not hide it
+      if (std::abs(fa) <= tol) fa = 0;
+      if (std::abs(fb) <= tol) fb = 0;
+      if (fa * fb > 0) continue;
+      for (int it = 0; it < 60 && b - a > 1e-15; ++it) {
+        const double m = 0.5 * (a + b), fm = coord(m);
+        if (fa * fm <= 0) {
+          b = m;
+        } else {
+          a = m;
+          fa = fm;
+        }
+      }
+      const double t = 0.5 * (a + b);
+      Vec2 normal;
+      fem::edge_geometry(body.maps[q], le, t, &normal, nullptr);
+      BoundaryPressure bp;
+      const double g = gap_at(body, pair, q, le, t, u, &bp.x);
+      bp.penalty = g < 0 ? -pair.penalty * g : 0.0;
+      bp.from_stress = stress_pressure(body, q, le, t, normal, u);
+      return bp;
+    }
+  }
+  return std::nullopt;
+}
 
 std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discretization& d) {
   std::vector<ContactPair> pairs;

@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,18 @@ struct NonlinearSolution {
   double load_factor = 1;  ///< factor on the prescribed displacements and loads
   std::vector<ContactResult> contact;
 };
+
+/// Pressures at one point of a contact boundary.
+struct BoundaryPressure {
+  Vec2 x;                  ///< deformed position
+  double from_stress = 0;  ///< -n·σ·n, n the undeformed outward normal
+  double penalty = 0;      ///< eps_N <-g_N>
+};
+
+/// Pressures at the boundary point of a pair whose deformed coordinate along the obstacle
+/// tangent, (x - reference point)·tangent, equals s; nullopt if none of its edges reaches s.
+std::optional<BoundaryPressure> pressure_along(const Discretization& d, const ContactPair& pair,
+                                               const Eigen::VectorXd& u, double s);
 
 using ProgressFn = std::function<void(const std::string&)>;
 

@@ -150,6 +150,15 @@ struct ObstacleSpec {
   bool inside = false;
 };
 
+/// Closed forms (Hertz, Shtayerman for the exact circle) and an optional reference curve to
+/// measure the contact pressure against (CASES.md §1). x runs along the obstacle from its point.
+struct PressureCompareSpec {
+  double radius = 0;      ///< cylinder radius [length]
+  double force = 0;       ///< force on the whole cylinder per unit thickness [force/length]
+  std::string reference;  ///< CSV (x, pressure) of a reference run; empty: none
+  SourceRef where;
+};
+
 /// A contact boundary of a body against a rigid obstacle, enforced by a normal penalty at the
 /// Gauss points of its edges.
 struct ContactPairSpec {
@@ -158,6 +167,7 @@ struct ContactPairSpec {
   ObstacleSpec obstacle;
   double penalty = 0;   ///< eps_N > 0 [force/length³]
   int quadrature = 50;  ///< Gauss points per contact edge, independent of p (seed: 50)
+  std::optional<PressureCompareSpec> compare;
   SourceRef where;
 };
 

@@ -1,0 +1,127 @@
+// Pressure comparison: sample the FE pressure along the obstacle and integrate the differences.
+#include "hpcontact/driver/contact_compare.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "hpcontact/analytic/hertz.hpp"
+#include "hpcontact/core/error.hpp"
+#include "hpcontact/post/pressure_error.hpp"
+#include "hpcontact/post/summary.hpp"
+
+namespace hpcontact::driver {
+
+namespace {
+
+/// A piecewise linear curve p(x) read from a CSV with columns x and pressure_from_stress (or
+/// pressure); zero outside its range.
+struct ReferenceCurve {
+  std::vector<double> x, p;
+  double operator()(double s) const {
+    if (x.empty() || s < x.front() || s > x.back()) return 0.0;
+    const auto it = std::upper_bound(x.begin(), x.end(), s);
+    const size_t i = std::min<size_t>(std::max<long>(it - x.begin(), 1), x.size() - 1);
+    const double w = (s - x[i - 1]) / (x[i] - x[i - 1]);
+    return (1 - w) * p[i - 1] + w * p[i];
+  }
+};
+
+ReferenceCurve read_reference(const std::string& path, const std::string& where) {
+  std::ifstream in(path);
+  HPC_REQUIRE(in, InputError, where, ".reference: cannot open '", path, "'");
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> cols;
+  {
+    std::stringstream ss(line);
+    std::string c;
+    while (std::getline(ss, c, ',')) cols.push_back(c);
+  }
+  auto col = [&](const std::string& name) {
+    return static_cast<int>(std::find(cols.begin(), cols.end(), name) - cols.begin());
+  };
+  const int ix = col("x");
+  int ip = col("pressure_from_stress");
+  if (ip == static_cast<int>(cols.size())) ip = col("pressure");
+  HPC_REQUIRE(ix < static_cast<int>(cols.size()) && ip < static_cast<int>(cols.size()), InputError,
+              where, ".reference: '", path, "' needs columns x and pressure_from_stress");
+  ReferenceCurve r;
+  int row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    std::vector<double> v;
+    std::stringstream ss(line);
+    std::string c;
+    while (std::getline(ss, c, ',')) {
+      char* end = nullptr;
+      v.push_back(std::strtod(c.c_str(), &end));
+      HPC_REQUIRE(end != c.c_str(), InputError, where, ".reference: '", path, "' line ", row,
+                  ": not a number: '", c, "'");
+    }
+    HPC_REQUIRE(static_cast<int>(v.size()) > std::max(ix, ip), InputError, where, ".reference: '",
+                path, "' line ", row, ": too few columns");
+    r.x.push_back(v[ix]);
+    r.p.push_back(v[ip]);
+  }
+  HPC_REQUIRE(r.x.size() >= 2 && std::is_sorted(r.x.begin(), r.x.end()), InputError, where,
+              ".reference: '", path, "' needs at least two rows sorted by x");
+  return r;
+}
+
+}  // namespace
+
+nlohmann::json compare_pressure(const model::ProblemSpec& spec, const model::PressureCompareSpec& cmp,
+                                const model::Discretization& d, const model::ContactPair& pair,
+                                const Eigen::VectorXd& u, const std::string& csv_path) {
+  const auto& mat = d.bodies[pair.body].material;
+  const double E = mat.youngs_modulus, nu = mat.poisson_ratio;
+  HPC_REQUIRE(mat.plane == material::Plane::strain, InputError, cmp.where.str(),
+              ": Hertz and Shtayerman are implemented for plane strain");
+  const analytic::Hertz hertz{cmp.radius, cmp.force, E, nu};
+  const auto shtayerman = analytic::Shtayerman::circle(cmp.radius, cmp.force, E, nu);
+  auto fe = [&](double x) {
+    const auto bp = model::pressure_along(d, pair, u, x);
+    return bp ? bp->from_stress : 0.0;
+  };
+  const double b = hertz.half_width(), p0 = hertz.peak_pressure();
+  const auto eh = post::pressure_errors(fe, [&](double x) { return hertz.pressure(x); }, b, p0);
+  const auto es = post::pressure_errors(fe, [&](double x) { return shtayerman.pressure(x); },
+                                        shtayerman.half_width(), p0);
+  nlohmann::json j;
+  j["hertz_half_width"] = b;
+  j["hertz_peak_pressure"] = p0;
+  j["shtayerman_half_width"] = shtayerman.half_width();
+  j["e_L2_hertz_percent"] = eh.e_L2;
+  j["e_seed_hertz_percent"] = eh.e_seed;
+  j["e_L2_shtayerman_percent"] = es.e_L2;
+  j["e_seed_shtayerman_percent"] = es.e_seed;
+  j["pressure_measured_from"] = "stress";
+  if (!cmp.reference.empty()) {
+    namespace fs = std::filesystem;
+    fs::path path(cmp.reference);
+    if (path.is_relative()) path = fs::path(spec.file).parent_path() / path;
+    const auto ref = read_reference(path.string(), cmp.where.str());
+    const auto er = post::pressure_errors(fe, ref, b, p0);
+    j["e_L2_reference_percent"] = er.e_L2;
+    j["e_seed_reference_percent"] = er.e_seed;
+    j["reference"] = cmp.reference;
+  }
+  if (!csv_path.empty()) {
+    std::ostringstream csv;
+    csv.precision(12);
+    csv << "x,pressure_from_stress,pressure_penalty,hertz,shtayerman\n";
+    for (int i = 0; i <= 1000; ++i) {
+      const double x = 1.5 * b * i / 1000;
+      const auto bp = model::pressure_along(d, pair, u, x);
+      csv << x << ',' << (bp ? bp->from_stress : 0.0) << ',' << (bp ? bp->penalty : 0.0) << ','
+          << hertz.pressure(x) << ',' << shtayerman.pressure(x) << '\n';
+    }
+    post::write_text_file(csv_path, csv.str());
+  }
+  return j;
+}
+
+}  // namespace hpcontact::driver
