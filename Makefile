@@ -17,8 +17,9 @@ build: configure
 # The main job: the Hertz benchmark (p = 8, force control to F/2), and the Lamé cylinder.
 run: build
 	@$(BUILD_DIR)/hpcontact run examples/hertz/p8.yaml --out results/hertz-p8
+	@$(PYTHON) scripts/plot_pressure.py results/hertz-p8
 	@$(BUILD_DIR)/hpcontact run examples/lame/thick-cylinder.yaml --out results/lame
-	@echo "results: results/hertz-p8/ (summary.json, contact.csv, solution.vtu), results/lame/ (summary.json, solution.vtu); open the .vtu files in ParaView"
+	@echo "results: results/hertz-p8/ (summary.json, pressure.png, pressure.csv, contact.csv, solution.vtu), results/lame/ (summary.json, solution.vtu); open the .vtu files in ParaView"
 
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -LE slow

@@ -155,3 +155,15 @@ def test_newton_failure_is_reported_not_summarised(hpcontact, root, tmp_path):
     assert r.returncode == 1, r.stderr
     assert "load step" in r.stderr and "residual history" in r.stderr and "2 cuts" in r.stderr
     assert not (tmp_path / "summary.json").exists()
+
+
+def test_pressure_plot(hpcontact, root, tmp_path):
+    """scripts/plot_pressure.py turns a Hertz run into a non-trivial PNG."""
+    import subprocess
+    r = hpcontact("run", os.path.join(root, "examples/hertz/p5.yaml"), "--out", tmp_path, "-q")
+    assert r.returncode == 0, r.stderr
+    p = subprocess.run(["/usr/bin/python3", os.path.join(root, "scripts", "plot_pressure.py"),
+                        str(tmp_path)], capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, p.stderr
+    png = (tmp_path / "pressure.png").read_bytes()
+    assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 20000
