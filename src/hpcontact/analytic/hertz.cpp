@@ -5,6 +5,7 @@
 #include <numbers>
 #include <vector>
 
+#include "hpcontact/basis/quadrature.hpp"
 #include "hpcontact/core/error.hpp"
 
 namespace hpcontact::analytic {
@@ -12,41 +13,8 @@ namespace hpcontact::analytic {
 namespace {
 constexpr double pi = std::numbers::pi;
 
-/// Gauss–Legendre nodes and weights on [-1, 1] by Newton on L_n (kept local: analytic depends
-/// on core only).
-void gauss(int n, std::vector<double>& x, std::vector<double>& w) {
-  x.resize(n);
-  w.resize(n);
-  for (int i = 0; i < n; ++i) {
-    double z = std::cos(pi * (i + 0.75) / (n + 0.5)), dp = 0;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1, p1 = z;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (z * p1 - p0) / (z * z - 1);
-      const double dz = p1 / dp;
-      z -= dz;
-      if (std::abs(dz) < 1e-16) break;
-    }
-    x[i] = z;
-    w[i] = 2 / ((1 - z * z) * dp * dp);
-  }
-}
-
-const std::vector<double>& nodes() {
-  static std::vector<double> x, w;
-  if (x.empty()) gauss(200, x, w);
-  return x;
-}
-const std::vector<double>& weights() {
-  nodes();
-  static std::vector<double> x, w;
-  if (w.empty()) gauss(200, x, w);
-  return w;
-}
+/// The 200-point Gauss–Legendre rule used for both Shtayerman integrals (smooth in theta).
+const basis::QuadratureRule1D& rule() { return basis::gauss_legendre(200); }
 }  // namespace
 
 double Hertz::half_width() const {
@@ -67,8 +35,8 @@ Shtayerman::Shtayerman(std::function<double(double)> df, std::function<double(do
       d2f_(std::move(d2f)),
       K_(2 * (1 - poisson_ratio * poisson_ratio) / youngs_modulus),
       F_(force) {
-  const auto& x = nodes();
-  const auto& w = weights();
+  const auto& x = rule().points;
+  const auto& w = rule().weights;
   // g(b) = ∫ t f'(t) / sqrt(b² - t²) dt - K F, with t = b sin(theta), theta in (-pi/2, pi/2).
   auto g = [&](double b) {
     double s = 0;
@@ -101,8 +69,8 @@ Shtayerman Shtayerman::parabola(double R, double force, double E, double nu) {
 
 double Shtayerman::pressure(double y) const {
   if (std::abs(y) >= b_) return 0.0;
-  const auto& x = nodes();
-  const auto& w = weights();
+  const auto& x = rule().points;
+  const auto& w = rule().weights;
   const double fy = df_(y);
   double s = 0;
   for (size_t i = 0; i < x.size(); ++i) {
