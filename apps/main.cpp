@@ -24,6 +24,7 @@ constexpr int kFailed = 1;
 int run_command(const std::string& file, std::string out_dir, const std::vector<std::string>& sets,
                 bool quiet) {
   if (out_dir.empty()) out_dir = "results/" + std::filesystem::path(file).stem().string();
+  driver::prepare_output_folder(out_dir);  // before reading: bad input must not leave an old summary
   const auto read = io::read_problem_full(file, sets);
   driver::RunOptions options;
   options.out_dir = out_dir;

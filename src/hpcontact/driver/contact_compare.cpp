@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unordered_map>
 #include <vector>
 
 #include "hpcontact/analytic/hertz.hpp"
@@ -82,9 +83,13 @@ nlohmann::json compare_pressure(const model::ProblemSpec& spec, const model::Pre
               ": Hertz and Shtayerman are implemented for plane strain");
   const analytic::Hertz hertz{cmp.radius, cmp.force, E, nu};
   const auto shtayerman = analytic::Shtayerman::circle(cmp.radius, cmp.force, E, nu);
+  // Hertz and the reference are integrated on the same points: locate each point only once.
+  const model::BoundaryPressureProbe probe(d, pair, u);
+  std::unordered_map<double, double> located;
   auto fe = [&](double x) {
-    const auto bp = model::pressure_along(d, pair, u, x);
-    return bp ? bp->from_stress : 0.0;
+    if (auto it = located.find(x); it != located.end()) return it->second;
+    const auto bp = probe(x);
+    return located[x] = bp ? bp->from_stress : 0.0;
   };
   const double b = hertz.half_width(), p0 = hertz.peak_pressure();
   const auto eh = post::pressure_errors(fe, [&](double x) { return hertz.pressure(x); }, b, p0);
@@ -115,7 +120,7 @@ nlohmann::json compare_pressure(const model::ProblemSpec& spec, const model::Pre
     csv << "x,pressure_from_stress,pressure_penalty,hertz,shtayerman\n";
     for (int i = 0; i <= 1000; ++i) {
       const double x = 1.5 * b * i / 1000;
-      const auto bp = model::pressure_along(d, pair, u, x);
+      const auto bp = probe(x);
       csv << x << ',' << (bp ? bp->from_stress : 0.0) << ',' << (bp ? bp->penalty : 0.0) << ','
           << hertz.pressure(x) << ',' << shtayerman.pressure(x) << '\n';
     }

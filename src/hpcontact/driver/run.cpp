@@ -46,6 +46,15 @@ std::optional<post::ErrorSummary> exact_error(const model::ProblemSpec& spec,
 
 }  // namespace
 
+void prepare_output_folder(const std::string& out_dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  HPC_REQUIRE(!ec, IoError, out_dir, ": cannot create the output folder: ", ec.message());
+  fs::remove(fs::path(out_dir) / "summary.json", ec);
+  HPC_REQUIRE(!ec, IoError, out_dir, ": cannot remove the previous summary.json: ", ec.message());
+}
+
 RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
@@ -53,6 +62,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     if (options.progress) options.progress(s);
   };
 
+  if (!options.out_dir.empty()) prepare_output_folder(options.out_dir);
   model::Discretization d = model::discretize(spec);
   {
     std::ostringstream os;
@@ -91,7 +101,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     s.load_steps = sol.load_steps;
     s.extra["load_factor"] = sol.load_factor;
     contact = sol.contact;
-    pairs = model::make_contact_pairs(spec, d);
+    pairs = sol.pairs;
   }
   result.discretization = std::move(d);
   const auto& disc = result.discretization;
@@ -114,7 +124,6 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       namespace fs = std::filesystem;
       const std::string csv =
           options.out_dir.empty() ? "" : (fs::path(options.out_dir) / "pressure.csv").string();
-      if (!csv.empty()) fs::create_directories(options.out_dir);
       cj.update(compare_pressure(spec, *cmp, disc, pairs.front(), result.u, csv));
     }
     s.extra["contact"] = cj;
@@ -122,11 +131,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
 
   if (!options.out_dir.empty()) {
     namespace fs = std::filesystem;
-    std::error_code ec;
-    fs::create_directories(options.out_dir, ec);
-    HPC_REQUIRE(!ec, IoError, options.out_dir, ": cannot create the output folder: ", ec.message());
     const fs::path out(options.out_dir);
-    fs::remove(out / "summary.json", ec);  // a stale summary must not pass for this run's
     if (!options.effective_input.empty())
       post::write_text_file((out / "input.yaml").string(), options.effective_input);
     if (!contact.empty()) {

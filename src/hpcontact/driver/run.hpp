@@ -24,7 +24,11 @@ struct RunResult {
   Eigen::VectorXd u;  ///< all dofs
 };
 
-/// Runs the problem. Input and mesh errors propagate as exceptions before anything is written;
+/// Creates the output folder and removes a summary.json left by an earlier run, so that the
+/// folder of a run that then fails holds no summary that could pass for its result. IoError.
+void prepare_output_folder(const std::string& out_dir);
+
+/// Runs the problem (calling prepare_output_folder first when out_dir is set). Input and mesh errors propagate as exceptions before anything is written;
 /// summary.json is written last, so its presence means the run finished.
 RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options);
 

@@ -42,4 +42,10 @@ Eigen::Matrix3Xd strains(const ElementValues& ev, const Eigen::VectorXd& u_e) {
   return eps;
 }
 
+Eigen::Vector3d strain(const PointValues& pv, const Eigen::VectorXd& u_e) {
+  const int n = static_cast<int>(pv.N.size());
+  const auto ux = u_e.head(n), uy = u_e.tail(n);
+  return {ux.dot(pv.dN_dx), uy.dot(pv.dN_dy), ux.dot(pv.dN_dy) + uy.dot(pv.dN_dx)};
+}
+
 }  // namespace hpcontact::fem

@@ -21,4 +21,7 @@ Eigen::VectorXd body_force(const ElementValues& ev, const Vec2& b, double thickn
 /// (component-blocked); 3 × n_points.
 Eigen::Matrix3Xd strains(const ElementValues& ev, const Eigen::VectorXd& u_e);
 
+/// Strain (xx, yy, gamma_xy) at one point for local coefficients u_e (component-blocked).
+Eigen::Vector3d strain(const PointValues& pv, const Eigen::VectorXd& u_e);
+
 }  // namespace hpcontact::fem

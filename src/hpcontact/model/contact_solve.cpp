@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "hpcontact/core/error.hpp"
-#include "hpcontact/fem/condensation.hpp"
 #include "hpcontact/fem/edge_load.hpp"
+#include "hpcontact/fem/elasticity.hpp"
 #include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/model/linear_solve.hpp"
 
@@ -26,99 +26,35 @@ const Body& body_named(const Discretization& d, const std::string& name, const S
   throw InputError(where.str() + ".body: no body named '" + name + "'");
 }
 
-/// The contact system over the free dofs, or, with static condensation, over the free external
-/// dofs only: contact acts on vertex and edge modes alone, so the internal modes of the linear
-/// elastic elements can be eliminated once, before Newton, and recovered after it.
+/// The contact system over the unknowns of the elastic operator: with static condensation only
+/// the free external dofs, since contact acts on vertex and edge modes alone and the internal
+/// modes of the linear elastic elements can be eliminated once, before Newton.
 class ContactSystem final : public solve::NonlinearSystem {
 public:
   ContactSystem(const Discretization& d, const std::vector<ContactPair>& pairs, bool condense)
-      : d_(d), pairs_(pairs), n_(condense ? d.n_free_external : d.n_free), load_(d.load) {
-    std::vector<Eigen::Triplet<double>> t;
-    for (const Body& body : d.bodies)
-      for (int q = 0; q < body.mesh.n_quads(); ++q) {
-        const Eigen::MatrixXd Ke = element_stiffness(body, q);
-        const int nl = static_cast<int>(Ke.rows());
-        if (!condense) {
-          for (int a = 0; a < nl; ++a)
-            for (int b = 0; b < nl; ++b)
-              t.emplace_back(body.global_dof(q, a), body.global_dof(q, b), Ke(a, b));
-          continue;
-        }
-        Eigen::VectorXd fe(nl);
-        for (int a = 0; a < nl; ++a) fe(a) = d.load(body.global_dof(q, a));
-        const auto& es = body.dofs.element(q);
-        auto ce = fem::condense(Ke, fe, es.n_modes(), es.n_internal);
-        const int ne = static_cast<int>(ce.external.size());
-        for (int a = 0; a < ne; ++a) {
-          const int ga = body.global_dof(q, ce.external[a]);
-          load_(ga) += ce.f(a) - fe(ce.external[a]);
-          for (int b = 0; b < ne; ++b)
-            t.emplace_back(ga, body.global_dof(q, ce.external[b]), ce.K(a, b));
-        }
-        condensed_.push_back({&body, q, std::move(ce)});
-      }
-    K_.resize(d.n_dofs, d.n_dofs);
-    K_.setFromTriplets(t.begin(), t.end());
-    std::vector<Eigen::Triplet<double>> tf;
-    for (int k = 0; k < K_.outerSize(); ++k)
-      for (solve::SparseMatrix::InnerIterator it(K_, k); it; ++it) {
-        const int i = unknown(it.row()), j = unknown(it.col());
-        if (i >= 0 && j >= 0) tf.emplace_back(i, j, it.value());
-      }
-    K_ff_.resize(n_, n_);
-    K_ff_.setFromTriplets(tf.begin(), tf.end());
-  }
-
-  /// Index of a dof among the unknowns, or -1 (prescribed, or internal when condensed).
-  int unknown(int dof) const {
-    const int f = d_.free_index[dof];
-    return f >= 0 && f < n_ ? f : -1;
-  }
-
-  /// The internal modes recovered from the external ones (no-op without condensation).
-  void recover_internal(Eigen::VectorXd& u) const {
-    for (const auto& c : condensed_) {
-      const auto& ce = c.element;
-      Eigen::VectorXd ue(ce.external.size());
-      for (size_t a = 0; a < ce.external.size(); ++a)
-        ue(a) = u(c.body->global_dof(c.q, ce.external[a]));
-      if (ce.internal.empty()) continue;
-      const Eigen::VectorXd ui = lambda_ * ce.Kii_inv_fi - ce.Kii_inv_Kie * ue;
-      for (size_t a = 0; a < ce.internal.size(); ++a)
-        u(c.body->global_dof(c.q, ce.internal[a])) = ui(a);
-    }
-  }
+      : d_(d), pairs_(pairs), op_(assemble_elastic(d, condense)), K_uu_(op_.unknown_block(d)) {}
 
   void set_load_factor(double lambda) { lambda_ = lambda; }
-  double load_factor() const { return lambda_; }
-  int size() const override { return n_; }
+  int size() const override { return op_.n_unknowns; }
 
-  /// All dofs from the unknowns (internal modes zero when condensed; see recover_internal).
-  Eigen::VectorXd full(const Eigen::VectorXd& x) const {
-    Eigen::VectorXd u = lambda_ * d_.prescribed;
-    for (int i = 0; i < d_.n_dofs; ++i) {
-      if (d_.free_index[i] < 0) continue;
-      const int k = unknown(i);
-      u(i) = k >= 0 ? x(k) : 0.0;
-    }
+  /// All dofs from the unknowns (condensed internal modes zero; see solution()).
+  Eigen::VectorXd full(const Eigen::VectorXd& x) const { return op_.expand(d_, x, lambda_); }
+  /// All dofs, the condensed internal modes recovered.
+  Eigen::VectorXd solution(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd u = full(x);
+    op_.recover_internal(d_, u, lambda_);
     return u;
-  }
-
-  Eigen::VectorXd restrict(const Eigen::VectorXd& v) const {
-    Eigen::VectorXd r(n_);
-    for (int i = 0; i < d_.n_dofs; ++i)
-      if (const int k = unknown(i); k >= 0) r(k) = v(i);
-    return r;
   }
 
   /// Scale of the residual: the norm of the forces the current load produces.
   double force_scale() const {
-    return restrict(K_ * (lambda_ * d_.prescribed)).norm() + lambda_ * restrict(load_).norm();
+    return op_.restrict(d_, op_.K * (lambda_ * d_.prescribed)).norm() +
+           lambda_ * op_.restrict(d_, op_.load).norm();
   }
 
   void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve::SparseMatrix* K) override {
     const Eigen::VectorXd u = full(x);
-    Eigen::VectorXd R = K_ * u - lambda_ * load_;
+    Eigen::VectorXd R = op_.K * u - lambda_ * op_.load;
     std::vector<Eigen::Triplet<double>> t;
     for (const auto& pair : pairs_) {
       const Body& body = d_.bodies[pair.body];
@@ -129,31 +65,24 @@ public:
                                body.dof_offset, nullptr);
       R.segment(body.dof_offset, n) -= fc;
     }
-    r = restrict(R);
+    r = op_.restrict(d_, R);
     if (!K) return;
     std::vector<Eigen::Triplet<double>> tf;
     tf.reserve(t.size());
     for (const auto& e : t) {
-      const int i = unknown(e.row()), j = unknown(e.col());
+      const int i = op_.unknown(d_, e.row()), j = op_.unknown(d_, e.col());
       if (i >= 0 && j >= 0) tf.emplace_back(i, j, e.value());
     }
-    solve::SparseMatrix Kc(n_, n_);
+    solve::SparseMatrix Kc(size(), size());
     Kc.setFromTriplets(tf.begin(), tf.end());
-    *K = K_ff_ + Kc;
+    *K = K_uu_ + Kc;
   }
 
 private:
-  struct Condensed {
-    const Body* body;
-    int q;
-    fem::CondensedElement element;
-  };
   const Discretization& d_;
   const std::vector<ContactPair>& pairs_;
-  int n_;                 ///< number of unknowns
-  Eigen::VectorXd load_;  ///< external load, condensed when condensing
-  solve::SparseMatrix K_, K_ff_;
-  std::vector<Condensed> condensed_;
+  ElasticOperator op_;
+  solve::SparseMatrix K_uu_;  ///< the elastic tangent on the unknowns, constant
   double lambda_ = 1.0;
 };
 
@@ -199,32 +128,34 @@ Vec2 pegasus(const Body& body, const ContactPair& pair, int q, int le, double a,
 /// -n·σ·n at local edge parameter t of element q.
 double stress_pressure(const Body& body, int q, int le, double t, const Vec2& n,
                        const Eigen::VectorXd& u) {
-  const auto& es = body.dofs.element(q);
   const auto r = fem::edge_reference_point(le, t);
-  const auto pv = fem::point_values(es, body.maps[q], r[0], r[1]);
-  Eigen::Vector3d eps = Eigen::Vector3d::Zero();
-  for (int a = 0; a < es.n_modes(); ++a) {
-    const int dof = body.dof_offset + 2 * es.modes[a];
-    eps += Eigen::Vector3d(u(dof) * pv.dN_dx(a), u(dof + 1) * pv.dN_dy(a),
-                           u(dof) * pv.dN_dy(a) + u(dof + 1) * pv.dN_dx(a));
-  }
-  const Eigen::Vector3d sig = body.material.D() * eps;
+  const auto pv = fem::point_values(body.dofs.element(q), body.maps[q], r[0], r[1]);
+  const Eigen::Vector3d sig = body.material.D() * fem::strain(pv, body.element_coefficients(q, u));
   return -(n.x() * n.x() * sig(0) + n.y() * n.y() * sig(1) + 2 * n.x() * n.y() * sig(2));
+}
+
+/// ∫ traction ds of a pair at the state u, and the states of its points.
+Vec2 contact_resultant(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u,
+                       std::vector<contact::PointState>& states) {
+  const Body& body = d.bodies[pair.body];
+  const int n = body.dofs.n_dofs();
+  Eigen::VectorXd fc = Eigen::VectorXd::Zero(n);
+  contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty,
+                           u.segment(body.dof_offset, n), fc, nullptr, 0, &states);
+  Vec2 r = Vec2::Zero();
+  for (size_t i = 0; i < pair.points.size(); ++i) r += pair.points[i].weight * states[i].traction;
+  return r;
 }
 
 ContactResult contact_result(const Discretization& d, const ContactPair& pair,
                              const Eigen::VectorXd& u) {
   const Body& body = d.bodies[pair.body];
-  const int n = body.dofs.n_dofs();
-  Eigen::VectorXd fc = Eigen::VectorXd::Zero(n);
   ContactResult res;
-  contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty,
-                           u.segment(body.dof_offset, n), fc, nullptr, 0, &res.states);
+  res.resultant = contact_resultant(d, pair, u, res.states);
   for (const auto& cp : pair.points)
     res.stress_pressure.push_back(stress_pressure(body, cp.element, cp.local_edge, cp.t, cp.normal, u));
   for (size_t i = 0; i < pair.points.size(); ++i) {
     const auto& s = res.states[i];
-    res.resultant += pair.points[i].weight * s.traction;
     res.p_max = std::max(res.p_max, s.pressure);
     res.max_penetration = std::max(res.max_penetration, -s.gap);
     if (i + 1 < pair.points.size()) {
@@ -241,40 +172,55 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
 
 }  // namespace
 
-std::optional<BoundaryPressure> pressure_along(const Discretization& d, const ContactPair& pair,
-                                               const Eigen::VectorXd& u, double s) {
-  const Body& body = d.bodies[pair.body];
-  for (int e : pair.edges) {
-    const auto& edge = body.mesh.edge(e);
-    const int q = edge.quads[0], le = edge.local_edge[0];
-    auto coord = [&](double t) {
-      Vec2 x;
-      gap_at(body, pair, q, le, t, u, &x);
-      return (x - pair.reference_point).dot(pair.tangent) - s;
-    };
-    const int n = 32;
-    for (int i = 0; i < n; ++i) {
-      double a = -1 + 2.0 * i / n, b = -1 + 2.0 * (i + 1) / n, fa = coord(a), fb = coord(b);
-      const double tol = 1e-12 * (1 + std::abs(s));  // s on a node: round-off must not hide it
+BoundaryPressureProbe::BoundaryPressureProbe(const Discretization& d, const ContactPair& pair,
+                                             const Eigen::VectorXd& u)
+    : d_(d), pair_(pair), u_(u), coord_(pair.edges.size()) {
+  for (size_t k = 0; k < pair.edges.size(); ++k)
+    for (int i = 0; i <= kSamples; ++i)
+      coord_[k][i] = coordinate(static_cast<int>(k), -1 + 2.0 * i / kSamples);
+}
+
+double BoundaryPressureProbe::coordinate(int k, double t) const {
+  const Body& body = d_.bodies[pair_.body];
+  const auto& edge = body.mesh.edge(pair_.edges[k]);
+  Vec2 x;
+  gap_at(body, pair_, edge.quads[0], edge.local_edge[0], t, u_, &x);
+  return (x - pair_.reference_point).dot(pair_.tangent);
+}
+
+std::optional<BoundaryPressure> BoundaryPressureProbe::operator()(double s) const {
+  const Body& body = d_.bodies[pair_.body];
+  const double tol = 1e-12 * (1 + std::abs(s));  // s on a node: round-off must not hide it
+  for (size_t k = 0; k < coord_.size(); ++k) {
+    for (int i = 0; i < kSamples; ++i) {
+      double fa = coord_[k][i] - s, fb = coord_[k][i + 1] - s;
       if (std::abs(fa) <= tol) fa = 0;
       if (std::abs(fb) <= tol) fb = 0;
       if (fa * fb > 0) continue;
-      for (int it = 0; it < 60 && b - a > 1e-15; ++it) {
-        const double m = 0.5 * (a + b), fm = coord(m);
-        if (fa * fm <= 0) {
-          b = m;
+      // Illinois (regula falsi with halving of the retained end): the coordinate is smooth.
+      double a = -1 + 2.0 * i / kSamples, b = -1 + 2.0 * (i + 1) / kSamples, t = a;
+      if (fb == 0) t = b;
+      for (int it = 0; it < 100 && fa != 0 && fb != 0; ++it) {
+        t = b - fb * (b - a) / (fb - fa);
+        const double ft = coordinate(static_cast<int>(k), t) - s;
+        if (std::abs(ft) <= tol || std::abs(b - a) < 1e-15) break;
+        if (ft * fb < 0) {
+          a = b;
+          fa = fb;
         } else {
-          a = m;
-          fa = fm;
+          fa *= 0.5;
         }
+        b = t;
+        fb = ft;
       }
-      const double t = 0.5 * (a + b);
+      const auto& edge = body.mesh.edge(pair_.edges[k]);
+      const int q = edge.quads[0], le = edge.local_edge[0];
       Vec2 normal;
       fem::edge_geometry(body.maps[q], le, t, &normal, nullptr);
       BoundaryPressure bp;
-      const double g = gap_at(body, pair, q, le, t, u, &bp.x);
-      bp.penalty = g < 0 ? -pair.penalty * g : 0.0;
-      bp.from_stress = stress_pressure(body, q, le, t, normal, u);
+      const double g = gap_at(body, pair_, q, le, t, u_, &bp.x);
+      bp.penalty = g < 0 ? -pair_.penalty * g : 0.0;
+      bp.from_stress = stress_pressure(body, q, le, t, normal, u_);
       return bp;
     }
   }
@@ -319,7 +265,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   const SolverSpec& ss = spec.solver;
   HPC_REQUIRE(ss.tangent == "analytic", InputError, ss.where.str(), "tangent: '", ss.tangent,
               "' is not available yet (use analytic)");
-  const auto pairs = make_contact_pairs(spec, d);
+  auto pairs = make_contact_pairs(spec, d);
   ContactSystem system(d, pairs, spec.discretization.condense);
   solve::NewtonOptions no;
   no.max_iterations = ss.max_iterations;
@@ -378,8 +324,9 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     const auto& tr = *ss.target_resultant;
     HPC_REQUIRE(!pairs.empty(), InputError, ss.where.str(),
                 "target_resultant: needs a contact pair to measure the resultant");
+    std::vector<contact::PointState> states;
     auto measured = [&]() {
-      return std::abs(contact_result(d, pairs.front(), system.full(x)).resultant(tr.component));
+      return std::abs(contact_resultant(d, pairs.front(), system.full(x), states)(tr.component));
     };
     double l0 = lambda, f0 = measured() - tr.value;
     HPC_REQUIRE(f0 + tr.value > 0, InputError, ss.where.str(),
@@ -405,11 +352,11 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       }
     }
   }
-  sol.u = system.full(x);
-  system.recover_internal(sol.u);
+  sol.u = system.solution(x);
   sol.load_factor = lambda;
   sol.converged = true;
   for (const auto& pair : pairs) sol.contact.push_back(contact_result(d, pair, sol.u));
+  sol.pairs = std::move(pairs);
   return sol;
 }
 

@@ -1,6 +1,7 @@
 // The contact problem: linear elastic bodies, penalty contact, load steps, Newton, force control.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -48,7 +49,8 @@ struct NonlinearSolution {
   std::string message;  ///< why it stopped, when not converged
   int newton_iterations = 0, load_steps = 0;
   double load_factor = 1;  ///< factor on the prescribed displacements and loads
-  std::vector<ContactResult> contact;
+  std::vector<ContactPair> pairs;     ///< the contact pairs solved, for post-processing
+  std::vector<ContactResult> contact;  ///< per pair
 };
 
 /// Pressures at one point of a contact boundary.
@@ -58,10 +60,23 @@ struct BoundaryPressure {
   double penalty = 0;      ///< eps_N <-g_N>
 };
 
-/// Pressures at the boundary point of a pair whose deformed coordinate along the obstacle
-/// tangent, (x - reference point)·tangent, equals s; nullopt if none of its edges reaches s.
-std::optional<BoundaryPressure> pressure_along(const Discretization& d, const ContactPair& pair,
-                                               const Eigen::VectorXd& u, double s);
+/// Pressures along the deformed contact boundary of a pair, located by the coordinate
+/// s = (x - reference point)·tangent along the obstacle. The boundary is sampled once when
+/// constructed; each query then refines one bracket.
+class BoundaryPressureProbe {
+public:
+  BoundaryPressureProbe(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u);
+  /// Pressures at the boundary point with coordinate s; nullopt if no contact edge reaches s.
+  std::optional<BoundaryPressure> operator()(double s) const;
+
+private:
+  static constexpr int kSamples = 32;  ///< sub-intervals per edge
+  const Discretization& d_;
+  const ContactPair& pair_;
+  const Eigen::VectorXd& u_;
+  std::vector<std::array<double, kSamples + 1>> coord_;  ///< per edge, at t = -1 + 2i/kSamples
+  double coordinate(int edge_index, double t) const;
+};
 
 using ProgressFn = std::function<void(const std::string&)>;
 

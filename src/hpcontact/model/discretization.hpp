@@ -33,6 +33,13 @@ struct Body {
     const int n = es.n_modes();
     return dof_offset + 2 * es.modes[local % n] + local / n;
   }
+
+  /// Local coefficients of element q (component-blocked) from the global dof vector u.
+  Eigen::VectorXd element_coefficients(int q, const Eigen::VectorXd& u) const {
+    Eigen::VectorXd ue(2 * dofs.element(q).n_modes());
+    for (int a = 0; a < ue.size(); ++a) ue(a) = u(global_dof(q, a));
+    return ue;
+  }
 };
 
 /// The whole discrete problem. Free dofs are numbered external modes first (all bodies), then

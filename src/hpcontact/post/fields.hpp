@@ -20,9 +20,6 @@ struct PointResult {
   double principal_2 = 0;    ///< smaller in-plane principal stress
 };
 
-/// Local coefficients of element q (component-blocked) from the global dof vector u.
-Eigen::VectorXd element_coefficients(const model::Body& body, int q, const Eigen::VectorXd& u);
-
 /// Fields at reference point (xi, eta) of element q of a body.
 PointResult evaluate(const model::Body& body, int q, double xi, double eta, const Eigen::VectorXd& u);
 

@@ -1,6 +1,7 @@
 // Property tests of the Lamé thick-cylinder solution: kinematics, constitutive law, equilibrium,
 // boundary tractions, plane strain and plane stress.
 #include "hpcontact/analytic/lame.hpp"
+#include "hpcontact/basis/quadrature.hpp"
 
 #include <gtest/gtest.h>
 
@@ -168,27 +169,12 @@ TEST(Lame, PlaneStressVariant) {
 // The strain energy shall equal ½ ∫ sigma : eps dA over the sector of opening angle alpha
 // (the density depends on r only; 40-point Gauss in r), to 1e-12 relative.
 TEST(Lame, StrainEnergyIsTheIntegralOfTheEnergyDensity) {
-  // 40-point Gauss–Legendre by Newton on L_40. r·density = c1 r + c2 / r³ is analytic inside the
+  // 40-point Gauss–Legendre (basis module). r·density = c1 r + c2 / r³ is analytic inside the
   // Bernstein ellipse through r = 0, so the rule converges like rho^-80 (< 1e-20 here).
-  const int n = 40;
-  std::vector<double> xg(n), wg(n);
-  for (int i = 0; i < n; ++i) {
-    double z = std::cos(pi * (i + 0.75) / (n + 0.5)), dp = 1;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1, p1 = z;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (z * p1 - p0) / (z * z - 1);
-      const double dz = p1 / dp;
-      z -= dz;
-      if (std::abs(dz) < 1e-16) break;
-    }
-    xg[i] = z;
-    wg[i] = 2 / ((1 - z * z) * dp * dp);
-  }
+  const auto& rule = hpcontact::basis::gauss_legendre(40);
+  const int n = rule.size();
+  const auto& xg = rule.points;
+  const auto& wg = rule.weights;
   for (const Lame& L : cylinders()) {
     const double a = L.inner_radius, b = L.outer_radius, alpha = 0.7;
     double U = 0;
