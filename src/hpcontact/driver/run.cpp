@@ -117,6 +117,8 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     cj["half_width"] = c.half_width;
     cj["gamma_star"] = nlohmann::json::array();
     for (const auto& g : c.gamma_star) cj["gamma_star"].push_back({g.x(), g.y()});
+    cj["gamma_star_deformed"] = nlohmann::json::array();
+    for (const auto& g : c.gamma_star_deformed) cj["gamma_star_deformed"].push_back({g.x(), g.y()});
     cj["p_max"] = c.p_max;
     cj["resultant"] = {c.resultant.x(), c.resultant.y()};
     cj["max_penetration"] = c.max_penetration;

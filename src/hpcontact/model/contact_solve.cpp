@@ -86,15 +86,18 @@ private:
   double lambda_ = 1.0;
 };
 
-/// Gap of the deformed boundary at local edge parameter t of element q.
+/// Gap of the deformed boundary at local edge parameter t of element q; the deformed point in
+/// x_out, the undeformed one in X_out.
 double gap_at(const Body& body, const ContactPair& pair, int q, int le, double t,
-              const Eigen::VectorXd& u, Vec2* x_out) {
+              const Eigen::VectorXd& u, Vec2* x_out, Vec2* X_out = nullptr) {
   const auto& es = body.dofs.element(q);
   const int n = es.n_modes();
   Eigen::VectorXd N(n);
   const auto r = fem::edge_reference_point(le, t);
   es.evaluate(r[0], r[1], N.data(), nullptr, nullptr);
-  Vec2 x = fem::edge_geometry(body.maps[q], le, t, nullptr, nullptr);
+  const Vec2 X = fem::edge_geometry(body.maps[q], le, t, nullptr, nullptr);
+  if (X_out) *X_out = X;
+  Vec2 x = X;
   for (int a = 0; a < n; ++a) {
     const int dof = body.dof_offset + 2 * es.modes[a];
     x += N(a) * Vec2(u(dof), u(dof + 1));
@@ -103,14 +106,15 @@ double gap_at(const Body& body, const ContactPair& pair, int q, int le, double t
   return pair.obstacle->gap(x, nullptr, nullptr);
 }
 
-/// Root of the gap between parameters a and b of one edge by the Pegasus method (seed §4.7).
-Vec2 pegasus(const Body& body, const ContactPair& pair, int q, int le, double a, double b,
-             const Eigen::VectorXd& u) {
-  Vec2 x;
-  double fa = gap_at(body, pair, q, le, a, u, &x), fb = gap_at(body, pair, q, le, b, u, &x);
+/// Root of the gap between parameters a and b of one edge by the Pegasus method (seed §4.7):
+/// the boundary point where the contact zone ends, undeformed (X) and deformed (x).
+std::pair<Vec2, Vec2> pegasus(const Body& body, const ContactPair& pair, int q, int le, double a,
+                              double b, const Eigen::VectorXd& u) {
+  Vec2 x, X;
+  double fa = gap_at(body, pair, q, le, a, u, &x, &X), fb = gap_at(body, pair, q, le, b, u, &x, &X);
   for (int it = 0; it < 100 && std::abs(b - a) > 1e-15; ++it) {
     const double c = b - fb * (b - a) / (fb - fa);
-    const double fc = gap_at(body, pair, q, le, c, u, &x);
+    const double fc = gap_at(body, pair, q, le, c, u, &x, &X);
     if (fc == 0) break;
     if (fc * fb < 0) {
       a = b;
@@ -122,7 +126,7 @@ Vec2 pegasus(const Body& body, const ContactPair& pair, int q, int le, double a,
     fb = fc;
     if (std::abs(fc) < 1e-14 * (1 + x.norm())) break;
   }
-  return x;
+  return {X, x};
 }
 
 /// -n·σ·n at local edge parameter t of element q.
@@ -161,8 +165,11 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
     if (i + 1 < pair.points.size()) {
       const auto &p0 = pair.points[i], &p1 = pair.points[i + 1];
       const bool same_edge = p0.element == p1.element && p0.local_edge == p1.local_edge;
-      if (same_edge && (s.gap < 0) != (res.states[i + 1].gap < 0))
-        res.gamma_star.push_back(pegasus(body, pair, p0.element, p0.local_edge, p0.t, p1.t, u));
+      if (same_edge && (s.gap < 0) != (res.states[i + 1].gap < 0)) {
+        const auto [X, x] = pegasus(body, pair, p0.element, p0.local_edge, p0.t, p1.t, u);
+        res.gamma_star.push_back(X);
+        res.gamma_star_deformed.push_back(x);
+      }
     }
   }
   for (const Vec2& g : res.gamma_star)
@@ -183,9 +190,8 @@ BoundaryPressureProbe::BoundaryPressureProbe(const Discretization& d, const Cont
 double BoundaryPressureProbe::coordinate(int k, double t) const {
   const Body& body = d_.bodies[pair_.body];
   const auto& edge = body.mesh.edge(pair_.edges[k]);
-  Vec2 x;
-  gap_at(body, pair_, edge.quads[0], edge.local_edge[0], t, u_, &x);
-  return (x - pair_.reference_point).dot(pair_.tangent);
+  const Vec2 X = fem::edge_geometry(body.maps[edge.quads[0]], edge.local_edge[0], t, nullptr, nullptr);
+  return (X - pair_.reference_point).dot(pair_.tangent);
 }
 
 std::optional<BoundaryPressure> BoundaryPressureProbe::operator()(double s) const {
@@ -218,7 +224,7 @@ std::optional<BoundaryPressure> BoundaryPressureProbe::operator()(double s) cons
       Vec2 normal;
       fem::edge_geometry(body.maps[q], le, t, &normal, nullptr);
       BoundaryPressure bp;
-      const double g = gap_at(body, pair_, q, le, t, u_, &bp.x);
+      const double g = gap_at(body, pair_, q, le, t, u_, &bp.x, &bp.X);
       bp.penalty = g < 0 ? -pair_.penalty * g : 0.0;
       bp.from_stress = stress_pressure(body, q, le, t, normal, u_);
       return bp;

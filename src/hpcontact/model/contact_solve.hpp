@@ -39,8 +39,11 @@ struct ContactResult {
   std::vector<double> stress_pressure;
   Vec2 resultant = Vec2::Zero();            ///< ∫ traction ds on the body
   double p_max = 0, max_penetration = 0;
-  std::vector<Vec2> gamma_star;  ///< ends of the contact zone (Pegasus on the gap, seed §4.7)
-  double half_width = 0;         ///< largest |(Γ* - reference point)·tangent|
+  /// Ends of the contact zone (Pegasus on the gap, seed §4.7) on the undeformed boundary: the
+  /// points a node is moved to (rp) and where the closed forms of the linear theory put them.
+  std::vector<Vec2> gamma_star;
+  std::vector<Vec2> gamma_star_deformed;  ///< the same points after deformation
+  double half_width = 0;  ///< largest |(Γ* - reference point)·tangent|, Γ* undeformed
 };
 
 struct NonlinearSolution {
@@ -55,13 +58,15 @@ struct NonlinearSolution {
 
 /// Pressures at one point of a contact boundary.
 struct BoundaryPressure {
+  Vec2 X;                  ///< undeformed position
   Vec2 x;                  ///< deformed position
   double from_stress = 0;  ///< -n·σ·n, n the undeformed outward normal
   double penalty = 0;      ///< eps_N <-g_N>
 };
 
-/// Pressures along the deformed contact boundary of a pair, located by the coordinate
-/// s = (x - reference point)·tangent along the obstacle. The boundary is sampled once when
+/// Pressures along the contact boundary of a pair, located by the coordinate
+/// s = (X - reference point)·tangent of the undeformed point X along the obstacle (the linear
+/// theory's coordinate: Hertz and Shtayerman place the pressure on the undeformed surface). The boundary is sampled once when
 /// constructed; each query then refines one bracket.
 class BoundaryPressureProbe {
 public:
