@@ -142,7 +142,10 @@ def test_hertz_run_writes_contact_curve(hpcontact, root, tmp_path):
     assert abs(s["contact"]["hertz_half_width"] - 1.96524) < 1e-5
     curve = (tmp_path / "pressure.csv").read_text().splitlines()
     assert curve[0] == "x,pressure_from_stress,pressure_penalty,hertz,shtayerman"
-    assert len(curve) == 1002
+    # 1001 uniform samples, plus each end of the contact zone (the kink a reference must keep)
+    ends = [g for g in s["contact"]["gamma_star"] if 0 < g[0] < 1.5 * 1.96524]
+    assert len(curve) == 1002 + len(ends)
+    assert all(f"{g[0]:.12g}" in "\n".join(curve) for g in ends)
 
 
 def test_newton_failure_is_reported_not_summarised(hpcontact, root, tmp_path):

@@ -76,7 +76,8 @@ ReferenceCurve read_reference(const std::string& path, const std::string& where)
 
 nlohmann::json compare_pressure(const model::ProblemSpec& spec, const model::PressureCompareSpec& cmp,
                                 const model::Discretization& d, const model::ContactPair& pair,
-                                const Eigen::VectorXd& u, const std::string& csv_path) {
+                                const Eigen::VectorXd& u, const std::vector<double>& zone_ends,
+                                const std::string& csv_path) {
   const auto& mat = d.bodies[pair.body].material;
   const double E = mat.youngs_modulus, nu = mat.poisson_ratio;
   HPC_REQUIRE(mat.plane == material::Plane::strain, InputError, cmp.where.str(),
@@ -118,8 +119,12 @@ nlohmann::json compare_pressure(const model::ProblemSpec& spec, const model::Pre
     std::ostringstream csv;
     csv.precision(12);
     csv << "x,pressure_from_stress,pressure_penalty,hertz,shtayerman\n";
-    for (int i = 0; i <= 1000; ++i) {
-      const double x = 1.5 * b * i / 1000;
+    std::vector<double> xs;
+    for (int i = 0; i <= 1000; ++i) xs.push_back(1.5 * b * i / 1000);
+    for (double z : zone_ends)
+      if (z > 0 && z < 1.5 * b) xs.push_back(z);
+    std::sort(xs.begin(), xs.end());
+    for (const double x : xs) {
       const auto bp = probe(x);
       csv << x << ',' << (bp ? bp->from_stress : 0.0) << ',' << (bp ? bp->penalty : 0.0) << ','
           << hertz.pressure(x) << ',' << shtayerman.pressure(x) << '\n';

@@ -162,13 +162,26 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
     const auto& s = res.states[i];
     res.p_max = std::max(res.p_max, s.pressure);
     res.max_penetration = std::max(res.max_penetration, -s.gap);
-    if (i + 1 < pair.points.size()) {
+    if (i + 1 < pair.points.size() && (s.gap < 0) != (res.states[i + 1].gap < 0)) {
       const auto &p0 = pair.points[i], &p1 = pair.points[i + 1];
       const bool same_edge = p0.element == p1.element && p0.local_edge == p1.local_edge;
-      if (same_edge && (s.gap < 0) != (res.states[i + 1].gap < 0)) {
-        const auto [X, x] = pegasus(body, pair, p0.element, p0.local_edge, p0.t, p1.t, u);
-        res.gamma_star.push_back(X);
-        res.gamma_star_deformed.push_back(x);
+      std::optional<std::pair<Vec2, Vec2>> end;
+      if (same_edge) {
+        end = pegasus(body, pair, p0.element, p0.local_edge, p0.t, p1.t, u);
+      } else {
+        // The zone ends between two edges: on the side whose end gap changes sign (a node
+        // placed on Γ*, as rp does, gives a root at the edge end itself).
+        for (const auto* cp : {&p0, &p1}) {
+          const bool open = (cp == &p0 ? s.gap : res.states[i + 1].gap) >= 0;
+          const double te = cp->t >= 0 ? 1.0 : -1.0;  // the end at the shared node
+          Vec2 x;
+          if (!end && (gap_at(body, pair, cp->element, cp->local_edge, te, u, &x) >= 0) != open)
+            end = pegasus(body, pair, cp->element, cp->local_edge, cp->t, te, u);
+        }
+      }
+      if (end) {
+        res.gamma_star.push_back(end->first);
+        res.gamma_star_deformed.push_back(end->second);
       }
     }
   }
