@@ -6,7 +6,7 @@ namespace hpcontact::contact {
 void penalty_contact(const std::vector<ContactPoint>& points, const Obstacle& obstacle,
                      double eps_n, const Eigen::VectorXd& u, Eigen::VectorXd& force,
                      std::vector<Eigen::Triplet<double>>* tangent, int offset,
-                     std::vector<PointState>* states) {
+                     std::vector<PointState>* states, const std::vector<PointState>* frozen) {
   if (states) states->assign(points.size(), PointState{});
   for (size_t i = 0; i < points.size(); ++i) {
     const ContactPoint& cp = points[i];
@@ -15,11 +15,20 @@ void penalty_contact(const std::vector<ContactPoint>& points, const Obstacle& ob
     for (int k = 0; k < m; ++k) ux += cp.N(k) * Vec2(u(2 * cp.modes[k]), u(2 * cp.modes[k] + 1));
     const Vec2 x = cp.X + ux;
     Vec2 n;
-    Mat2 dn;
-    const double g = obstacle.gap(x, &n, tangent ? &dn : nullptr);
+    Mat2 dn = Mat2::Zero();
+    double g;
+    if (frozen) {
+      const PointState& s0 = (*frozen)[i];
+      n = s0.normal;
+      g = s0.gap + n.dot(x - s0.x);
+    } else {
+      g = obstacle.gap(x, &n, tangent ? &dn : nullptr);
+    }
     const double pen = g < 0 ? -g : 0.0;
-    if (states) (*states)[i] = PointState{x, g, eps_n * pen, eps_n * pen * n};
-    if (pen == 0.0) continue;
+    if (states) (*states)[i] = PointState{x, g, eps_n * pen, eps_n * pen * n, n};
+    // g = 0 counts as active: the force is zero there but the tangent takes the side of
+    // contact, so a body that touches its support without load (a zero initial gap) is held.
+    if (g > 0) continue;
     const Vec2 f = cp.weight * eps_n * pen * n;
     for (int k = 0; k < m; ++k) {
       force(2 * cp.modes[k]) += cp.N(k) * f.x();

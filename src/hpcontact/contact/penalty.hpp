@@ -17,6 +17,7 @@ struct PointState {
   double gap = 0;         ///< signed normal gap g_N (negative: penetration)
   double pressure = 0;    ///< penalty pressure p_N = eps_N <-g_N> (>= 0, compressive)
   Vec2 traction;          ///< traction on the body, p_N n_obstacle
+  Vec2 normal;            ///< the obstacle's outward normal at the closest point
 };
 
 /// Penalty contribution of all points against an obstacle.
@@ -28,9 +29,14 @@ struct PointState {
 ///   K_c = eps_N ∫ N^T (n n^T + g dn/dx) N ds.
 /// `u` holds the body's dofs (dof = 2·mode + component); `force` receives f_c at the same
 /// indices; `tangent` (may be null) receives triplets of K_c, offset by `offset` in both indices.
+///
+/// With `frozen` (the states of an undisturbed evaluation), the gap is evaluated with the
+/// normal of that state, g = g_0 + n_0·(x − x_0), as the seed's finite-difference tangent
+/// requires (footnote to eq. 3.36): a disturbed point does not turn its normal.
 void penalty_contact(const std::vector<ContactPoint>& points, const Obstacle& obstacle,
                      double eps_n, const Eigen::VectorXd& u, Eigen::VectorXd& force,
                      std::vector<Eigen::Triplet<double>>* tangent, int offset,
-                     std::vector<PointState>* states);
+                     std::vector<PointState>* states,
+                     const std::vector<PointState>* frozen = nullptr);
 
 }  // namespace hpcontact::contact

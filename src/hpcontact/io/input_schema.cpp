@@ -151,10 +151,13 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "solver", .type = T::section, .default_yaml = "{}",
        .doc = "How the equations are solved."},
       {.path = "solver.linear", .type = T::choice, .default_yaml = "cholmod",
-       .doc = "Sparse direct solver: CHOLMOD or Eigen's SimplicialLDLT.",
-       .choices = {"cholmod", "ldlt"}},
+       .doc = "Sparse direct solver: CHOLMOD, Eigen's SimplicialLDLT, or UMFPACK's LU (used "
+              "whatever is set with tangent: finite-difference, whose matrix can be indefinite).",
+       .choices = {"cholmod", "ldlt", "lu"}},
       {.path = "solver.tangent", .type = T::choice, .default_yaml = "analytic",
-       .doc = "Newton tangent: analytic, or by finite differences of the residual (seed eq. 3.36).",
+       .doc = "Newton tangent: analytic (consistent), or the seed's central finite differences of "
+              "the whole residual, column by column, normals of the undisturbed state kept (eq. "
+              "3.35-3.36; slow, for comparison).",
        .choices = {"analytic", "finite-difference"}},
       {.path = "solver.load_steps", .type = T::integer, .default_yaml = "1",
        .doc = "Number of equal load steps.", .lower = at_least(1)},

@@ -31,10 +31,17 @@ const Body& body_named(const Discretization& d, const std::string& name, const S
 /// modes of the linear elastic elements can be eliminated once, before Newton.
 class ContactSystem final : public solve::NonlinearSystem {
 public:
-  ContactSystem(const Discretization& d, const std::vector<ContactPair>& pairs, bool condense)
-      : d_(d), pairs_(pairs), op_(assemble_elastic(d, condense)), K_uu_(op_.unknown_block(d)) {}
+  ContactSystem(const Discretization& d, const std::vector<ContactPair>& pairs, bool condense,
+                bool fd_tangent = false)
+      : d_(d),
+        pairs_(pairs),
+        op_(assemble_elastic(d, condense)),
+        K_uu_(op_.unknown_block(d)),
+        fd_tangent_(fd_tangent) {}
 
   void set_load_factor(double lambda) { lambda_ = lambda; }
+  /// The unknowns' values in a vector of all dofs.
+  Eigen::VectorXd unknowns(const Eigen::VectorXd& u) const { return op_.restrict(d_, u); }
   int size() const override { return op_.n_unknowns; }
 
   /// All dofs from the unknowns (condensed internal modes zero; see solution()).
@@ -53,19 +60,14 @@ public:
   }
 
   void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve::SparseMatrix* K) override {
-    const Eigen::VectorXd u = full(x);
-    Eigen::VectorXd R = op_.K * u - lambda_ * op_.load;
-    std::vector<Eigen::Triplet<double>> t;
-    for (const auto& pair : pairs_) {
-      const Body& body = d_.bodies[pair.body];
-      const int n = body.dofs.n_dofs();
-      Eigen::VectorXd fc = Eigen::VectorXd::Zero(n);
-      contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty,
-                               u.segment(body.dof_offset, n), fc, K ? &t : nullptr,
-                               body.dof_offset, nullptr);
-      R.segment(body.dof_offset, n) -= fc;
+    if (K && fd_tangent_) {
+      PairStates undisturbed;
+      residual(x, r, nullptr, &undisturbed, nullptr);
+      *K = finite_difference_tangent(x, undisturbed);
+      return;
     }
-    r = op_.restrict(d_, R);
+    std::vector<Eigen::Triplet<double>> t;
+    residual(x, r, K ? &t : nullptr, nullptr, nullptr);
     if (!K) return;
     std::vector<Eigen::Triplet<double>> tf;
     tf.reserve(t.size());
@@ -79,10 +81,61 @@ public:
   }
 
 private:
+  using PairStates = std::vector<std::vector<contact::PointState>>;
+
+  /// R(x) on the unknowns; the contact tangent's triplets (all dofs) into t, the points' states
+  /// into states; with `frozen`, gaps use the normals of those states (see penalty_contact).
+  void residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, std::vector<Eigen::Triplet<double>>* t,
+                PairStates* states, const PairStates* frozen) const {
+    const Eigen::VectorXd u = full(x);
+    Eigen::VectorXd R = op_.K * u - lambda_ * op_.load;
+    if (states) states->resize(pairs_.size());
+    for (size_t k = 0; k < pairs_.size(); ++k) {
+      const ContactPair& pair = pairs_[k];
+      const Body& body = d_.bodies[pair.body];
+      const int n = body.dofs.n_dofs();
+      Eigen::VectorXd fc = Eigen::VectorXd::Zero(n);
+      contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty,
+                               u.segment(body.dof_offset, n), fc, t, body.dof_offset,
+                               states ? &(*states)[k] : nullptr, frozen ? &(*frozen)[k] : nullptr);
+      R.segment(body.dof_offset, n) -= fc;
+    }
+    r = op_.restrict(d_, R);
+  }
+
+  /// The seed's tangent (eq. 3.35–3.36): column m by central differences of the whole residual
+  /// with the step h_m = ν (|x_m| + 1e-3), ν = 1e-6 (< √η; below the seed's 1e-5 because a
+  /// column straddling a contact switch is wrong and a small step makes that rare), the normals
+  /// of the undisturbed state kept.
+  solve::SparseMatrix finite_difference_tangent(const Eigen::VectorXd& x,
+                                                const PairStates& undisturbed) const {
+    std::vector<Eigen::Triplet<double>> t;
+    Eigen::VectorXd xd = x, r_plus, r_minus;
+    for (int m = 0; m < size(); ++m) {
+      const double h = 1e-6 * (std::abs(x(m)) + 1e-3);
+      xd(m) = x(m) + h / 2;
+      residual(xd, r_plus, nullptr, nullptr, &undisturbed);
+      xd(m) = x(m) - h / 2;
+      residual(xd, r_minus, nullptr, nullptr, &undisturbed);
+      xd(m) = x(m);
+      for (int i = 0; i < size(); ++i)
+        if (const double v = (r_plus(i) - r_minus(i)) / h; v != 0) t.emplace_back(i, m, v);
+    }
+    solve::SparseMatrix K(size(), size());
+    K.setFromTriplets(t.begin(), t.end());
+    // Central differences are symmetric up to round-off; the symmetric solvers read one
+    // triangle, so take the symmetric part (the seed's "symmetric equation system").
+    return solve::SparseMatrix(0.5 * (K + solve::SparseMatrix(K.transpose())));
+  }
+
+public:
+
+private:
   const Discretization& d_;
   const std::vector<ContactPair>& pairs_;
   ElasticOperator op_;
   solve::SparseMatrix K_uu_;  ///< the elastic tangent on the unknowns, constant
+  bool fd_tangent_ = false;   ///< the seed's finite-difference tangent instead of the analytic one
   double lambda_ = 1.0;
 };
 
@@ -282,14 +335,15 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
 NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d,
                                 const ProgressFn& progress) {
   const SolverSpec& ss = spec.solver;
-  HPC_REQUIRE(ss.tangent == "analytic", InputError, ss.where.str(), "tangent: '", ss.tangent,
-              "' is not available yet (use analytic)");
   auto pairs = make_contact_pairs(spec, d);
-  ContactSystem system(d, pairs, spec.discretization.condense);
+  ContactSystem system(d, pairs, spec.discretization.condense, ss.tangent == "finite-difference");
   solve::NewtonOptions no;
   no.max_iterations = ss.max_iterations;
   no.tolerance = ss.tolerance;
   no.linear_solver = solve::linear_solver_kind(ss.linear, ss.where.str() + "linear");
+  // A finite-difference column that straddles a point's contact switch is inconsistent with
+  // its neighbours: the symmetric part can be indefinite, so it is solved by LU.
+  if (ss.tangent == "finite-difference") no.linear_solver = solve::LinearSolverKind::lu;
 
   NonlinearSolution sol;
   Eigen::VectorXd x = Eigen::VectorXd::Zero(system.size());
@@ -377,6 +431,19 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   for (const auto& pair : pairs) sol.contact.push_back(contact_result(d, pair, sol.u));
   sol.pairs = std::move(pairs);
   return sol;
+}
+
+solve::SparseMatrix contact_tangent(const ProblemSpec& spec, const Discretization& d,
+                                    const NonlinearSolution& sol, bool finite_difference,
+                                    Eigen::VectorXd* residual) {
+  ContactSystem system(d, sol.pairs, spec.discretization.condense, finite_difference);
+  system.set_load_factor(sol.load_factor);
+  const Eigen::VectorXd x = system.unknowns(sol.u);
+  Eigen::VectorXd r;
+  solve::SparseMatrix K;
+  system.evaluate(x, r, &K);
+  if (residual) *residual = r;
+  return K;
 }
 
 }  // namespace hpcontact::model

@@ -90,4 +90,11 @@ using ProgressFn = std::function<void(const std::string&)>;
 NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d,
                                 const ProgressFn& progress = {});
 
+/// The Newton tangent of the contact problem at a solution, on the unknowns of its solve:
+/// analytic, or the seed's central finite differences (eq. 3.36). The residual there into
+/// `residual` if not null. For tests and benchmarks of the two tangents.
+solve::SparseMatrix contact_tangent(const ProblemSpec& spec, const Discretization& d,
+                                    const NonlinearSolution& sol, bool finite_difference,
+                                    Eigen::VectorXd* residual = nullptr);
+
 }  // namespace hpcontact::model

@@ -1,8 +1,10 @@
-// CHOLMOD supernodal Cholesky through Eigen's wrapper, with Eigen's SimplicialLDLT as alternative.
+// CHOLMOD supernodal Cholesky through Eigen's wrapper, Eigen's SimplicialLDLT as alternative, and
+// UMFPACK's LU for matrices that are not symmetric positive definite.
 #include "hpcontact/solve/linear_solver.hpp"
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
+#include <Eigen/UmfPackSupport>
 
 #include "hpcontact/core/error.hpp"
 
@@ -11,12 +13,14 @@ namespace hpcontact::solve {
 struct LinearSolver::Impl {
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholmod;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
+  Eigen::UmfPackLU<SparseMatrix> lu;
 };
 
 LinearSolverKind linear_solver_kind(const std::string& name, const std::string& where) {
   if (name == "cholmod") return LinearSolverKind::cholmod;
   if (name == "ldlt") return LinearSolverKind::ldlt;
-  throw InputError(where + ": unknown linear solver '" + name + "' (expected cholmod or ldlt)");
+  if (name == "lu") return LinearSolverKind::lu;
+  throw InputError(where + ": unknown linear solver '" + name + "' (expected cholmod, ldlt or lu)");
 }
 
 LinearSolver::LinearSolver(LinearSolverKind kind) : kind_(kind), impl_(std::make_unique<Impl>()) {
@@ -31,9 +35,12 @@ void LinearSolver::factorize(const SparseMatrix& A) {
   if (kind_ == LinearSolverKind::cholmod) {
     impl_->cholmod.compute(A);
     ok = impl_->cholmod.info() == Eigen::Success;
-  } else {
+  } else if (kind_ == LinearSolverKind::ldlt) {
     impl_->ldlt.compute(A);
     ok = impl_->ldlt.info() == Eigen::Success && (impl_->ldlt.vectorD().array() > 0).all();
+  } else {
+    impl_->lu.compute(A);
+    ok = impl_->lu.info() == Eigen::Success;
   }
   HPC_REQUIRE(ok, NumericalError,
               "the stiffness matrix is singular or not positive definite: a body is not "
@@ -41,8 +48,12 @@ void LinearSolver::factorize(const SparseMatrix& A) {
 }
 
 Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
-  return kind_ == LinearSolverKind::cholmod ? Eigen::VectorXd(impl_->cholmod.solve(b))
-                                            : Eigen::VectorXd(impl_->ldlt.solve(b));
+  switch (kind_) {
+    case LinearSolverKind::cholmod: return impl_->cholmod.solve(b);
+    case LinearSolverKind::ldlt: return impl_->ldlt.solve(b);
+    case LinearSolverKind::lu: break;
+  }
+  return impl_->lu.solve(b);
 }
 
 }  // namespace hpcontact::solve

@@ -1,4 +1,4 @@
-// Sparse direct solution of symmetric positive definite systems (CHOLMOD or Eigen's LDLT).
+// Sparse direct solvers: symmetric positive definite (CHOLMOD, Eigen's LDLT) and general (UMFPACK LU).
 #pragma once
 
 #include <memory>
@@ -10,9 +10,9 @@ namespace hpcontact::solve {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
-enum class LinearSolverKind { cholmod, ldlt };
+enum class LinearSolverKind { cholmod, ldlt, lu };
 
-/// Parses "cholmod" / "ldlt"; InputError naming `where` otherwise.
+/// Parses "cholmod" / "ldlt" / "lu"; InputError naming `where` otherwise.
 LinearSolverKind linear_solver_kind(const std::string& name, const std::string& where);
 
 /// Factorises once, solves many right-hand sides.
@@ -23,8 +23,9 @@ public:
   LinearSolver(LinearSolver&&) noexcept;
   LinearSolver& operator=(LinearSolver&&) noexcept;
 
-  /// Factorises A (symmetric; the lower triangle is used). Throws NumericalError if A is not
-  /// positive definite, which for a stiffness matrix means a rigid-body motion is unconstrained.
+  /// Factorises A: for cholmod and ldlt A is symmetric (the lower triangle is used) and must be
+  /// positive definite, for lu any nonsingular matrix. Throws NumericalError otherwise, which
+  /// for a stiffness matrix means a rigid-body motion is unconstrained.
   void factorize(const SparseMatrix& A);
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 

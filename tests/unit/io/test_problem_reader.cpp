@@ -267,8 +267,8 @@ TEST(ProblemReader, RejectsWrongType) {
               {"case.yaml:19:", "discretization.degree: must be an integer (got '4.5')"});
   input_error(square + "output: {vtu: maybe}\n",
               {"output.vtu: must be true or false (got 'maybe')"});
-  input_error(square + "solver: {linear: lu}\n",
-              {"solver.linear: must be one of cholmod, ldlt (got 'lu')"});
+  input_error(square + "solver: {linear: qr}\n",
+              {"solver.linear: must be one of cholmod, ldlt, lu (got 'qr')"});
   input_error(with(square, "2: [1, 0]", "2: [1]"),
               {"case.yaml:7:", "bodies[0].nodes.2: must be [x, y] (got [1])"});
 }
