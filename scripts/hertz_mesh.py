@@ -8,10 +8,16 @@ centre plane y = R (uniform vertical displacement, force control to F/2) and the
 x = 0 (ux = 0). Arc edges are exact circles; the h-version uses them as isoparametric nodes.
 
 Node positions along the contact arc are given by their x coordinates; presets make
-quasi-uniform meshes, meshes graded towards the contact, and meshes graded geometrically
-towards a point (the end of the contact zone Γ*).
+quasi-uniform meshes (uniform: equal arcs, equal layers), meshes refined towards the contact
+(refined: equal elements on x in [0, --zone], a fraction --fine of those along the arc, layers
+of that size down to the depth --zone, growing geometrically beyond), and meshes graded
+geometrically towards a point (graded: the end of the contact zone Γ*).
+
+The one patch has a fourth corner at C on the smooth arc: the element there has an angle of
+nearly 180° at C (far from the contact; not inverted, but the worst element of every mesh).
 
     hertz_mesh.py uniform --cells 18 18 --method h --element Q4 > mesh.yaml
+    hertz_mesh.py refined --cells 15 21 --method h --element Q9 > refined.yaml
     hertz_mesh.py graded --at 1.93 --factor 0.5 --layers 4 --degree 10 > reference.yaml
 """
 import argparse
@@ -31,11 +37,15 @@ def angle_of_x(x):
     return math.asin(x / R)
 
 
-def build(bottom_x, left_y, right_n):
+def build(bottom_x, left_y, right_n, right_t=None):
     """Nodes (dict id -> (x, y)) and quads of the Coons grid.
 
     bottom_x: x of the nodes on the contact arc from 0 to C; left_y: y of the nodes on the
-    symmetry line from 0 to R (as many as right_n + 1).
+    symmetry line from 0 to R (as many as right_n + 1); right_t: fractions in [0, 1] of the
+    arc from C to (R, R) at which its nodes lie (default: those of the symmetry line, y / R).
+    With its own right_t, node (i, j) uses the blended parameter t_j + s_i (t'_j - t_j), so the
+    grid lines run from node j of the symmetry line to node j of the right arc (discrete
+    transfinite interpolation); without, the grid is the same as before that option existed.
     """
     nx, ny = len(bottom_x) - 1, len(left_y) - 1
     assert right_n == ny
@@ -45,7 +55,9 @@ def build(bottom_x, left_y, right_n):
     s = [x / xc for x in bottom_x]                 # parameter along bottom and top
     t = [y / R for y in left_y]                     # parameter along left and right
     left = [(0.0, y) for y in left_y]
-    right = [arc_point(th_c + (math.pi / 2 - th_c) * tj) for tj in t]
+    tr = t if right_t is None else list(right_t)
+    assert len(tr) == ny + 1 and tr[0] == 0.0 and tr[-1] == 1.0
+    right = [arc_point(th_c + (math.pi / 2 - th_c) * tj) for tj in tr]
     top = [(R * si, R) for si in s]
     p00, p10, p01, p11 = bottom[0], bottom[-1], top[0], top[-1]
     nodes = {}
@@ -61,7 +73,8 @@ def build(bottom_x, left_y, right_n):
             elif i == nx:
                 p = right[j]
             else:
-                si, tj = s[i], t[j]
+                si = s[i]
+                tj = t[j] + si * (tr[j] - t[j])
                 p = tuple((1 - tj) * bottom[i][k] + tj * top[i][k] + (1 - si) * left[j][k]
                           + si * right[j][k]
                           - ((1 - si) * (1 - tj) * p00[k] + si * (1 - tj) * p10[k]
@@ -78,8 +91,8 @@ def build(bottom_x, left_y, right_n):
     return nodes, quads, bottom_edges, right_edges, left_edges, top_edges
 
 
-def yaml_text(args, bottom_x, left_y, comment):
-    nodes, quads, bottom, right, left, top = build(bottom_x, left_y, len(left_y) - 1)
+def yaml_text(args, bottom_x, left_y, comment, right_t=None):
+    nodes, quads, bottom, right, left, top = build(bottom_x, left_y, len(left_y) - 1, right_t)
     contact = [e for e, x in zip(bottom, bottom_x) if x < args.contact_extent - 1e-12]
     fmt = lambda v: repr(round(v, 15))
     out = [f"# {line}" for line in comment]
@@ -118,6 +131,53 @@ def uniform_points(a, b, n):
     return [a + (b - a) * k / n for k in range(n + 1)]
 
 
+def growing(length, n, h0):
+    """n sizes h0·q, h0·q², ..., h0·qⁿ adding up to length, q >= 1 (equal if n·h0 >= length)."""
+    if n * h0 >= length:
+        return [length / n] * n
+    lo, hi = 1.0, 2.0
+    while sum(h0 * hi ** k for k in range(1, n + 1)) < length:
+        hi *= 2
+    for _ in range(200):
+        q = 0.5 * (lo + hi)
+        lo, hi = (q, hi) if sum(h0 * q ** k for k in range(1, n + 1)) < length else (lo, q)
+    sizes = [h0 * q ** k for k in range(1, n + 1)]
+    return [h * length / sum(sizes) for h in sizes]
+
+
+def refined(nx, ny, zone, fine):
+    """Refined towards the contact zone: the arc x in [0, zone] in equal elements of size h0
+    (round(fine·nx) of the nx elements along the arc), the symmetry line in layers of h0 down
+    to the depth `zone`, both growing geometrically beyond (to C and to the centre plane). The
+    right arc C -> (R, R) is divided uniformly (graded from C if the arc's last element is
+    finer than that). Returns bottom x, left y, right fractions and the header comment."""
+    lb = R * CORNER_ANGLE                      # arc length from the bottom point to C
+    n1 = max(1, min(nx - 1, round(fine * nx)))
+    a1 = R * angle_of_x(zone)
+    h0 = a1 / n1
+    arcs = [h0 * k for k in range(n1 + 1)]
+    for h in growing(lb - a1, nx - n1, h0):
+        arcs.append(arcs[-1] + h)
+    bottom = [R * math.sin(a / R) for a in arcs[:-1]] + [R * math.sin(CORNER_ANGLE)]
+    m1 = max(1, min(ny - 1, math.ceil(zone / h0 - 1e-9)))
+    left = [h0 * k for k in range(m1 + 1)]
+    depth = left[-1]
+    for h in growing(R - depth, ny - m1, h0):
+        left.append(left[-1] + h)
+    left[-1] = R
+    lr = R * (math.pi / 2 - CORNER_ANGLE)     # arc length from C to (R, R)
+    first = arcs[-1] - arcs[-2]
+    sizes = growing(lr, ny, first) if first < lr / ny else [lr / ny] * ny
+    right_t = [0.0]
+    for h in sizes:
+        right_t.append(right_t[-1] + h / lr)
+    right_t[-1] = 1.0
+    comment = [f"{nx} x {ny} grid refined towards the contact zone: x in [0, {zone}] in {n1} "
+               f"equal elements of {h0:.3f} along the arc,",
+               f"layers of that size down to y = {depth:.3f}, growing geometrically beyond."]
+    return bottom, left, right_t, comment
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("kind", choices=["uniform", "refined", "graded"])
@@ -126,6 +186,10 @@ def main():
     ap.add_argument("--at", type=float, default=1.93, help="graded: the point graded towards (Γ*)")
     ap.add_argument("--factor", type=float, default=0.5, help="graded: size ratio per layer")
     ap.add_argument("--layers", type=int, default=4, help="graded: layers on each side of --at")
+    ap.add_argument("--zone", type=float, default=2.4,
+                    help="refined: extent in x of the finely meshed contact zone (b = 1.965)")
+    ap.add_argument("--fine", type=float, default=0.6,
+                    help="refined: fraction of the elements along the arc inside the zone")
     ap.add_argument("--method", choices=["p", "h"], default="p")
     ap.add_argument("--degree", type=int, default=8)
     ap.add_argument("--element", default="Q8")
@@ -136,17 +200,15 @@ def main():
     args = ap.parse_args()
     xc = arc_point(CORNER_ANGLE)[0]
     nx, ny = args.cells
+    right_t = None
     if args.kind == "uniform":
         bottom = [R * math.sin(CORNER_ANGLE * k / nx) for k in range(nx + 1)]
         left = uniform_points(0, R, ny)
         comment = [f"Quasi-uniform {nx} x {ny} grid."]
     elif args.kind == "refined":
-        # Half the elements of each direction in the contact region, graded smoothly outwards.
-        bottom = [3.0 * (k / (nx // 2)) for k in range(nx // 2)]
-        bottom += [R * math.sin(angle_of_x(3.0) + (CORNER_ANGLE - angle_of_x(3.0)) *
-                                ((k / (nx - nx // 2)) ** 1.5)) for k in range(nx - nx // 2 + 1)]
-        left = [R * (k / ny) ** 2 for k in range(ny + 1)]
-        comment = [f"{nx} x {ny} grid refined towards the contact zone."]
+        if not 0 < args.zone < 0.8 * xc or not 0 < args.fine < 1 or min(nx, ny) < 2:
+            ap.error(f"refined needs 0 < --zone < {0.8 * xc:.2f}, 0 < --fine < 1, cells >= 2")
+        bottom, left, right_t, comment = refined(nx, ny, args.zone, args.fine)
     else:
         a, f, L = args.at, args.factor, args.layers
         # Distances a·f^k from a on both sides: element sizes shrink by f towards a.
@@ -154,7 +216,7 @@ def main():
         bottom += uniform_points(2 * a, xc, 2)[1:]
         left = [0.0] + [a * f ** k for k in range(L, -1, -1)] + uniform_points(a, R, 3)[1:]
         comment = [f"Graded geometrically (factor {f}, {L} layers) towards x = {a} on the contact arc."]
-    sys.stdout.write(yaml_text(args, bottom, left, comment))
+    sys.stdout.write(yaml_text(args, bottom, left, comment, right_t))
 
 
 if __name__ == "__main__":
