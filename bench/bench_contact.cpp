@@ -1,0 +1,70 @@
+// The Hertz contact problem: whole solves with the analytic tangent and with the seed's
+// finite-difference tangent (eq. 3.36), and one tangent evaluation of each at the solution.
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "hpcontact/io/problem_reader.hpp"
+#include "hpcontact/model/contact_solve.hpp"
+#include "hpcontact/model/discretization.hpp"
+
+namespace {
+
+using namespace hpcontact;
+
+std::string hertz(int p) { return std::string(HPC_SOURCE_DIR) + "/examples/hertz/p" + std::to_string(p) + ".yaml"; }
+
+const char* kTangent[] = {"analytic", "finite-difference"};
+
+// range(0) = p (5 or 8, the examples), range(1) = tangent (0 analytic, 1 FD), range(2) = condense.
+// Discretisation is outside the timed region; the solve includes force control (six load
+// steps, about 45 Newton iterations) exactly as `hpcontact run` does.
+void BM_HertzSolve(benchmark::State& state) {
+  const int p = static_cast<int>(state.range(0));
+  const auto spec = io::read_problem(
+      hertz(p), {std::string("solver.tangent=") + kTangent[state.range(1)],
+                 std::string("discretization.condense=") + (state.range(2) ? "true" : "false")});
+  const auto d = model::discretize(spec);
+  int iterations = 0;
+  for (auto _ : state) {
+    const auto sol = model::solve_contact(spec, d);
+    if (!sol.converged) state.SkipWithError(sol.message.c_str());
+    iterations = sol.newton_iterations;
+  }
+  state.counters["p"] = p;
+  state.counters["dofs"] = d.n_free;
+  state.counters["newton_iterations"] = iterations;
+}
+BENCHMARK(BM_HertzSolve)
+    ->ArgNames({"p", "fd", "condense"})
+    ->Args({5, 0, 1})
+    ->Args({5, 0, 0})
+    ->Args({5, 1, 0})
+    ->Args({8, 0, 1})
+    ->Args({8, 0, 0})
+    ->Args({8, 1, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+// One Newton tangent (residual included) at the converged state, without condensation.
+void BM_HertzTangent(benchmark::State& state) {
+  const int p = static_cast<int>(state.range(0));
+  const bool fd = state.range(1) != 0;
+  const auto spec = io::read_problem(hertz(p), {"discretization.condense=false"});
+  const auto d = model::discretize(spec);
+  const auto sol = model::solve_contact(spec, d);
+  for (auto _ : state) benchmark::DoNotOptimize(model::contact_tangent(spec, d, sol, fd));
+  state.counters["p"] = p;
+  state.counters["dofs"] = d.n_free;
+}
+BENCHMARK(BM_HertzTangent)
+    ->ArgNames({"p", "fd"})
+    ->Args({5, 0})
+    ->Args({5, 1})
+    ->Args({8, 0})
+    ->Args({8, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace
