@@ -1,0 +1,64 @@
+// The deformed contact boundary of a body as the other body of a pair sees it: closest-point
+// projection onto the high-order curve, and the gap with the boundary's outward normal.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "hpcontact/contact/obstacle.hpp"
+#include "hpcontact/fem/dof_map.hpp"
+#include "hpcontact/mesh/element_map.hpp"
+#include "hpcontact/mesh/mesh.hpp"
+
+namespace hpcontact::contact {
+
+/// A point of the deformed boundary x(t) = X(t) + Σ N_k(t) u_k on one edge, with what the
+/// two-body contact terms need: dx/dt, n·d²x/dt², the modes living on the edge and N_k, dN_k/dt.
+struct BoundaryPoint {
+  int edge = -1;      ///< index into the boundary's edges
+  double t = 0;       ///< local edge parameter in [-1, 1]
+  Vec2 x, dx_dt;      ///< deformed position and (unnormalised) tangent
+  Vec2 normal;        ///< deformed outward unit normal
+  double n_d2x = 0;   ///< n · d²x/dt² (curvature term of the consistent tangent)
+  std::vector<int> modes;
+  Eigen::VectorXd N, dN;
+};
+
+/// The contact edges of a deformable body, as an obstacle for the other body's points. The
+/// displacement is a state: set_displacement() before gap() or project().
+class DeformableBoundary final : public Obstacle {
+public:
+  DeformableBoundary(const mesh::Mesh& mesh, const fem::DofMap& dofs,
+                     const std::vector<mesh::ElementMap>& maps, const std::vector<int>& edges);
+
+  /// The body's dofs (dof = 2·mode + component); kept by copy.
+  void set_displacement(const Eigen::VectorXd& u) const { u_ = u; }
+
+  /// The closest point of the deformed boundary to x (a local minimum of the distance with its
+  /// foot inside an edge, or on a node shared by two edges); false if there is none.
+  bool project(const Vec2& x, BoundaryPoint& foot) const;
+
+  /// Signed gap (x − x_m)·n_m, n_m the boundary's outward normal at the closest point x_m;
+  /// +∞ when x has no foot on the boundary. dnormal_dx is not provided (set to zero): the
+  /// two-body terms use their own linearisation (two_body_contact).
+  double gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const override;
+  std::string describe() const override;
+
+  /// The point of edge k at parameter t, deformed by the current displacement.
+  void evaluate(int k, double t, BoundaryPoint& bp) const;
+
+private:
+  struct Edge {
+    int element, local_edge;
+    std::vector<int> local;  ///< element-local modes non-zero on the edge
+  };
+  const mesh::Mesh& mesh_;
+  const fem::DofMap& dofs_;
+  const std::vector<mesh::ElementMap>& maps_;
+  std::vector<Edge> edges_;
+  mutable Eigen::VectorXd u_;
+  Vec2 tangent_at(int k, double t) const;
+};
+
+}  // namespace hpcontact::contact

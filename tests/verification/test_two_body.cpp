@@ -1,0 +1,124 @@
+// Two deformable bodies in contact: the closest-point gap and the consistent tangent of the
+// two-body penalty terms against finite differences of the contact forces.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "hpcontact/contact/two_body.hpp"
+#include "hpcontact/io/problem_reader.hpp"
+#include "hpcontact/model/discretization.hpp"
+
+using namespace hpcontact;
+
+namespace {
+
+// Two p = 4 elements with curved faces pressed into each other, not matching: the lower one's
+// top edge bulges up (arc of radius 3), the upper one's bottom edge bulges down (radius 2.5),
+// shifted sideways by 0.3.
+const char* kTwoBlocks = R"(
+case: two-blocks
+bodies:
+  - name: lower
+    material: {E: 1000, nu: 0.3}
+    nodes: {1: [0, -1], 2: [1, -1], 3: [1, 0], 4: [0, 0]}
+    elements: {1: [1, 2, 3, 4]}
+    curves: [{nodes: [3, 4], arc: {center: [0.5, -2.958039891549808], radius: 3.0}}]
+    edge_sets: {top: [[3, 4]]}
+  - name: upper
+    material: {E: 1000, nu: 0.3}
+    nodes: {1: [0.3, 0.05], 2: [1.3, 0.05], 3: [1.3, 1.05], 4: [0.3, 1.05]}
+    elements: {1: [1, 2, 3, 4]}
+    curves: [{nodes: [1, 2], arc: {center: [0.8, 2.499489742783178], radius: 2.5}}]
+    edge_sets: {bottom: [[1, 2]]}
+discretization: {degree: 4}
+)";
+
+}  // namespace
+
+// The analytic tangent of the two-body penalty terms (gap, its covariant linearisation with the
+// curvature of the deformed boundary) is the derivative of the forces: compared with central
+// differences of the forces over the dofs of both bodies at a state where the boundaries
+// overlap (points within 1e-4 of the switch g = 0 are left out: the force has a kink there).
+TEST(TwoBodyContact, TangentIsTheDerivativeOfTheForces) {
+  const auto spec = io::parse_problem(kTwoBlocks, "two-blocks.yaml");
+  const auto d = model::discretize(spec);
+  const auto& lo = d.bodies[0];
+  const auto& up = d.bodies[1];
+  const auto pts = contact::contact_points(up.mesh, up.dofs, up.maps, up.edge_sets.at("bottom"), 12,
+                                           up.thickness);
+  const contact::DeformableBoundary boundary(lo.mesh, lo.dofs, lo.maps, lo.edge_sets.at("top"));
+  const int ns = up.dofs.n_dofs(), nm = lo.dofs.n_dofs();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> r(-1, 1);
+  Eigen::VectorXd us(ns), um(nm);
+  for (int i = 0; i < ns; ++i) us(i) = 0.01 * r(rng);
+  for (int i = 0; i < nm; ++i) um(i) = 0.01 * r(rng);
+  us(1) -= 0.08;  // press the upper body down (mode 0's y; its other vertices follow below)
+  for (int i = 1; i < ns; i += 2) us(i) -= 0.08;
+  const double eps = 1e5;
+  auto forces = [&](const Eigen::VectorXd& a, const Eigen::VectorXd& b, std::vector<contact::PointState>* st,
+                    std::vector<Eigen::Triplet<double>>* t) {
+    boundary.set_displacement(b);
+    Eigen::VectorXd fs = Eigen::VectorXd::Zero(ns), fm = Eigen::VectorXd::Zero(nm);
+    contact::two_body_contact(pts, a, boundary, eps, 1.0, fs, fm, t, 0, ns, st);
+    Eigen::VectorXd f(ns + nm);
+    f << fs, fm;
+    return f;
+  };
+  std::vector<contact::PointState> st;
+  std::vector<Eigen::Triplet<double>> trip;
+  forces(us, um, &st, &trip);
+  int active = 0;
+  for (const auto& s : st) {
+    ASSERT_GT(std::abs(s.gap), 1e-4) << "a point sits on the switch; change the state";
+    active += s.gap < 0;
+  }
+  ASSERT_GE(active, 4);
+  ASSERT_LT(active, static_cast<int>(pts.size()));  // some open: the switch is inside the edge
+  Eigen::SparseMatrix<double> K(ns + nm, ns + nm);
+  K.setFromTriplets(trip.begin(), trip.end());
+  const Eigen::MatrixXd Ka(K);
+  Eigen::MatrixXd Kf(ns + nm, ns + nm);
+  const double h = 1e-7;
+  for (int j = 0; j < ns + nm; ++j) {
+    Eigen::VectorXd ap = us, am = us, bp = um, bm = um;
+    if (j < ns) {
+      ap(j) += h;
+      am(j) -= h;
+    } else {
+      bp(j - ns) += h;
+      bm(j - ns) -= h;
+    }
+    Kf.col(j) = -(forces(ap, bp, nullptr, nullptr) - forces(am, bm, nullptr, nullptr)) / (2 * h);
+  }
+  const double scale = Ka.cwiseAbs().maxCoeff();
+  const double diff = (Ka - Kf).cwiseAbs().maxCoeff();
+  std::printf("active points %d of %zu; max |K - K_fd| / max |K| = %.3g\n", active, pts.size(),
+              diff / scale);
+  EXPECT_LT(diff, 1e-6 * scale);
+}
+
+// Equal and opposite: the forces on the two bodies have zero resultant (action = reaction).
+TEST(TwoBodyContact, ForcesBalance) {
+  const auto spec = io::parse_problem(kTwoBlocks, "two-blocks.yaml");
+  const auto d = model::discretize(spec);
+  const auto& lo = d.bodies[0];
+  const auto& up = d.bodies[1];
+  const auto pts = contact::contact_points(up.mesh, up.dofs, up.maps, up.edge_sets.at("bottom"), 12,
+                                           up.thickness);
+  const contact::DeformableBoundary boundary(lo.mesh, lo.dofs, lo.maps, lo.edge_sets.at("top"));
+  Eigen::VectorXd us = Eigen::VectorXd::Zero(up.dofs.n_dofs()), um = Eigen::VectorXd::Zero(lo.dofs.n_dofs());
+  for (int i = 1; i < us.size(); i += 2) us(i) = -0.08;
+  boundary.set_displacement(um);
+  Eigen::VectorXd fs = Eigen::VectorXd::Zero(us.size()), fm = Eigen::VectorXd::Zero(um.size());
+  contact::two_body_contact(pts, us, boundary, 1e5, 1.0, fs, fm, nullptr, 0, 0, nullptr);
+  // the vertex modes (0..3) sum to one on the element, so their forces sum to the resultant
+  Vec2 rs = Vec2::Zero(), rm = Vec2::Zero();
+  for (int v = 0; v < 4; ++v) {
+    rs += Vec2(fs(2 * v), fs(2 * v + 1));
+    rm += Vec2(fm(2 * v), fm(2 * v + 1));
+  }
+  EXPECT_GT(rs.y(), 0);
+  EXPECT_LT((rs + rm).norm(), 1e-10 * rs.norm());
+}
