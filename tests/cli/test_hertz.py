@@ -72,3 +72,21 @@ def test_p_examples_converge_to_the_reference(hpcontact, root, tmp_path, degrees
         errors.append(c["e_L2_reference_percent"])
     assert errors[0] > errors[1] > errors[2], errors
     assert errors[2] < 3.0  # measured 2.48 %
+
+
+def test_bilateral_equals_unilateral(hpcontact, root, tmp_path):
+    """Two equal cylinders (bilateral.yaml: both sides' Gauss points against the other's deformed
+    boundary, half weight each, half the penalty on the gap between the bodies) give the
+    unilateral p8.yaml result: the pressure from stresses within 1e-6 of p0 everywhere on
+    [0, 1.5 b] (measured 8.6e-7), the same energy per cylinder and the same load factor."""
+    uni = run(hpcontact, root, "p8.yaml", tmp_path / "uni")
+    bil = run(hpcontact, root, "bilateral.yaml", tmp_path / "bil")
+    assert bil["converged"] and bil["dofs"] == 2 * uni["dofs"]
+    _, pu = read_curve(tmp_path / "uni" / "pressure.csv")
+    _, pb = read_curve(tmp_path / "bil" / "pressure.csv")
+    p0 = uni["contact"]["hertz_peak_pressure"]
+    assert len(pu) == len(pb)
+    assert max(abs(a - b) for a, b in zip(pu, pb)) < 1e-6 * p0
+    assert abs(bil["strain_energy"] - 2 * uni["strain_energy"]) < 1e-8 * bil["strain_energy"]
+    assert abs(bil["load_factor"] / uni["load_factor"] - 1) < 1e-8
+    assert abs(bil["contact"]["resultant"][1] - 35000) < 35

@@ -152,7 +152,8 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "How the equations are solved."},
       {.path = "solver.linear", .type = T::choice, .default_yaml = "cholmod",
        .doc = "Sparse direct solver: CHOLMOD, Eigen's SimplicialLDLT, or UMFPACK's LU (used "
-              "whatever is set with tangent: finite-difference, whose matrix can be indefinite).",
+              "whatever is set with tangent: finite-difference and with contact between two "
+              "bodies, whose tangents can be indefinite).",
        .choices = {"cholmod", "ldlt", "lu"}},
       {.path = "solver.tangent", .type = T::choice, .default_yaml = "analytic",
        .doc = "Newton tangent: analytic (consistent), or the seed's central finite differences of "
@@ -181,14 +182,14 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Relative tolerance on reaching value.", .lower = greater_than(0)},
 
       {.path = "contact", .type = T::section_list,
-       .doc = "Contact boundaries of bodies against rigid obstacles, enforced by a normal penalty; "
-              "absent: no contact."},
+       .doc = "Contact boundaries of bodies against rigid obstacles or each other, enforced by a "
+              "normal penalty; absent: no contact."},
       {.path = "contact[].body", .type = T::string, .required = true,
        .doc = "Name of the body in contact."},
       {.path = "contact[].edges", .type = T::string_list, .required = true,
        .doc = "Names of the body's edge sets that may come into contact.", .min_items = 1},
       {.path = "contact[].obstacle", .type = T::section, .required = true,
-       .doc = "The rigid obstacle."},
+       .doc = "What the body's edges touch: a rigid obstacle or another body."},
       {.path = "contact[].penalty", .type = T::number, .required = true,
        .unit = "force/length³",
        .doc = "Normal penalty eps_N (seed eq. 3.19); the seed uses 1000·E.", .lower = greater_than(0)},
@@ -209,8 +210,15 @@ const std::vector<KeySpec>& input_schema() {
               "pressure_from_stress column), relative to this file; absent: none."},
 
       {.path = "contact[].obstacle.type", .type = T::choice, .required = true,
-       .doc = "plane: a straight line; circle: a disc (or a hole with inside).",
-       .choices = {"plane", "circle"}},
+       .doc = "plane: a straight line; circle: a disc (or a hole with inside); body: another "
+              "deformable body (bilateral contact: the points of both sides are evaluated, each "
+              "with half weight, and the penalty acts on the gap between the bodies).",
+       .choices = {"plane", "circle", "body"}},
+      {.path = "contact[].obstacle.body", .type = T::string,
+       .doc = "body: name of the other body; required if and only if type is body."},
+      {.path = "contact[].obstacle.edges", .type = T::string_list,
+       .doc = "body: names of the other body's edge sets that may come into contact.",
+       .min_items = 1},
       {.path = "contact[].obstacle.point", .type = T::point, .default_yaml = "[0, 0]",
        .unit = "length", .doc = "plane: a point of the line, [x, y]."},
       {.path = "contact[].obstacle.normal", .type = T::point, .default_yaml = "[0, 1]",

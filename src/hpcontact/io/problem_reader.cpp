@@ -369,7 +369,7 @@ class SpecBuilder {
                      "no such body (defined: " + known + ") (got '" + c.body + "')");
       }
       c.edge_sets = edge_set_names(node["edges"], item_path + ".edges", *body);
-      c.obstacle = obstacle(node["obstacle"], item_path + ".obstacle");
+      c.obstacle = obstacle(node["obstacle"], item_path + ".obstacle", bodies, c.body);
       c.penalty = number(node["penalty"]);
       c.quadrature = integer(node["quadrature"]);
       if (const YAML::Node cmp = node["compare"]) {
@@ -386,9 +386,35 @@ class SpecBuilder {
     return pairs;
   }
 
-  ObstacleSpec obstacle(const YAML::Node& node, const std::string& path) {
+  ObstacleSpec obstacle(const YAML::Node& node, const std::string& path,
+                        const std::vector<BodySpec>& bodies, const std::string& self) {
     ObstacleSpec o;
-    o.kind = node["type"].Scalar() == "circle" ? ObstacleKind::circle : ObstacleKind::plane;
+    const std::string type = node["type"].Scalar();
+    o.kind = type == "circle" ? ObstacleKind::circle
+             : type == "body" ? ObstacleKind::body
+                              : ObstacleKind::plane;
+    for (const char* key : {"body", "edges"}) {
+      if (o.kind == ObstacleKind::body && !node[key])
+        source_.fail(node, path, std::string("missing key '") + key + "' (required by type: body)");
+      if (o.kind != ObstacleKind::body && node[key])
+        source_.fail(node[key], path + "." + key,
+                     "only allowed with type: body (got type: " + type + ")");
+    }
+    if (o.kind == ObstacleKind::body) {
+      o.body = node["body"].Scalar();
+      const auto other = std::find_if(bodies.begin(), bodies.end(),
+                                      [&](const BodySpec& b) { return b.name == o.body; });
+      if (other == bodies.end()) {
+        std::string known;
+        for (const BodySpec& b : bodies) known += (known.empty() ? "" : ", ") + b.name;
+        source_.fail(node["body"], path + ".body",
+                     "no such body (defined: " + known + ") (got '" + o.body + "')");
+      }
+      if (o.body == self)
+        source_.fail(node["body"], path + ".body",
+                     "must be another body than the contact's own (got '" + o.body + "')");
+      o.edge_sets = edge_set_names(node["edges"], path + ".edges", *other);
+    }
     o.point = point(node["point"]);
     o.normal = point(node["normal"]);
     // Normalised; scaled by its largest component first so that huge components cannot overflow.

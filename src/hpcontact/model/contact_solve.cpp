@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "hpcontact/contact/two_body.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/fem/elasticity.hpp"
@@ -95,9 +96,25 @@ private:
       const Body& body = d_.bodies[pair.body];
       const int n = body.dofs.n_dofs();
       Eigen::VectorXd fc = Eigen::VectorXd::Zero(n);
-      contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty,
-                               u.segment(body.dof_offset, n), fc, t, body.dof_offset,
-                               states ? &(*states)[k] : nullptr, frozen ? &(*frozen)[k] : nullptr);
+      if (pair.other < 0) {
+        contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty,
+                                 u.segment(body.dof_offset, n), fc, t, body.dof_offset,
+                                 states ? &(*states)[k] : nullptr, frozen ? &(*frozen)[k] : nullptr);
+      } else {
+        const Body& other = d_.bodies[pair.other];
+        const int m = other.dofs.n_dofs();
+        const Eigen::VectorXd ua = u.segment(body.dof_offset, n), ub = u.segment(other.dof_offset, m);
+        Eigen::VectorXd fo = Eigen::VectorXd::Zero(m);
+        pair.boundary->set_displacement(ua);
+        pair.other_boundary->set_displacement(ub);
+        // both sides, each with half weight: no master/slave preference (seed §3.6)
+        contact::two_body_contact(pair.points, ua, *pair.other_boundary, pair.penalty, 0.5, fc, fo,
+                                  t, body.dof_offset, other.dof_offset,
+                                  states ? &(*states)[k] : nullptr);
+        contact::two_body_contact(pair.other_points, ub, *pair.boundary, pair.penalty, 0.5, fo, fc,
+                                  t, other.dof_offset, body.dof_offset, nullptr);
+        R.segment(other.dof_offset, m) -= fo;
+      }
       R.segment(body.dof_offset, n) -= fc;
     }
     r = op_.restrict(d_, R);
@@ -197,10 +214,28 @@ Vec2 contact_resultant(const Discretization& d, const ContactPair& pair, const E
   const Body& body = d.bodies[pair.body];
   const int n = body.dofs.n_dofs();
   Eigen::VectorXd fc = Eigen::VectorXd::Zero(n);
-  contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty,
-                           u.segment(body.dof_offset, n), fc, nullptr, 0, &states);
+  const Eigen::VectorXd ua = u.segment(body.dof_offset, n);
   Vec2 r = Vec2::Zero();
-  for (size_t i = 0; i < pair.points.size(); ++i) r += pair.points[i].weight * states[i].traction;
+  if (pair.other < 0) {
+    contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty, ua, fc, nullptr, 0, &states);
+    for (size_t i = 0; i < pair.points.size(); ++i) r += pair.points[i].weight * states[i].traction;
+    return r;
+  }
+  // On the body: half of its own points' tractions, and the reactions of half of the other's.
+  const Body& other = d.bodies[pair.other];
+  const int m = other.dofs.n_dofs();
+  const Eigen::VectorXd ub = u.segment(other.dof_offset, m);
+  Eigen::VectorXd fo = Eigen::VectorXd::Zero(m);
+  pair.boundary->set_displacement(ua);
+  pair.other_boundary->set_displacement(ub);
+  std::vector<contact::PointState> other_states;
+  contact::two_body_contact(pair.points, ua, *pair.other_boundary, pair.penalty, 0.5, fc, fo,
+                            nullptr, 0, 0, &states);
+  contact::two_body_contact(pair.other_points, ub, *pair.boundary, pair.penalty, 0.5, fo, fc,
+                            nullptr, 0, 0, &other_states);
+  for (size_t i = 0; i < pair.points.size(); ++i) r += 0.5 * pair.points[i].weight * states[i].traction;
+  for (size_t i = 0; i < pair.other_points.size(); ++i)
+    r -= 0.5 * pair.other_points[i].weight * other_states[i].traction;
   return r;
 }
 
@@ -320,10 +355,28 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       pair.obstacle = std::make_shared<contact::RigidPlane>(p, nrm);
       pair.reference_point = p;
       pair.tangent = Vec2(nrm.y(), -nrm.x()).normalized();
-    } else {
+    } else if (o.kind == ObstacleKind::circle) {
       pair.obstacle = std::make_shared<contact::RigidCircle>(Vec2(o.center[0], o.center[1]),
                                                              o.radius, o.inside);
       pair.reference_point = Vec2(o.center[0], o.center[1]);
+    } else {
+      const Body& other = body_named(d, o.body, cs.where, &pair.other);
+      HPC_REQUIRE(pair.other != pair.body, InputError, cs.where.str(),
+                  ".obstacle.body: must be another body than the contact's own");
+      std::vector<int> other_edges;
+      for (const auto& name : o.edge_sets) {
+        auto it = other.edge_sets.find(name);
+        HPC_REQUIRE(it != other.edge_sets.end(), InputError, cs.where.str(),
+                    ".obstacle.edges: no edge set '", name, "' in body '", other.name, "'");
+        other_edges.insert(other_edges.end(), it->second.begin(), it->second.end());
+      }
+      pair.boundary = std::make_shared<contact::DeformableBoundary>(body.mesh, body.dofs, body.maps,
+                                                                    pair.edges);
+      pair.other_boundary = std::make_shared<contact::DeformableBoundary>(
+          other.mesh, other.dofs, other.maps, other_edges);
+      pair.obstacle = pair.other_boundary;
+      pair.other_points = contact::contact_points(other.mesh, other.dofs, other.maps, other_edges,
+                                                  cs.quadrature, other.thickness);
     }
     pair.points = contact::contact_points(body.mesh, body.dofs, body.maps, pair.edges, cs.quadrature,
                                           body.thickness);
@@ -336,6 +389,10 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
                                 const ProgressFn& progress) {
   const SolverSpec& ss = spec.solver;
   auto pairs = make_contact_pairs(spec, d);
+  for (const auto& pair : pairs)
+    HPC_REQUIRE(pair.other < 0 || ss.tangent == "analytic", InputError, ss.where.str(),
+                "tangent: finite-difference is implemented for rigid obstacles only; contact "
+                "between two bodies needs tangent: analytic");
   ContactSystem system(d, pairs, spec.discretization.condense, ss.tangent == "finite-difference");
   solve::NewtonOptions no;
   no.max_iterations = ss.max_iterations;
@@ -344,6 +401,10 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   // A finite-difference column that straddles a point's contact switch is inconsistent with
   // its neighbours: the symmetric part can be indefinite, so it is solved by LU.
   if (ss.tangent == "finite-difference") no.linear_solver = solve::LinearSolverKind::lu;
+  // Between two bodies the tangent's curvature terms (−p_N M) can make it indefinite away from
+  // the solution (a deep first step): symmetric, but solved by LU.
+  for (const auto& pair : pairs)
+    if (pair.other >= 0) no.linear_solver = solve::LinearSolverKind::lu;
 
   NonlinearSolution sol;
   Eigen::VectorXd x = Eigen::VectorXd::Zero(system.size());

@@ -11,18 +11,24 @@
 #include <Eigen/Dense>
 
 #include "hpcontact/contact/obstacle.hpp"
+#include "hpcontact/contact/deformable_boundary.hpp"
 #include "hpcontact/contact/penalty.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "hpcontact/solve/newton.hpp"
 
 namespace hpcontact::model {
 
-/// A resolved contact pair: the body, its contact points, the obstacle and the penalty.
+/// A resolved contact pair: the body, its contact points, the obstacle and the penalty. Against
+/// another deformable body (`other` >= 0) the obstacle is that body's deformed boundary, and
+/// the other body's points are evaluated against this body's boundary too (seed §3.6).
 struct ContactPair {
   int body = -1;
   std::vector<contact::ContactPoint> points;
   std::vector<int> edges;  ///< mesh edges of the contact boundary, in order
   contact::ObstaclePtr obstacle;
+  int other = -1;  ///< the other body of a bilateral pair, -1 against a rigid obstacle
+  std::vector<contact::ContactPoint> other_points;
+  std::shared_ptr<const contact::DeformableBoundary> boundary, other_boundary;
   double penalty = 0;
   Vec2 reference_point = Vec2::Zero();  ///< obstacle point used for the half width
   Vec2 tangent = Vec2(1, 0);            ///< obstacle tangent used for the half width

@@ -138,7 +138,7 @@ struct SolverSpec {
   SourceRef where;
 };
 
-enum class ObstacleKind { plane, circle };
+enum class ObstacleKind { plane, circle, body };
 
 /// A rigid obstacle: a plane through `point` with outward `normal` (towards the body), or a
 /// circle (the body outside it, or inside it with `inside`).
@@ -148,6 +148,8 @@ struct ObstacleSpec {
   std::array<double, 2> center{0, 0};
   double radius = 0;
   bool inside = false;
+  std::string body;                    ///< body: the other deformable body
+  std::vector<std::string> edge_sets;  ///< body: its contact edge sets
 };
 
 /// Closed forms (Hertz, Shtayerman for the exact circle) and an optional reference curve to

@@ -581,3 +581,17 @@ TEST(InputSchema, IsConsistentAndDocumented) {
   EXPECT_NE(markdown.find("| `bodies[].material.nu` | number in (-1, 0.5) | required |"),
             std::string::npos);
 }
+
+// Contact with another body: the body must exist, differ from the pair's own, and name its
+// edge sets; body and edges belong to type body only.
+TEST(ProblemReader, RejectsBadBodyObstacle) {
+  const std::string pair = square + "contact:\n  - {body: block, edges: [bottom], penalty: 1, ";
+  input_error(pair + "obstacle: {type: body, edges: [top]}}\n",
+              {"contact[0].obstacle: missing key 'body' (required by type: body)"});
+  input_error(pair + "obstacle: {type: body, body: block, edges: [top]}}\n",
+              {"contact[0].obstacle.body: must be another body than the contact's own (got 'block')"});
+  input_error(pair + "obstacle: {type: body, body: other, edges: [top]}}\n",
+              {"contact[0].obstacle.body: no such body (defined: block) (got 'other')"});
+  input_error(pair + "obstacle: {type: plane, body: block}}\n",
+              {"contact[0].obstacle.body: only allowed with type: body (got type: plane)"});
+}
