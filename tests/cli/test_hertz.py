@@ -90,3 +90,15 @@ def test_bilateral_equals_unilateral(hpcontact, root, tmp_path):
     assert abs(bil["strain_energy"] - 2 * uni["strain_energy"]) < 1e-8 * bil["strain_energy"]
     assert abs(bil["load_factor"] / uni["load_factor"] - 1) < 1e-8
     assert abs(bil["contact"]["resultant"][1] - 35000) < 35
+
+
+def test_obstacle_the_body_starts_inside_is_refused(hpcontact, root, tmp_path):
+    """A plane whose normal points away from the body (the body starts inside the obstacle) is
+    an input error naming the key and the cause, before any solving; no summary is written."""
+    out = tmp_path / "out"
+    r = hpcontact("run", os.path.join(root, HERTZ, "p8.yaml"), "--out", out, "-q",
+                  "--set", "contact[0].obstacle.normal=[0,-1]")
+    assert r.returncode == 1, r.stderr
+    assert "p8.yaml:" in r.stderr and "contact[0].obstacle" in r.stderr
+    assert "inside" in r.stderr and "normal" in r.stderr
+    assert not (out / "summary.json").exists()

@@ -380,6 +380,24 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
     }
     pair.points = contact::contact_points(body.mesh, body.dofs, body.maps, pair.edges, cs.quadrature,
                                           body.thickness);
+    // An obstacle the body starts deep inside (more than 1 % of its size) is a wrong normal or
+    // position, not a contact problem: say so before solving.
+    if (pair.other < 0) {
+      Eigen::AlignedBox2d box;
+      for (int v = 0; v < body.mesh.n_nodes(); ++v) box.extend(body.mesh.node(v));
+      const double size = box.diagonal().norm();
+      const contact::ContactPoint* deepest = nullptr;
+      double g_min = 0;
+      for (const auto& cp : pair.points)
+        if (const double g = pair.obstacle->gap(cp.X, nullptr, nullptr); g < g_min) {
+          g_min = g;
+          deepest = &cp;
+        }
+      HPC_REQUIRE(g_min >= -0.01 * size, InputError, cs.where.str(), ".obstacle: the undeformed body ",
+                  "lies ", -g_min, " inside ", pair.obstacle->describe(), " at (", deepest->X.x(),
+                  ", ", deepest->X.y(), "), more than 1 % of its size (", size,
+                  "): is the obstacle's position or normal (pointing towards the body) wrong?");
+    }
     pairs.push_back(std::move(pair));
   }
   return pairs;
