@@ -34,28 +34,35 @@ bodies:
 discretization: {degree: 4}
 )";
 
+/// The two blocks discretised, the upper one's 12 contact points per edge and the lower one's
+/// contact boundary.
+class TwoBodyContact : public ::testing::Test {
+protected:
+  const model::ProblemSpec spec = io::parse_problem(kTwoBlocks, "two-blocks.yaml");
+  const model::Discretization d = model::discretize(spec);
+  const model::Body& lo = d.bodies[0];
+  const model::Body& up = d.bodies[1];
+  const std::vector<contact::ContactPoint> pts = contact::contact_points(
+      up.mesh, up.dofs, up.maps, up.edge_sets.at("bottom"), 12, up.thickness);
+  const contact::DeformableBoundary boundary{lo.mesh, lo.dofs, lo.maps, lo.edge_sets.at("top")};
+};
+
 }  // namespace
 
 // The analytic tangent of the two-body penalty terms (gap, its covariant linearisation with the
 // curvature of the deformed boundary) is the derivative of the forces: compared with central
 // differences of the forces over the dofs of both bodies at a state where the boundaries
-// overlap (points within 1e-4 of the switch g = 0 are left out: the force has a kink there).
-TEST(TwoBodyContact, TangentIsTheDerivativeOfTheForces) {
-  const auto spec = io::parse_problem(kTwoBlocks, "two-blocks.yaml");
-  const auto d = model::discretize(spec);
-  const auto& lo = d.bodies[0];
-  const auto& up = d.bodies[1];
-  const auto pts = contact::contact_points(up.mesh, up.dofs, up.maps, up.edge_sets.at("bottom"), 12,
-                                           up.thickness);
-  const contact::DeformableBoundary boundary(lo.mesh, lo.dofs, lo.maps, lo.edge_sets.at("top"));
+// overlap (the state is chosen with no point within 1e-4 of the switch g = 0, where the force
+// has a kink; asserted).
+TEST_F(TwoBodyContact, TangentIsTheDerivativeOfTheForces) {
   const int ns = up.dofs.n_dofs(), nm = lo.dofs.n_dofs();
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> r(-1, 1);
   Eigen::VectorXd us(ns), um(nm);
   for (int i = 0; i < ns; ++i) us(i) = 0.01 * r(rng);
   for (int i = 0; i < nm; ++i) um(i) = 0.01 * r(rng);
-  us(1) -= 0.08;  // press the upper body down (mode 0's y; its other vertices follow below)
-  for (int i = 1; i < ns; i += 2) us(i) -= 0.08;
+  us(1) -= 0.08;  // vertex 1 of the upper body pressed deeper (tilts it) ...
+  for (int i = 1; i < ns; i += 2) us(i) -= 0.08;  // ... and the whole body pressed down
   const double eps = 1e5;
   auto forces = [&](const Eigen::VectorXd& a, const Eigen::VectorXd& b, std::vector<contact::PointState>* st,
                     std::vector<Eigen::Triplet<double>>* t) {
@@ -100,14 +107,7 @@ TEST(TwoBodyContact, TangentIsTheDerivativeOfTheForces) {
 }
 
 // Equal and opposite: the forces on the two bodies have zero resultant (action = reaction).
-TEST(TwoBodyContact, ForcesBalance) {
-  const auto spec = io::parse_problem(kTwoBlocks, "two-blocks.yaml");
-  const auto d = model::discretize(spec);
-  const auto& lo = d.bodies[0];
-  const auto& up = d.bodies[1];
-  const auto pts = contact::contact_points(up.mesh, up.dofs, up.maps, up.edge_sets.at("bottom"), 12,
-                                           up.thickness);
-  const contact::DeformableBoundary boundary(lo.mesh, lo.dofs, lo.maps, lo.edge_sets.at("top"));
+TEST_F(TwoBodyContact, ForcesBalance) {
   Eigen::VectorXd us = Eigen::VectorXd::Zero(up.dofs.n_dofs()), um = Eigen::VectorXd::Zero(lo.dofs.n_dofs());
   for (int i = 1; i < us.size(); i += 2) us(i) = -0.08;
   boundary.set_displacement(um);

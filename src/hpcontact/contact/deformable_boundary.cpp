@@ -1,12 +1,14 @@
 // Closest-point projection onto a deformed high-order boundary: each edge's distance function
-// is sampled to bracket its minima, which are then refined by the Illinois method.
+// is sampled to bracket its minima, which are then refined by the Pegasus method.
 #include "hpcontact/contact/deformable_boundary.hpp"
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/core/roots.hpp"
 #include "hpcontact/fem/edge_load.hpp"
 
 namespace hpcontact::contact {
@@ -32,6 +34,24 @@ DeformableBoundary::DeformableBoundary(const mesh::Mesh& mesh, const fem::DofMap
       if (N(a) != 0.0) be.local.push_back(a);
     edges_.push_back(std::move(be));
   }
+  // Which edge ends lie on a vertex shared with another edge of the boundary: a foot there is a
+  // real closest point (between two edges); at a free end of the boundary it is not.
+  std::vector<std::array<int, 2>> end_vertex;
+  for (const Edge& be : edges_) {
+    const auto& edge = mesh.edge(mesh.quad_edge(be.element, be.local_edge));
+    std::array<int, 2> v{};
+    for (int end = 0; end < 2; ++end) {
+      const auto r = fem::edge_reference_point(be.local_edge, end == 0 ? -1.0 : 1.0);
+      const Vec2 p = maps[be.element].map(r[0], r[1]);
+      v[end] = (mesh.node(edge.v0) - p).norm() < (mesh.node(edge.v1) - p).norm() ? edge.v0 : edge.v1;
+    }
+    end_vertex.push_back(v);
+  }
+  for (size_t k = 0; k < edges_.size(); ++k)
+    for (int end = 0; end < 2; ++end)
+      for (size_t j = 0; j < edges_.size(); ++j)
+        if (j != k && (end_vertex[j][0] == end_vertex[k][end] || end_vertex[j][1] == end_vertex[k][end]))
+          edges_[k].shared_end[end] = true;
 }
 
 Vec2 DeformableBoundary::tangent_at(int k, double t) const {
@@ -44,7 +64,10 @@ void DeformableBoundary::evaluate(int k, double t, BoundaryPoint& bp) const {
   const Edge& e = edges_[k];
   const auto& es = dofs_.element(e.element);
   const int n = es.n_modes();
-  Eigen::VectorXd N(n), dxi(n), deta(n);
+  Eigen::VectorXd &N = N_, &dxi = dxi_, &deta = deta_;  // scratch: no allocation per call
+  N.resize(n);
+  dxi.resize(n);
+  deta.resize(n);
   const auto r = fem::edge_reference_point(e.local_edge, t);
   es.evaluate(r[0], r[1], N.data(), dxi.data(), deta.data());
   Mat2 J;
@@ -71,7 +94,13 @@ void DeformableBoundary::evaluate(int k, double t, BoundaryPoint& bp) const {
   // E1, E2 run counter-clockwise around the element, E3, E4 clockwise (see fem::edge_geometry).
   const Vec2 T = bp.dx_dt;
   bp.normal = (e.local_edge < 2 ? Vec2(T.y(), -T.x()) : Vec2(-T.y(), T.x())).normalized();
-  bp.n_d2x = 0;
+}
+
+double DeformableBoundary::curvature(const BoundaryPoint& foot) const {
+  // central differences of the exact tangent (step 1e-4: error ~1e-8 relative)
+  const double h = 1e-4;
+  const Vec2 d2x = (tangent_at(foot.edge, foot.t + h) - tangent_at(foot.edge, foot.t - h)) / (2 * h);
+  return foot.normal.dot(d2x);
 }
 
 bool DeformableBoundary::project(const Vec2& x, BoundaryPoint& foot) const {
@@ -93,53 +122,21 @@ bool DeformableBoundary::project(const Vec2& x, BoundaryPoint& foot) const {
       found = true;
     }
   };
-  auto shared_vertex = [&](int k, int end) {
-    const auto& ek = mesh_.edge(mesh_.quad_edge(edges_[k].element, edges_[k].local_edge));
-    const auto r = fem::edge_reference_point(edges_[k].local_edge, end);
-    // the vertex at this end: the edge endpoint nearer to the reference point's image
-    const Vec2 p = maps_[edges_[k].element].map(r[0], r[1]);
-    const int v = (mesh_.node(ek.v0) - p).norm() < (mesh_.node(ek.v1) - p).norm() ? ek.v0 : ek.v1;
-    for (size_t j = 0; j < edges_.size(); ++j) {
-      if (static_cast<int>(j) == k) continue;
-      const auto& ej = mesh_.edge(mesh_.quad_edge(edges_[j].element, edges_[j].local_edge));
-      if (ej.v0 == v || ej.v1 == v) return true;
-    }
-    return false;
-  };
+  auto shared_vertex = [&](int k, double end) { return edges_[k].shared_end[end > 0 ? 1 : 0]; };
   for (int k = 0; k < static_cast<int>(edges_.size()); ++k) {
     double ta = -1, fa = f(k, ta);
     if (fa < 0 && shared_vertex(k, -1)) consider(k, -1);
     for (int i = 1; i <= kSamples; ++i) {
       const double tb = -1 + 2.0 * i / kSamples, fb = f(k, tb);
       if (fa > 0 && fb <= 0) {
-        // Illinois: regula falsi halving the retained end's value
-        double a = ta, b = tb, va = fa, vb = fb, t = tb;
-        for (int it = 0; it < 100 && vb != 0 && b - a != 0; ++it) {
-          t = b - vb * (b - a) / (vb - va);
-          const double vt = f(k, t);
-          if (std::abs(b - a) < 1e-15) break;
-          if (vt * vb < 0) {
-            a = b;
-            va = vb;
-          } else {
-            va *= 0.5;
-          }
-          b = t;
-          vb = vt;
-          if (std::abs(vt) < 1e-15 * (1 + bp.dx_dt.squaredNorm())) break;
-        }
-        if (std::abs(t) < 1 || shared_vertex(k, t > 0 ? 1 : -1)) consider(k, t);
+        const double t = pegasus_root([&](double r) { return f(k, r); }, ta, tb, fa, fb,
+                                      1e-15 * (1 + bp.dx_dt.squaredNorm()));
+        if (std::abs(t) < 1 || shared_vertex(k, t)) consider(k, t);
       }
       ta = tb;
       fa = fb;
     }
     if (fa > 0 && shared_vertex(k, 1)) consider(k, 1);
-  }
-  if (found) {
-    // n · d²x/dt² by central differences of the exact tangent (step 1e-4: error ~1e-8 relative)
-    const double h = 1e-4;
-    const Vec2 d2x = (tangent_at(foot.edge, foot.t + h) - tangent_at(foot.edge, foot.t - h)) / (2 * h);
-    foot.n_d2x = foot.normal.dot(d2x);
   }
   return found;
 }

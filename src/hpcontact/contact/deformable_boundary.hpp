@@ -2,6 +2,7 @@
 // projection onto the high-order curve, and the gap with the boundary's outward normal.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -14,13 +15,13 @@
 namespace hpcontact::contact {
 
 /// A point of the deformed boundary x(t) = X(t) + Σ N_k(t) u_k on one edge, with what the
-/// two-body contact terms need: dx/dt, n·d²x/dt², the modes living on the edge and N_k, dN_k/dt.
+/// two-body contact terms need: dx/dt, the outward normal, the modes living on the edge and N_k,
+/// dN_k/dt (n·d²x/dt² on demand: DeformableBoundary::curvature).
 struct BoundaryPoint {
   int edge = -1;      ///< index into the boundary's edges
   double t = 0;       ///< local edge parameter in [-1, 1]
   Vec2 x, dx_dt;      ///< deformed position and (unnormalised) tangent
   Vec2 normal;        ///< deformed outward unit normal
-  double n_d2x = 0;   ///< n · d²x/dt² (curvature term of the consistent tangent)
   std::vector<int> modes;
   Eigen::VectorXd N, dN;
 };
@@ -48,16 +49,22 @@ public:
   /// The point of edge k at parameter t, deformed by the current displacement.
   void evaluate(int k, double t, BoundaryPoint& bp) const;
 
+  /// n · d²x/dt² at a foot (the curvature term of the consistent tangent), by central
+  /// differences of the exact tangent; only active points of a tangent evaluation need it.
+  double curvature(const BoundaryPoint& foot) const;
+
 private:
   struct Edge {
     int element, local_edge;
     std::vector<int> local;  ///< element-local modes non-zero on the edge
+    std::array<bool, 2> shared_end{false, false};  ///< t = −1, +1 on a vertex of another edge
   };
   const mesh::Mesh& mesh_;
   const fem::DofMap& dofs_;
   const std::vector<mesh::ElementMap>& maps_;
   std::vector<Edge> edges_;
   mutable Eigen::VectorXd u_;
+  mutable Eigen::VectorXd N_, dxi_, deta_;  ///< scratch of evaluate()
   Vec2 tangent_at(int k, double t) const;
 };
 

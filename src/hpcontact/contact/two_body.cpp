@@ -54,7 +54,7 @@ void two_body_contact(const std::vector<ContactPoint>& points, const Eigen::Vect
       for (int c = 0; c < 2; ++c)
         force_m(2 * foot.modes[k] + c) += w * p * Gn(2 * (ms + k) + c);
     if (!tangent) continue;
-    const double a = t.squaredNorm(), kappa = foot.n_d2x, cc = a - g * kappa;
+    const double a = t.squaredNorm(), kappa = master.curvature(foot), cc = a - g * kappa;
     const Eigen::VectorXd H = Gt + g * Dn;
     const Eigen::MatrixXd M =
         -(Dn * H.transpose() / cc + Gt * Dn.transpose() / a + kappa * Gt * H.transpose() / (a * cc));

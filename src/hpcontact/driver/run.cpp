@@ -128,7 +128,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
           options.out_dir.empty() ? "" : (fs::path(options.out_dir) / "pressure.csv").string();
       std::vector<double> zone_ends;
       for (const auto& g : c.gamma_star)
-        zone_ends.push_back((g - pairs.front().reference_point).dot(pairs.front().tangent));
+        zone_ends.push_back(pairs.front().coordinate(g));
       cj.update(compare_pressure(spec, *cmp, disc, pairs.front(), result.u, zone_ends, csv));
     }
     s.extra["contact"] = cj;

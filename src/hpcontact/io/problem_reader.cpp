@@ -352,6 +352,20 @@ class SpecBuilder {
   }
 
   /// The contact pairs; each names an existing body and edge sets of that body.
+  /// The body a scalar node names; an error listing the defined bodies otherwise.
+  const BodySpec& body_named(const YAML::Node& node, const std::string& path,
+                             const std::vector<BodySpec>& bodies) {
+    const std::string name = node.Scalar();
+    const auto it = std::find_if(bodies.begin(), bodies.end(),
+                                 [&](const BodySpec& b) { return b.name == name; });
+    if (it == bodies.end()) {
+      std::string known;
+      for (const BodySpec& b : bodies) known += (known.empty() ? "" : ", ") + b.name;
+      source_.fail(node, path, "no such body (defined: " + known + ") (got '" + name + "')");
+    }
+    return *it;
+  }
+
   std::vector<ContactPairSpec> contact(const YAML::Node& list, const std::string& path,
                                        const std::vector<BodySpec>& bodies) {
     std::vector<ContactPairSpec> pairs;
@@ -360,15 +374,8 @@ class SpecBuilder {
       const std::string item_path = join_index(path, i);
       ContactPairSpec c;
       c.body = node["body"].Scalar();
-      const auto body = std::find_if(bodies.begin(), bodies.end(),
-                                     [&](const BodySpec& b) { return b.name == c.body; });
-      if (body == bodies.end()) {
-        std::string known;
-        for (const BodySpec& b : bodies) known += (known.empty() ? "" : ", ") + b.name;
-        source_.fail(node["body"], item_path + ".body",
-                     "no such body (defined: " + known + ") (got '" + c.body + "')");
-      }
-      c.edge_sets = edge_set_names(node["edges"], item_path + ".edges", *body);
+      const BodySpec& body = body_named(node["body"], item_path + ".body", bodies);
+      c.edge_sets = edge_set_names(node["edges"], item_path + ".edges", body);
       c.obstacle = obstacle(node["obstacle"], item_path + ".obstacle", bodies, c.body);
       c.penalty = number(node["penalty"]);
       c.quadrature = integer(node["quadrature"]);
@@ -402,18 +409,11 @@ class SpecBuilder {
     }
     if (o.kind == ObstacleKind::body) {
       o.body = node["body"].Scalar();
-      const auto other = std::find_if(bodies.begin(), bodies.end(),
-                                      [&](const BodySpec& b) { return b.name == o.body; });
-      if (other == bodies.end()) {
-        std::string known;
-        for (const BodySpec& b : bodies) known += (known.empty() ? "" : ", ") + b.name;
-        source_.fail(node["body"], path + ".body",
-                     "no such body (defined: " + known + ") (got '" + o.body + "')");
-      }
+      const BodySpec& other = body_named(node["body"], path + ".body", bodies);
       if (o.body == self)
         source_.fail(node["body"], path + ".body",
                      "must be another body than the contact's own (got '" + o.body + "')");
-      o.edge_sets = edge_set_names(node["edges"], path + ".edges", *other);
+      o.edge_sets = edge_set_names(node["edges"], path + ".edges", other);
     }
     o.point = point(node["point"]);
     o.normal = point(node["normal"]);

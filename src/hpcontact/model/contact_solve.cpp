@@ -8,6 +8,7 @@
 
 #include "hpcontact/contact/two_body.hpp"
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/core/roots.hpp"
 #include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/fem/elasticity.hpp"
 #include "hpcontact/fem/element_values.hpp"
@@ -25,6 +26,52 @@ const Body& body_named(const Discretization& d, const std::string& name, const S
       return d.bodies[b];
     }
   throw InputError(where.str() + ".body: no body named '" + name + "'");
+}
+
+/// The contact forces of a pair at the state u (all dofs): on its body, and against another
+/// body on that one too, with the states of both sides' points and, if t is not null, the
+/// triplets of their tangent (all dofs). Against another body both sides are evaluated, each
+/// with half weight: no master/slave preference (seed §3.6). With `frozen`, gaps against a rigid
+/// obstacle use the normals of those states (see penalty_contact).
+struct PairForces {
+  Eigen::VectorXd body, other;
+  std::vector<contact::PointState> states, other_states;
+  /// ∫ traction ds on the pair's body: its points' tractions, and against another body half of
+  /// them plus the reactions of half of the other's points.
+  Vec2 resultant(const ContactPair& pair) const {
+    Vec2 r = Vec2::Zero();
+    const double own = pair.other < 0 ? 1.0 : 0.5;
+    for (size_t i = 0; i < pair.points.size(); ++i) r += own * pair.points[i].weight * states[i].traction;
+    for (size_t i = 0; i < pair.other_points.size(); ++i)
+      r -= 0.5 * pair.other_points[i].weight * other_states[i].traction;
+    return r;
+  }
+};
+
+PairForces pair_forces(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u,
+                       std::vector<Eigen::Triplet<double>>* t,
+                       const std::vector<contact::PointState>* frozen = nullptr) {
+  const Body& body = d.bodies[pair.body];
+  const int n = body.dofs.n_dofs();
+  const Eigen::VectorXd ua = u.segment(body.dof_offset, n);
+  PairForces f;
+  f.body = Eigen::VectorXd::Zero(n);
+  if (pair.other < 0) {
+    contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty, ua, f.body, t,
+                             body.dof_offset, &f.states, frozen);
+    return f;
+  }
+  const Body& other = d.bodies[pair.other];
+  const int m = other.dofs.n_dofs();
+  const Eigen::VectorXd ub = u.segment(other.dof_offset, m);
+  f.other = Eigen::VectorXd::Zero(m);
+  pair.boundary->set_displacement(ua);
+  pair.other_boundary->set_displacement(ub);
+  contact::two_body_contact(pair.points, ua, *pair.other_boundary, pair.penalty, 0.5, f.body, f.other,
+                            t, body.dof_offset, other.dof_offset, &f.states);
+  contact::two_body_contact(pair.other_points, ub, *pair.boundary, pair.penalty, 0.5, f.other, f.body,
+                            t, other.dof_offset, body.dof_offset, &f.other_states);
+  return f;
 }
 
 /// The contact system over the unknowns of the elastic operator: with static condensation only
@@ -93,29 +140,10 @@ private:
     if (states) states->resize(pairs_.size());
     for (size_t k = 0; k < pairs_.size(); ++k) {
       const ContactPair& pair = pairs_[k];
-      const Body& body = d_.bodies[pair.body];
-      const int n = body.dofs.n_dofs();
-      Eigen::VectorXd fc = Eigen::VectorXd::Zero(n);
-      if (pair.other < 0) {
-        contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty,
-                                 u.segment(body.dof_offset, n), fc, t, body.dof_offset,
-                                 states ? &(*states)[k] : nullptr, frozen ? &(*frozen)[k] : nullptr);
-      } else {
-        const Body& other = d_.bodies[pair.other];
-        const int m = other.dofs.n_dofs();
-        const Eigen::VectorXd ua = u.segment(body.dof_offset, n), ub = u.segment(other.dof_offset, m);
-        Eigen::VectorXd fo = Eigen::VectorXd::Zero(m);
-        pair.boundary->set_displacement(ua);
-        pair.other_boundary->set_displacement(ub);
-        // both sides, each with half weight: no master/slave preference (seed §3.6)
-        contact::two_body_contact(pair.points, ua, *pair.other_boundary, pair.penalty, 0.5, fc, fo,
-                                  t, body.dof_offset, other.dof_offset,
-                                  states ? &(*states)[k] : nullptr);
-        contact::two_body_contact(pair.other_points, ub, *pair.boundary, pair.penalty, 0.5, fo, fc,
-                                  t, other.dof_offset, body.dof_offset, nullptr);
-        R.segment(other.dof_offset, m) -= fo;
-      }
-      R.segment(body.dof_offset, n) -= fc;
+      PairForces f = pair_forces(d_, pair, u, t, frozen ? &(*frozen)[k] : nullptr);
+      R.segment(d_.bodies[pair.body].dof_offset, f.body.size()) -= f.body;
+      if (pair.other >= 0) R.segment(d_.bodies[pair.other].dof_offset, f.other.size()) -= f.other;
+      if (states) (*states)[k] = std::move(f.states);
     }
     r = op_.restrict(d_, R);
   }
@@ -140,14 +168,11 @@ private:
     }
     solve::SparseMatrix K(size(), size());
     K.setFromTriplets(t.begin(), t.end());
-    // Central differences are symmetric up to round-off; the symmetric solvers read one
-    // triangle, so take the symmetric part (the seed's "symmetric equation system").
+    // Central differences are symmetric up to round-off and up to columns straddling a contact
+    // switch; the seed solves the symmetric part ("symmetric equation system"), and so do we.
     return solve::SparseMatrix(0.5 * (K + solve::SparseMatrix(K.transpose())));
   }
 
-public:
-
-private:
   const Discretization& d_;
   const std::vector<ContactPair>& pairs_;
   ElasticOperator op_;
@@ -178,24 +203,12 @@ double gap_at(const Body& body, const ContactPair& pair, int q, int le, double t
 
 /// Root of the gap between parameters a and b of one edge by the Pegasus method (seed §4.7):
 /// the boundary point where the contact zone ends, undeformed (X) and deformed (x).
-std::pair<Vec2, Vec2> pegasus(const Body& body, const ContactPair& pair, int q, int le, double a,
-                              double b, const Eigen::VectorXd& u) {
+std::pair<Vec2, Vec2> zone_end(const Body& body, const ContactPair& pair, int q, int le, double a,
+                               double b, const Eigen::VectorXd& u) {
   Vec2 x, X;
-  double fa = gap_at(body, pair, q, le, a, u, &x, &X), fb = gap_at(body, pair, q, le, b, u, &x, &X);
-  for (int it = 0; it < 100 && std::abs(b - a) > 1e-15; ++it) {
-    const double c = b - fb * (b - a) / (fb - fa);
-    const double fc = gap_at(body, pair, q, le, c, u, &x, &X);
-    if (fc == 0) break;
-    if (fc * fb < 0) {
-      a = b;
-      fa = fb;
-    } else {
-      fa = fa * fb / (fb + fc);
-    }
-    b = c;
-    fb = fc;
-    if (std::abs(fc) < 1e-14 * (1 + x.norm())) break;
-  }
+  auto gap = [&](double t) { return gap_at(body, pair, q, le, t, u, &x, &X); };
+  const double fa = gap(a), fb = gap(b);
+  gap(pegasus_root(gap, a, b, fa, fb, 1e-14 * (1 + x.norm())));
   return {X, x};
 }
 
@@ -211,31 +224,9 @@ double stress_pressure(const Body& body, int q, int le, double t, const Vec2& n,
 /// ∫ traction ds of a pair at the state u, and the states of its points.
 Vec2 contact_resultant(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u,
                        std::vector<contact::PointState>& states) {
-  const Body& body = d.bodies[pair.body];
-  const int n = body.dofs.n_dofs();
-  Eigen::VectorXd fc = Eigen::VectorXd::Zero(n);
-  const Eigen::VectorXd ua = u.segment(body.dof_offset, n);
-  Vec2 r = Vec2::Zero();
-  if (pair.other < 0) {
-    contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty, ua, fc, nullptr, 0, &states);
-    for (size_t i = 0; i < pair.points.size(); ++i) r += pair.points[i].weight * states[i].traction;
-    return r;
-  }
-  // On the body: half of its own points' tractions, and the reactions of half of the other's.
-  const Body& other = d.bodies[pair.other];
-  const int m = other.dofs.n_dofs();
-  const Eigen::VectorXd ub = u.segment(other.dof_offset, m);
-  Eigen::VectorXd fo = Eigen::VectorXd::Zero(m);
-  pair.boundary->set_displacement(ua);
-  pair.other_boundary->set_displacement(ub);
-  std::vector<contact::PointState> other_states;
-  contact::two_body_contact(pair.points, ua, *pair.other_boundary, pair.penalty, 0.5, fc, fo,
-                            nullptr, 0, 0, &states);
-  contact::two_body_contact(pair.other_points, ub, *pair.boundary, pair.penalty, 0.5, fo, fc,
-                            nullptr, 0, 0, &other_states);
-  for (size_t i = 0; i < pair.points.size(); ++i) r += 0.5 * pair.points[i].weight * states[i].traction;
-  for (size_t i = 0; i < pair.other_points.size(); ++i)
-    r -= 0.5 * pair.other_points[i].weight * other_states[i].traction;
+  PairForces f = pair_forces(d, pair, u, nullptr);
+  const Vec2 r = f.resultant(pair);
+  states = std::move(f.states);
   return r;
 }
 
@@ -255,16 +246,15 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       const bool same_edge = p0.element == p1.element && p0.local_edge == p1.local_edge;
       std::optional<std::pair<Vec2, Vec2>> end;
       if (same_edge) {
-        end = pegasus(body, pair, p0.element, p0.local_edge, p0.t, p1.t, u);
+        end = zone_end(body, pair, p0.element, p0.local_edge, p0.t, p1.t, u);
       } else {
         // The zone ends between two edges: on the side whose end gap changes sign (a node
         // placed on Γ*, as rp does, gives a root at the edge end itself).
         for (const auto* cp : {&p0, &p1}) {
           const bool open = (cp == &p0 ? s.gap : res.states[i + 1].gap) >= 0;
           const double te = cp->t >= 0 ? 1.0 : -1.0;  // the end at the shared node
-          Vec2 x;
-          if (!end && (gap_at(body, pair, cp->element, cp->local_edge, te, u, &x) >= 0) != open)
-            end = pegasus(body, pair, cp->element, cp->local_edge, cp->t, te, u);
+          if (!end && (gap_at(body, pair, cp->element, cp->local_edge, te, u, nullptr) >= 0) != open)
+            end = zone_end(body, pair, cp->element, cp->local_edge, cp->t, te, u);
         }
       }
       if (end) {
@@ -274,7 +264,7 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
     }
   }
   for (const Vec2& g : res.gamma_star)
-    res.half_width = std::max(res.half_width, std::abs((g - pair.reference_point).dot(pair.tangent)));
+    res.half_width = std::max(res.half_width, std::abs(pair.coordinate(g)));
   return res;
 }
 
@@ -292,7 +282,7 @@ double BoundaryPressureProbe::coordinate(int k, double t) const {
   const Body& body = d_.bodies[pair_.body];
   const auto& edge = body.mesh.edge(pair_.edges[k]);
   const Vec2 X = fem::edge_geometry(body.maps[edge.quads[0]], edge.local_edge[0], t, nullptr, nullptr);
-  return (X - pair_.reference_point).dot(pair_.tangent);
+  return pair_.coordinate(X);
 }
 
 std::optional<BoundaryPressure> BoundaryPressureProbe::operator()(double s) const {
@@ -304,22 +294,8 @@ std::optional<BoundaryPressure> BoundaryPressureProbe::operator()(double s) cons
       if (std::abs(fa) <= tol) fa = 0;
       if (std::abs(fb) <= tol) fb = 0;
       if (fa * fb > 0) continue;
-      // Illinois (regula falsi with halving of the retained end): the coordinate is smooth.
-      double a = -1 + 2.0 * i / kSamples, b = -1 + 2.0 * (i + 1) / kSamples, t = a;
-      if (fb == 0) t = b;
-      for (int it = 0; it < 100 && fa != 0 && fb != 0; ++it) {
-        t = b - fb * (b - a) / (fb - fa);
-        const double ft = coordinate(static_cast<int>(k), t) - s;
-        if (std::abs(ft) <= tol || std::abs(b - a) < 1e-15) break;
-        if (ft * fb < 0) {
-          a = b;
-          fa = fb;
-        } else {
-          fa *= 0.5;
-        }
-        b = t;
-        fb = ft;
-      }
+      const double t = pegasus_root([&](double r) { return coordinate(static_cast<int>(k), r) - s; },
+                                    -1 + 2.0 * i / kSamples, -1 + 2.0 * (i + 1) / kSamples, fa, fb, tol);
       const auto& edge = body.mesh.edge(pair_.edges[k]);
       const int q = edge.quads[0], le = edge.local_edge[0];
       Vec2 normal;
@@ -334,17 +310,29 @@ std::optional<BoundaryPressure> BoundaryPressureProbe::operator()(double s) cons
   return std::nullopt;
 }
 
+namespace {
+
+/// The mesh edges of a body's edge sets, in order; InputError naming `key` for an unknown set.
+std::vector<int> edges_named(const Body& body, const std::vector<std::string>& names,
+                             const std::string& key) {
+  std::vector<int> edges;
+  for (const auto& name : names) {
+    auto it = body.edge_sets.find(name);
+    HPC_REQUIRE(it != body.edge_sets.end(), InputError, key, ": no edge set '", name, "' in body '",
+                body.name, "'");
+    edges.insert(edges.end(), it->second.begin(), it->second.end());
+  }
+  return edges;
+}
+
+}  // namespace
+
 std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discretization& d) {
   std::vector<ContactPair> pairs;
   for (const auto& cs : spec.contact) {
     ContactPair pair;
     const Body& body = body_named(d, cs.body, cs.where, &pair.body);
-    for (const auto& name : cs.edge_sets) {
-      auto it = body.edge_sets.find(name);
-      HPC_REQUIRE(it != body.edge_sets.end(), InputError, cs.where.str(), ".edges: no edge set '",
-                  name, "' in body '", body.name, "'");
-      pair.edges.insert(pair.edges.end(), it->second.begin(), it->second.end());
-    }
+    pair.edges = edges_named(body, cs.edge_sets, cs.where.str() + ".edges");
     HPC_REQUIRE(cs.penalty > 0, InputError, cs.where.str(), ".penalty: must be > 0 (got ",
                 cs.penalty, ")");
     pair.penalty = cs.penalty;
@@ -363,13 +351,7 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       const Body& other = body_named(d, o.body, cs.where, &pair.other);
       HPC_REQUIRE(pair.other != pair.body, InputError, cs.where.str(),
                   ".obstacle.body: must be another body than the contact's own");
-      std::vector<int> other_edges;
-      for (const auto& name : o.edge_sets) {
-        auto it = other.edge_sets.find(name);
-        HPC_REQUIRE(it != other.edge_sets.end(), InputError, cs.where.str(),
-                    ".obstacle.edges: no edge set '", name, "' in body '", other.name, "'");
-        other_edges.insert(other_edges.end(), it->second.begin(), it->second.end());
-      }
+      const auto other_edges = edges_named(other, o.edge_sets, cs.where.str() + ".obstacle.edges");
       pair.boundary = std::make_shared<contact::DeformableBoundary>(body.mesh, body.dofs, body.maps,
                                                                     pair.edges);
       pair.other_boundary = std::make_shared<contact::DeformableBoundary>(

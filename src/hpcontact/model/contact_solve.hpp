@@ -32,6 +32,8 @@ struct ContactPair {
   double penalty = 0;
   Vec2 reference_point = Vec2::Zero();  ///< obstacle point used for the half width
   Vec2 tangent = Vec2(1, 0);            ///< obstacle tangent used for the half width
+  /// Coordinate of a point along the obstacle: (X − reference point)·tangent.
+  double coordinate(const Vec2& X) const { return (X - reference_point).dot(tangent); }
 };
 
 /// Contact pairs of a problem; InputError naming the key when a pair is wrong.
