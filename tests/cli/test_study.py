@@ -101,6 +101,6 @@ def test_study_file_reads_without_pyyaml(root, monkeypatch):
     with_yaml = module.load_study(path) if importlib.util.find_spec("yaml") else None
     monkeypatch.setitem(sys.modules, "yaml", None)        # `import yaml` raises ImportError
     without = module.load_study(path)
-    assert len(without["runs"]) == 9 and without["runs"][0]["seed"]["dofs"] == 710
+    assert len(without["runs"]) == 12 and without["runs"][0]["seed"]["dofs"] == 710
     if with_yaml is not None:
         assert with_yaml == without

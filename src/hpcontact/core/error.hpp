@@ -32,6 +32,13 @@ public:
   using Error::Error;
 };
 
+/// An adaptive step (rp relocation, hp refinement) that cannot be carried out: Γ* not found, a
+/// node that cannot move along its curve, a mesh change that would invert an element.
+class AdaptError : public Error {
+public:
+  using Error::Error;
+};
+
 /// A numerical failure that ends a computation (singular matrix, NaN in a residual).
 class NumericalError : public Error {
 public:

@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "hpcontact/adapt/rp.hpp"
 #include "hpcontact/analytic/lame.hpp"
 #include "hpcontact/driver/contact_compare.hpp"
 #include "hpcontact/core/error.hpp"
@@ -55,14 +56,191 @@ void prepare_output_folder(const std::string& out_dir) {
   HPC_REQUIRE(!ec, IoError, out_dir, ": cannot remove the previous summary.json: ", ec.message());
 }
 
+namespace {
+
+/// A solved state before post-processing: the discretisation, the dofs and the contact state.
+struct SolvedState {
+  const model::Discretization* d = nullptr;
+  Eigen::VectorXd u;
+  std::vector<model::ContactResult> contact;
+  std::vector<model::ContactPair> pairs;
+};
+
+/// The contact figures of a state for summary.json; with a compare section also the pressure
+/// errors, and the pressure curve into csv_path if not empty.
+nlohmann::json contact_json(const model::ProblemSpec& spec, const SolvedState& st,
+                            const std::string& csv_path) {
+  nlohmann::json cj;
+  const auto& c = st.contact.front();
+  cj["half_width"] = c.half_width;
+  cj["gamma_star"] = nlohmann::json::array();
+  for (const auto& g : c.gamma_star) cj["gamma_star"].push_back({g.x(), g.y()});
+  cj["gamma_star_deformed"] = nlohmann::json::array();
+  for (const auto& g : c.gamma_star_deformed) cj["gamma_star_deformed"].push_back({g.x(), g.y()});
+  cj["p_max"] = c.p_max;
+  cj["resultant"] = {c.resultant.x(), c.resultant.y()};
+  cj["max_penetration"] = c.max_penetration;
+  if (const auto& cmp = spec.contact.front().compare) {
+    std::vector<double> zone_ends;
+    for (const auto& g : c.gamma_star) zone_ends.push_back(st.pairs.front().coordinate(g));
+    cj.update(compare_pressure(spec, *cmp, *st.d, st.pairs.front(), st.u, zone_ends, csv_path));
+  }
+  return cj;
+}
+
+/// Fills the summary of a solved state and writes its files (except summary.json) into out_dir
+/// (nothing if empty).
+void post_process(const model::ProblemSpec& spec, const SolvedState& st, const std::string& out_dir,
+                  const RunOptions& options, post::Summary& s) {
+  namespace fs = std::filesystem;
+  auto say = [&](const std::string& line) {
+    if (options.progress) options.progress(line);
+  };
+  const auto& disc = *st.d;
+  s.case_name = spec.case_name;
+  if (s.method.empty()) s.method = disc.method;
+  s.dofs = disc.n_free;
+  s.strain_energy = post::strain_energy(disc, st.u);
+  s.error = exact_error(spec, disc, st.u, s.strain_energy);
+  if (!st.contact.empty())
+    s.extra["contact"] =
+        contact_json(spec, st, out_dir.empty() ? "" : (fs::path(out_dir) / "pressure.csv").string());
+  if (out_dir.empty()) return;
+  const fs::path out(out_dir);
+  if (!options.effective_input.empty())
+    post::write_text_file((out / "input.yaml").string(), options.effective_input);
+  if (!st.contact.empty()) {
+    // The interface curve: one row per contact Gauss point.
+    std::ostringstream csv;
+    csv << std::setprecision(12) << "pair,X,Y,x,y,gap,pressure,pressure_from_stress\n";
+    for (size_t k = 0; k < st.contact.size(); ++k)
+      for (size_t i = 0; i < st.contact[k].states.size(); ++i) {
+        const auto& p = st.contact[k].states[i];
+        const auto& X = st.pairs[k].points[i].X;
+        csv << k << ',' << X.x() << ',' << X.y() << ',' << p.x.x() << ',' << p.x.y() << ','
+            << p.gap << ',' << p.pressure << ',' << st.contact[k].stress_pressure[i] << '\n';
+      }
+    post::write_text_file((out / "contact.csv").string(), csv.str());
+  }
+  if (spec.output.vtu) {
+    post::write_vtu((out / "solution.vtu").string(), disc, st.u, spec.output.vtu_subdivisions);
+    say("wrote " + (out / "solution.vtu").string());
+  }
+}
+
+/// The nodes of the final mesh as a problem-file fragment (the relocated mesh, to rerun it).
+std::string nodes_yaml(const model::ProblemSpec& spec) {
+  std::ostringstream os;
+  os << std::setprecision(17);
+  os << "# Node coordinates of the final rp mesh, body by body (replace bodies[i].nodes).\n";
+  for (const auto& b : spec.bodies) {
+    os << b.name << ":\n";
+    for (size_t i = 0; i < b.nodes.size(); ++i)
+      os << "  " << b.node_ids[i] << ": [" << b.nodes[i][0] << ", " << b.nodes[i][1] << "]\n";
+  }
+  return os.str();
+}
+
+nlohmann::json rp_iteration_json(const adapt::RpIteration& it) {
+  nlohmann::json j;
+  j["iteration"] = it.iteration;
+  j["dofs"] = it.dofs;
+  j["strain_energy"] = it.strain_energy;
+  j["newton_iterations"] = it.newton_iterations;
+  j["gamma_star"] = nlohmann::json::array();
+  for (const auto& g : it.gamma_star) j["gamma_star"].push_back({g.x(), g.y()});
+  j["nodes"] = nlohmann::json::array();
+  for (const auto& n : it.nodes)
+    j["nodes"].push_back({{"body", n.body}, {"node", n.node_id},
+                          {"position", {n.position.x(), n.position.y()}},
+                          {"gamma_star", {n.gamma_star.x(), n.gamma_star.y()}}});
+  j["zone_ends_found"] = it.zone_ends_found;
+  j["distance"] = it.distance;
+  j["solve_time_s"] = it.seconds;
+  return j;
+}
+
+}  // namespace
+
 RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options) {
   using Clock = std::chrono::steady_clock;
+  namespace fs = std::filesystem;
   const auto t0 = Clock::now();
   auto say = [&](const std::string& s) {
     if (options.progress) options.progress(s);
   };
 
   if (!options.out_dir.empty()) prepare_output_folder(options.out_dir);
+  RunResult result{{}, {}, {}};
+  post::Summary& s = result.summary;
+  auto write_summary = [&](const std::string& out_dir) {
+    s.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (out_dir.empty()) return;
+    post::write_summary((fs::path(out_dir) / "summary.json").string(), s);
+    say("wrote " + (fs::path(out_dir) / "summary.json").string());
+  };
+
+  if (spec.adapt.method == model::AdaptMethod::rp) {
+    // rp: every iteration's pressure curve and errors are kept; the final mesh is the result.
+    const std::string iter_dir =
+        options.out_dir.empty() ? "" : (fs::path(options.out_dir) / "rp").string();
+    if (!iter_dir.empty()) fs::create_directories(iter_dir);
+    nlohmann::json history = nlohmann::json::array();
+    auto observe = [&](const adapt::RpIteration& it, const adapt::Solved& solved) {
+      nlohmann::json j = rp_iteration_json(it);
+      const auto& sol = solved.solution;
+      if (spec.contact.front().compare) {
+        const std::string csv = iter_dir.empty() ? ""
+                                                 : (fs::path(iter_dir) / ("pressure-" +
+                                                                           std::to_string(it.iteration) +
+                                                                           ".csv")).string();
+        const nlohmann::json cj =
+            contact_json(solved.spec, {&solved.discretization, sol.u, sol.contact, sol.pairs}, csv);
+        for (const char* key : {"half_width", "e_L2_hertz_percent", "e_L2_shtayerman_percent",
+                                "e_seed_hertz_percent", "e_seed_shtayerman_percent",
+                                "e_L2_reference_percent"})
+          if (cj.contains(key)) j[key] = cj[key];
+      }
+      history.push_back(j);
+    };
+    adapt::RpOptions ro;
+    ro.tolerance = spec.adapt.tolerance;
+    ro.max_iterations = spec.adapt.max_iterations;
+    ro.secant = spec.adapt.secant;
+    const adapt::RpOutcome rp = adapt::relocate_nodes(spec, ro, options.progress, observe);
+    HPC_REQUIRE(rp.last, AdaptError, rp.message);
+    const adapt::Solved& last = *rp.last;
+    s.method = "rp";
+    s.newton_iterations = last.solution.newton_iterations;
+    s.load_steps = last.solution.load_steps;
+    s.extra["load_factor"] = last.solution.load_factor;
+    s.extra["adapt"] = {{"method", "rp"},
+                        {"iterations", static_cast<int>(rp.history.size()) - 1},
+                        {"converged", rp.converged},
+                        {"tolerance", spec.adapt.tolerance},
+                        {"update", spec.adapt.secant ? "secant" : "relocate"},
+                        {"history", history}};
+    // A failed loop keeps its last good result apart, so it cannot pass for the run's result.
+    const std::string out_dir = options.out_dir.empty() ? ""
+                                : rp.converged ? options.out_dir
+                                               : (fs::path(options.out_dir) / "last-good").string();
+    if (!out_dir.empty()) fs::create_directories(out_dir);
+    SolvedState st{&last.discretization, last.solution.u, last.solution.contact, last.solution.pairs};
+    post_process(last.spec, st, out_dir, options, s);
+    if (!out_dir.empty()) post::write_text_file((fs::path(out_dir) / "mesh-nodes.yaml").string(),
+                                                nodes_yaml(last.spec));
+    s.converged = rp.converged;
+    s.extra["adapt"]["message"] = rp.message;
+    write_summary(out_dir);
+    HPC_REQUIRE(rp.converged, AdaptError, rp.message,
+                out_dir.empty() ? std::string()
+                                : "; the last good result (iteration " +
+                                      std::to_string(rp.history.size() - 1) + ") is in " + out_dir);
+    result.discretization = last.discretization;
+    result.u = last.solution.u;
+    return result;
+  }
+
   model::Discretization d = model::discretize(spec);
   {
     std::ostringstream os;
@@ -72,11 +250,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
        << d.n_free << " free dofs (" << d.method << "-version)";
     say(os.str());
   }
-
-  RunResult result{{}, {}, {}};
-  post::Summary& s = result.summary;
-  std::vector<model::ContactResult> contact;
-  std::vector<model::ContactPair> pairs;
+  SolvedState st;
   if (spec.contact.empty()) {
     model::LinearSolveOptions lo;
     lo.condense = spec.discretization.condense;
@@ -86,7 +260,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     os << "solved: system of " << sol.n_system << " unknowns, assembly " << sol.assembly_seconds
        << " s, factorisation and solve " << sol.solve_seconds << " s";
     say(os.str());
-    result.u = sol.u;
+    st.u = sol.u;
     s.newton_iterations = 1;
     s.load_steps = 1;
     s.extra["system_size"] = sol.n_system;
@@ -94,74 +268,21 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     s.extra["solve_time_s"] = sol.solve_seconds;
     s.extra["assembly_time_s"] = sol.assembly_seconds;
   } else {
-    const auto sol = model::solve_contact(spec, d, options.progress);
+    auto sol = model::solve_contact(spec, d, options.progress);
     HPC_REQUIRE(sol.converged, NumericalError, spec.file, ": the solver stopped: ", sol.message);
-    result.u = sol.u;
+    st.u = sol.u;
     s.newton_iterations = sol.newton_iterations;
     s.load_steps = sol.load_steps;
     s.extra["load_factor"] = sol.load_factor;
-    contact = sol.contact;
-    pairs = sol.pairs;
+    st.contact = std::move(sol.contact);
+    st.pairs = std::move(sol.pairs);
   }
   result.discretization = std::move(d);
-  const auto& disc = result.discretization;
-  s.case_name = spec.case_name;
-  s.method = disc.method;
-  s.dofs = disc.n_free;
-  s.strain_energy = post::strain_energy(disc, result.u);
+  st.d = &result.discretization;
+  post_process(spec, st, options.out_dir, options, s);
   s.converged = true;
-  s.error = exact_error(spec, disc, result.u, s.strain_energy);
-  if (!contact.empty()) {
-    nlohmann::json cj;
-    const auto& c = contact.front();
-    cj["half_width"] = c.half_width;
-    cj["gamma_star"] = nlohmann::json::array();
-    for (const auto& g : c.gamma_star) cj["gamma_star"].push_back({g.x(), g.y()});
-    cj["gamma_star_deformed"] = nlohmann::json::array();
-    for (const auto& g : c.gamma_star_deformed) cj["gamma_star_deformed"].push_back({g.x(), g.y()});
-    cj["p_max"] = c.p_max;
-    cj["resultant"] = {c.resultant.x(), c.resultant.y()};
-    cj["max_penetration"] = c.max_penetration;
-    if (const auto& cmp = spec.contact.front().compare) {
-      namespace fs = std::filesystem;
-      const std::string csv =
-          options.out_dir.empty() ? "" : (fs::path(options.out_dir) / "pressure.csv").string();
-      std::vector<double> zone_ends;
-      for (const auto& g : c.gamma_star)
-        zone_ends.push_back(pairs.front().coordinate(g));
-      cj.update(compare_pressure(spec, *cmp, disc, pairs.front(), result.u, zone_ends, csv));
-    }
-    s.extra["contact"] = cj;
-  }
-
-  if (!options.out_dir.empty()) {
-    namespace fs = std::filesystem;
-    const fs::path out(options.out_dir);
-    if (!options.effective_input.empty())
-      post::write_text_file((out / "input.yaml").string(), options.effective_input);
-    if (!contact.empty()) {
-      // The interface curve: one row per contact Gauss point.
-      std::ostringstream csv;
-      csv << std::setprecision(12) << "pair,X,Y,x,y,gap,pressure,pressure_from_stress\n";
-      for (size_t k = 0; k < contact.size(); ++k)
-        for (size_t i = 0; i < contact[k].states.size(); ++i) {
-          const auto& st = contact[k].states[i];
-          const auto& X = pairs[k].points[i].X;
-          csv << k << ',' << X.x() << ',' << X.y() << ',' << st.x.x() << ',' << st.x.y() << ','
-              << st.gap << ',' << st.pressure << ',' << contact[k].stress_pressure[i] << '\n';
-        }
-      post::write_text_file((out / "contact.csv").string(), csv.str());
-    }
-    if (spec.output.vtu) {
-      post::write_vtu((out / "solution.vtu").string(), disc, result.u, spec.output.vtu_subdivisions);
-      say("wrote " + (out / "solution.vtu").string());
-    }
-    s.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
-    post::write_summary((out / "summary.json").string(), s);
-    say("wrote " + (out / "summary.json").string());
-  } else {
-    s.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
-  }
+  result.u = st.u;
+  write_summary(options.out_dir);
   return result;
 }
 

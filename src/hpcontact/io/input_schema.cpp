@@ -246,6 +246,25 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "exact.center", .type = T::point, .default_yaml = "[0, 0]", .unit = "length",
        .doc = "Centre of the cylinder, [x, y]."},
 
+      {.path = "adapt", .type = T::section,
+       .doc = "Adaptive changes of the mesh at the ends of the contact zone (Γ*); absent: none."},
+      {.path = "adapt.method", .type = T::choice, .required = true,
+       .doc = "rp: move the boundary node nearest to each Γ* onto it along the exact boundary "
+              "(interior neighbours follow if an element would invert), solve again, until node "
+              "and Γ* coincide (seed §4.8); none: no adaptivity.",
+       .choices = {"rp", "none"}},
+      {.path = "adapt.tolerance", .type = T::number, .default_yaml = "1e-10",
+       .doc = "rp: stop when every moved node is within this fraction of its body's size "
+              "(bounding-box diagonal) of its Γ*.",
+       .lower = greater_than(0)},
+      {.path = "adapt.max_iterations", .type = T::integer, .default_yaml = "20",
+       .doc = "rp: relocations after the first solve; not reaching the tolerance is a failure.",
+       .lower = at_least(1)},
+      {.path = "adapt.update", .type = T::choice, .default_yaml = "secant",
+       .doc = "rp: secant: secant steps on Γ*(node) - node along the boundary (fewer solves); "
+              "relocate: put the node onto the last Γ* (the seed's iteration).",
+       .choices = {"secant", "relocate"}},
+
       {.path = "output", .type = T::section, .default_yaml = "{}",
        .doc = "What is written next to the results."},
       {.path = "output.vtu", .type = T::boolean, .default_yaml = "true",

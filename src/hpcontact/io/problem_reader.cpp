@@ -75,6 +75,7 @@ class SpecBuilder {
     spec.solver = solver(root["solver"]);
     if (root["contact"]) spec.contact = contact(root["contact"], "contact", spec.bodies);
     if (root["exact"]) spec.exact = exact(root["exact"]);
+    if (root["adapt"]) spec.adapt = adapt(root["adapt"], spec);
     spec.output = output(root["output"]);
     return spec;
   }
@@ -330,6 +331,19 @@ class SpecBuilder {
     d.condense = boolean(node["condense"]);
     d.where = source_.where(node, "discretization");
     return d;
+  }
+
+  AdaptSpec adapt(const YAML::Node& node, const ProblemSpec& spec) {
+    AdaptSpec a;
+    a.where = source_.where(node, "adapt");
+    a.method = node["method"].Scalar() == "rp" ? AdaptMethod::rp : AdaptMethod::none;
+    a.tolerance = number(node["tolerance"]);
+    a.max_iterations = integer(node["max_iterations"]);
+    a.secant = node["update"].Scalar() == "secant";
+    if (a.method == AdaptMethod::rp && spec.contact.empty())
+      source_.fail(node["method"], "adapt.method",
+                   "rp moves nodes onto the ends of contact zones, but the problem has no contact");
+    return a;
   }
 
   SolverSpec solver(const YAML::Node& node) {

@@ -263,6 +263,10 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       }
     }
   }
+  const int n_ends = static_cast<int>(res.gamma_star.size());
+  if (n_ends > 0 && res.states.front().gap >= 0) res.outer_ends.push_back(0);
+  if (n_ends > 0 && res.states.back().gap >= 0 && (res.outer_ends.empty() || n_ends > 1))
+    res.outer_ends.push_back(n_ends - 1);
   for (const Vec2& g : res.gamma_star)
     res.half_width = std::max(res.half_width, std::abs(pair.coordinate(g)));
   return res;

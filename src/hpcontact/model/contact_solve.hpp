@@ -51,6 +51,11 @@ struct ContactResult {
   /// points a node is moved to (rp) and where the closed forms of the linear theory put them.
   std::vector<Vec2> gamma_star;
   std::vector<Vec2> gamma_star_deformed;  ///< the same points after deformation
+  /// Indices into gamma_star of the outer ends of the active region along the contact boundary
+  /// (its first and last sign change, where the boundary's own ends are open): the ends rp moves
+  /// nodes to. Sign changes between them are islands of opening inside the contact zone, which
+  /// the penalty traction's oscillation produces on coarse discretisations.
+  std::vector<int> outer_ends;
   double half_width = 0;  ///< largest |(Γ* - reference point)·tangent|, Γ* undeformed
 };
 

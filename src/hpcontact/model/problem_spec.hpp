@@ -189,6 +189,17 @@ struct OutputSpec {
   SourceRef where;
 };
 
+enum class AdaptMethod { none, rp };
+
+/// Adaptive mesh changes around the ends of the contact zone (seed §4.7–4.8).
+struct AdaptSpec {
+  AdaptMethod method = AdaptMethod::none;
+  double tolerance = 1e-10;  ///< rp: stop when |node − Γ*| <= tolerance · body size
+  int max_iterations = 20;   ///< rp: relocations after the first solve
+  bool secant = true;        ///< rp: secant steps (false: the seed's plain move onto Γ*)
+  SourceRef where;
+};
+
 struct ProblemSpec {
   std::string file;  ///< the problem file, for messages
   std::string case_name;
@@ -198,6 +209,7 @@ struct ProblemSpec {
   SolverSpec solver;
   std::vector<ContactPairSpec> contact;
   ExactSpec exact;
+  AdaptSpec adapt;
   OutputSpec output;
 };
 

@@ -1,0 +1,180 @@
+// The rp loop: solve -> Γ* -> move nodes (secant-accelerated) -> solve, until they coincide.
+#include "hpcontact/adapt/rp.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "hpcontact/adapt/boundary_track.hpp"
+#include "hpcontact/core/error.hpp"
+#include "hpcontact/post/fields.hpp"
+
+namespace hpcontact::adapt {
+
+SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progress) {
+  auto s = std::make_shared<Solved>();
+  s->spec = spec;
+  s->discretization = model::discretize(s->spec);
+  s->solution = model::solve_contact(s->spec, s->discretization, progress);
+  HPC_REQUIRE(s->solution.converged, NumericalError, spec.file, ": the solver stopped: ",
+              s->solution.message);
+  return s;
+}
+
+namespace {
+
+/// A zone end on the undeformed boundary of a body.
+struct ZoneEnd {
+  int body;
+  Vec2 X;
+};
+
+std::vector<ZoneEnd> zone_ends(const Solved& s) {
+  std::vector<ZoneEnd> ends;
+  for (size_t k = 0; k < s.solution.contact.size(); ++k)
+    for (int i : s.solution.contact[k].outer_ends)
+      ends.push_back({s.solution.pairs[k].body, s.solution.contact[k].gamma_star[i]});
+  return ends;
+}
+
+/// The movable boundary node of the pair's contact edges nearest to each zone end.
+std::vector<BoundaryTrack> assign_nodes(const Solved& s, const std::vector<ZoneEnd>& ends) {
+  std::vector<BoundaryTrack> tracks;
+  for (const ZoneEnd& end : ends) {
+    const model::Body* body = &s.discretization.bodies[end.body];
+    double best = std::numeric_limits<double>::infinity();
+    std::optional<BoundaryTrack> choice;
+    std::string reasons;
+    for (size_t k = 0; k < s.solution.pairs.size(); ++k) {
+      if (s.solution.pairs[k].body != end.body) continue;
+      for (int e : s.solution.pairs[k].edges)
+        for (int v : {body->mesh.edge(e).v0, body->mesh.edge(e).v1}) {
+          const double dist = (body->mesh.node(v) - end.X).norm();
+          if (dist >= best) continue;
+          try {
+            choice.emplace(s.spec, end.body, body->mesh.node_id(v));
+            best = dist;
+          } catch (const AdaptError& err) {
+            reasons += std::string("\n  ") + err.what();
+          }
+        }
+    }
+    HPC_REQUIRE(choice, AdaptError, "rp: no boundary node of body '", body->name,
+                "' can move onto the zone end at (", end.X.x(), ", ", end.X.y(), "):", reasons);
+    for (const auto& t : tracks)
+      HPC_REQUIRE(t.body() != choice->body() || t.node_id() != choice->node_id(), AdaptError,
+                  "rp: two zone ends are nearest to the same node ", t.node_id(), " of body '",
+                  body->name, "'; the mesh needs a node for each end");
+    tracks.push_back(*choice);
+  }
+  return tracks;
+}
+
+Vec2 node_position(const model::ProblemSpec& spec, int body, int id) {
+  const auto& b = spec.bodies[body];
+  for (size_t i = 0; i < b.node_ids.size(); ++i)
+    if (b.node_ids[i] == id) return Vec2(b.nodes[i][0], b.nodes[i][1]);
+  HPC_ASSERT(false, "node ", id);
+  return Vec2::Zero();
+}
+
+}  // namespace
+
+RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& options,
+                         const model::ProgressFn& progress, const IterationObserver& observe) {
+  using Clock = std::chrono::steady_clock;
+  auto say = [&](const std::string& s) {
+    if (progress) progress(s);
+  };
+  RpOutcome out;
+  model::ProblemSpec current = spec;
+  std::vector<std::pair<int, int>> moved;  // (body, node id) per zone end, fixed after the first solve
+  try {
+    for (int it = 0;; ++it) {
+      const auto t0 = Clock::now();
+      SolvedPtr s = solve(current, progress);
+      RpIteration rec;
+      rec.iteration = it;
+      rec.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+      rec.dofs = s->discretization.n_free;
+      rec.strain_energy = post::strain_energy(s->discretization, s->solution.u);
+      rec.newton_iterations = s->solution.newton_iterations;
+      const auto ends = zone_ends(*s);
+      for (const auto& e : ends) rec.gamma_star.push_back(e.X);
+      for (const auto& c : s->solution.contact) rec.zone_ends_found += static_cast<int>(c.gamma_star.size());
+      HPC_REQUIRE(!ends.empty(), AdaptError, spec.file, ": rp: no end of a contact zone found ",
+                  "(no contact, or every contact point is closed); there is no Γ* to move a node to");
+      if (moved.empty()) {
+        for (const auto& t : assign_nodes(*s, ends)) moved.emplace_back(t.body(), t.node_id());
+      }
+      HPC_REQUIRE(ends.size() == moved.size(), AdaptError, spec.file, ": rp: the number of zone ",
+                  "ends changed from ", moved.size(), " to ", ends.size(), " in iteration ", it);
+      // Each node follows the zone end of its body nearest to it.
+      std::vector<Vec2> target;
+      for (const auto& [body, id] : moved) {
+        const Vec2 X = node_position(current, body, id);
+        const ZoneEnd* nearest = nullptr;
+        for (const auto& e : ends)
+          if (e.body == body && (!nearest || (e.X - X).norm() < (nearest->X - X).norm()))
+            nearest = &e;
+        target.push_back(nearest->X);
+        const double size = body_size(current.bodies[body]);
+        rec.distance = std::max(rec.distance, (nearest->X - X).norm() / size);
+        rec.nodes.push_back({body, id, X, nearest->X});
+      }
+      {
+        std::ostringstream os;
+        os.precision(10);
+        os << "rp iteration " << it << ":";
+        for (const auto& n : rec.nodes)
+          os << " node " << n.node_id << " at (" << n.position.x() << ", " << n.position.y()
+             << "), zone end at (" << n.gamma_star.x() << ", " << n.gamma_star.y() << ");";
+        os.precision(3);
+        os << " distance " << rec.distance << " of the body size";
+        say(os.str());
+      }
+      out.history.push_back(rec);
+      out.last = s;
+      if (observe) observe(rec, *s);
+      if (rec.distance <= options.tolerance) {
+        out.converged = true;
+        return out;
+      }
+      if (it >= options.max_iterations) {
+        std::ostringstream os;
+        os << spec.file << ": rp: the nodes did not reach the zone ends in "
+           << options.max_iterations << " relocations (distance " << rec.distance
+           << " of the body size, tolerance " << options.tolerance
+           << "); raise adapt.max_iterations or adapt.tolerance";
+        out.message = os.str();
+        return out;
+      }
+      // Move each node: secant step on r(s) = Γ*(s) − s along its track, or onto Γ*.
+      model::ProblemSpec next = current;
+      for (size_t k = 0; k < moved.size(); ++k) {
+        const BoundaryTrack track(next, moved[k].first, moved[k].second);
+        const double phi = track.node(), psi = track.parameter(target[k]);
+        double s_new = psi;
+        if (options.secant && out.history.size() >= 2) {
+          const auto& prev = out.history[out.history.size() - 2].nodes[k];
+          const double phi0 = track.parameter(prev.position), psi0 = track.parameter(prev.gamma_star);
+          const double r = psi - phi, r0 = psi0 - phi0;
+          if (std::abs(r - r0) > 1e-3 * std::abs(r) && std::abs(phi - phi0) > 0) {
+            const double secant = phi - r * (phi - phi0) / (r - r0);
+            const double span = track.upper() - track.lower();
+            if (secant > track.lower() + 0.01 * span && secant < track.upper() - 0.01 * span)
+              s_new = secant;
+          }
+        }
+        next = with_node_moved(next, track, s_new);
+      }
+      current = std::move(next);
+    }
+  } catch (const Error& e) {
+    out.message = e.what();
+  }
+  return out;
+}
+
+}  // namespace hpcontact::adapt

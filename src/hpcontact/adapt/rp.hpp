@@ -1,0 +1,72 @@
+// The rp-version (seed §4.8, Fig. 4.14): solve, locate Γ*, move the nearest boundary node onto
+// it along the exact boundary, solve again, until node and Γ* coincide.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "hpcontact/geometry/vec2.hpp"
+#include "hpcontact/model/contact_solve.hpp"
+#include "hpcontact/model/discretization.hpp"
+#include "hpcontact/model/problem_spec.hpp"
+
+namespace hpcontact::adapt {
+
+/// One solved discretisation; heap-held because the contact pairs refer into its bodies.
+struct Solved {
+  model::ProblemSpec spec;
+  model::Discretization discretization;
+  model::NonlinearSolution solution;
+};
+using SolvedPtr = std::shared_ptr<const Solved>;
+
+/// Discretises and solves a contact problem; NumericalError when the solver does not converge.
+SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progress = {});
+
+/// A node relocated onto a zone end.
+struct RelocatedNode {
+  int body = 0;
+  int node_id = 0;
+  Vec2 position = Vec2::Zero();    ///< where the node was in this iteration's solve
+  Vec2 gamma_star = Vec2::Zero();  ///< the zone end that solve found
+};
+
+struct RpIteration {
+  int iteration = 0;  ///< 0: the starting mesh
+  int dofs = 0;
+  double strain_energy = 0;
+  int newton_iterations = 0;
+  std::vector<RelocatedNode> nodes;
+  std::vector<Vec2> gamma_star;  ///< the outer zone ends (undeformed) the nodes follow, pair by pair
+  int zone_ends_found = 0;       ///< all sign changes of the gap, islands of opening included
+  double distance = 0;  ///< max |Γ* − node| / body size
+  double seconds = 0;   ///< this iteration's solve
+};
+
+struct RpOptions {
+  double tolerance = 1e-10;  ///< stop when distance <= tolerance
+  int max_iterations = 20;   ///< relocations after the first solve
+  bool secant = true;        ///< secant steps on Γ*(node) − node; false: move onto the last Γ*
+};
+
+/// Called after every solve with its record and result (for post-processing per iteration).
+using IterationObserver = std::function<void(const RpIteration&, const Solved&)>;
+
+struct RpOutcome {
+  SolvedPtr last;  ///< the last successful solve (null if even the first failed)
+  std::vector<RpIteration> history;
+  bool converged = false;
+  std::string message;  ///< why the loop stopped, when not converged
+};
+
+/// Runs the rp loop on a contact problem. Several zone ends are served at once, each by its own
+/// node (nearest movable boundary node of the contact edges at the start, kept thereafter).
+/// A failure (no Γ*, a node that cannot move, a solve that fails) ends the loop with the last
+/// good solve kept and the reason in `message`; nothing throws but programming errors.
+RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& options,
+                         const model::ProgressFn& progress = {},
+                         const IterationObserver& observe = {});
+
+}  // namespace hpcontact::adapt
