@@ -50,7 +50,7 @@ def test_rp5_reaches_gamma_star(rp5):
     assert math.hypot(node[0], node[1] - 10) == pytest.approx(10, abs=1e-12)
     assert s["contact"]["resultant"][1] == pytest.approx(35000, rel=1e-6)
     # Files: the final mesh's nodes and one pressure curve per iteration.
-    assert (out / "mesh-nodes.yaml").exists()
+    assert (out / "mesh.yaml").exists()
     for h in hist:
         assert (out / "rp" / f"pressure-{h['iteration']}.csv").exists()
 

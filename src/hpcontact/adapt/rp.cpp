@@ -12,64 +12,7 @@
 
 namespace hpcontact::adapt {
 
-SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progress) {
-  auto s = std::make_shared<Solved>();
-  s->spec = spec;
-  s->discretization = model::discretize(s->spec);
-  s->solution = model::solve_contact(s->spec, s->discretization, progress);
-  HPC_REQUIRE(s->solution.converged, NumericalError, spec.file, ": the solver stopped: ",
-              s->solution.message);
-  return s;
-}
-
 namespace {
-
-/// A zone end on the undeformed boundary of a body.
-struct ZoneEnd {
-  int body;
-  Vec2 X;
-};
-
-std::vector<ZoneEnd> zone_ends(const Solved& s) {
-  std::vector<ZoneEnd> ends;
-  for (size_t k = 0; k < s.solution.contact.size(); ++k)
-    for (int i : s.solution.contact[k].outer_ends)
-      ends.push_back({s.solution.pairs[k].body, s.solution.contact[k].gamma_star[i]});
-  return ends;
-}
-
-/// The movable boundary node of the pair's contact edges nearest to each zone end.
-std::vector<BoundaryTrack> assign_nodes(const Solved& s, const std::vector<ZoneEnd>& ends) {
-  std::vector<BoundaryTrack> tracks;
-  for (const ZoneEnd& end : ends) {
-    const model::Body* body = &s.discretization.bodies[end.body];
-    double best = std::numeric_limits<double>::infinity();
-    std::optional<BoundaryTrack> choice;
-    std::string reasons;
-    for (size_t k = 0; k < s.solution.pairs.size(); ++k) {
-      if (s.solution.pairs[k].body != end.body) continue;
-      for (int e : s.solution.pairs[k].edges)
-        for (int v : {body->mesh.edge(e).v0, body->mesh.edge(e).v1}) {
-          const double dist = (body->mesh.node(v) - end.X).norm();
-          if (dist >= best) continue;
-          try {
-            choice.emplace(s.spec, end.body, body->mesh.node_id(v));
-            best = dist;
-          } catch (const AdaptError& err) {
-            reasons += std::string("\n  ") + err.what();
-          }
-        }
-    }
-    HPC_REQUIRE(choice, AdaptError, "rp: no boundary node of body '", body->name,
-                "' can move onto the zone end at (", end.X.x(), ", ", end.X.y(), "):", reasons);
-    for (const auto& t : tracks)
-      HPC_REQUIRE(t.body() != choice->body() || t.node_id() != choice->node_id(), AdaptError,
-                  "rp: two zone ends are nearest to the same node ", t.node_id(), " of body '",
-                  body->name, "'; the mesh needs a node for each end");
-    tracks.push_back(*choice);
-  }
-  return tracks;
-}
 
 Vec2 node_position(const model::ProblemSpec& spec, int body, int id) {
   const auto& b = spec.bodies[body];
@@ -100,13 +43,11 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
       rec.dofs = s->discretization.n_free;
       rec.strain_energy = post::strain_energy(s->discretization, s->solution.u);
       rec.newton_iterations = s->solution.newton_iterations;
-      const auto ends = zone_ends(*s);
+      const auto ends = outer_zone_ends(*s);
       for (const auto& e : ends) rec.gamma_star.push_back(e.X);
       for (const auto& c : s->solution.contact) rec.zone_ends_found += static_cast<int>(c.gamma_star.size());
-      HPC_REQUIRE(!ends.empty(), AdaptError, spec.file, ": rp: no end of a contact zone found ",
-                  "(no contact, or every contact point is closed); there is no Γ* to move a node to");
       if (moved.empty()) {
-        for (const auto& t : assign_nodes(*s, ends)) moved.emplace_back(t.body(), t.node_id());
+        for (const auto& t : nearest_movable_nodes(*s, ends)) moved.emplace_back(t.body(), t.node_id());
       }
       HPC_REQUIRE(ends.size() == moved.size(), AdaptError, spec.file, ": rp: the number of zone ",
                   "ends changed from ", moved.size(), " to ", ends.size(), " in iteration ", it);

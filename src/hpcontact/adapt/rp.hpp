@@ -7,23 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "hpcontact/adapt/solved.hpp"
 #include "hpcontact/geometry/vec2.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "hpcontact/model/problem_spec.hpp"
 
 namespace hpcontact::adapt {
-
-/// One solved discretisation; heap-held because the contact pairs refer into its bodies.
-struct Solved {
-  model::ProblemSpec spec;
-  model::Discretization discretization;
-  model::NonlinearSolution solution;
-};
-using SolvedPtr = std::shared_ptr<const Solved>;
-
-/// Discretises and solves a contact problem; NumericalError when the solver does not converge.
-SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progress = {});
 
 /// A node relocated onto a zone end.
 struct RelocatedNode {

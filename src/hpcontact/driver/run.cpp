@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "hpcontact/adapt/hp.hpp"
 #include "hpcontact/adapt/rp.hpp"
 #include "hpcontact/analytic/lame.hpp"
 #include "hpcontact/driver/contact_compare.hpp"
@@ -128,15 +129,47 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
   }
 }
 
-/// The nodes of the final mesh as a problem-file fragment (the relocated mesh, to rerun it).
-std::string nodes_yaml(const model::ProblemSpec& spec) {
+/// The final adapted mesh of every body as a problem-file fragment (nodes, elements, curves,
+/// edge sets, element degrees): paste it over the bodies' mesh keys to rerun that mesh.
+std::string mesh_yaml(const model::ProblemSpec& spec) {
   std::ostringstream os;
   os << std::setprecision(17);
-  os << "# Node coordinates of the final rp mesh, body by body (replace bodies[i].nodes).\n";
+  os << "# The adapted mesh, body by body: replace the keys of bodies[i] of the problem file.\n";
   for (const auto& b : spec.bodies) {
-    os << b.name << ":\n";
+    os << b.name << ":\n  nodes:\n";
     for (size_t i = 0; i < b.nodes.size(); ++i)
-      os << "  " << b.node_ids[i] << ": [" << b.nodes[i][0] << ", " << b.nodes[i][1] << "]\n";
+      os << "    " << b.node_ids[i] << ": [" << b.nodes[i][0] << ", " << b.nodes[i][1] << "]\n";
+    os << "  elements:\n";
+    for (size_t q = 0; q < b.elements.size(); ++q) {
+      const auto& e = b.elements[q];
+      os << "    " << b.element_ids[q] << ": [" << e[0] << ", " << e[1] << ", " << e[2] << ", "
+         << e[3] << "]\n";
+    }
+    if (!b.curves.empty()) os << "  curves:\n";
+    for (const auto& c : b.curves) {
+      os << "    - {nodes: [" << c.node_a << ", " << c.node_b << "], ";
+      if (c.kind == model::CurveKind::arc)
+        os << "arc: {center: [" << c.center[0] << ", " << c.center[1] << "], radius: " << c.radius
+           << (c.ccw ? std::string(", ccw: ") + (c.ccw > 0 ? "true" : "false") : "") << "}}\n";
+      else
+        os << "parametric: {x: \"" << c.x_expr << "\", y: \"" << c.y_expr << "\"}}\n";
+    }
+    if (!b.edge_sets.empty()) os << "  edge_sets:\n";
+    for (const auto& set : b.edge_sets) {
+      os << "    " << set.name << ": [";
+      for (size_t k = 0; k < set.edges.size(); ++k)
+        os << (k ? ", " : "") << "[" << set.edges[k][0] << ", " << set.edges[k][1] << "]";
+      os << "]\n";
+    }
+    if (!b.element_degrees.empty()) {
+      os << "  degrees: {";
+      bool first = true;
+      for (const auto& [id, p] : b.element_degrees) {
+        os << (first ? "" : ", ") << id << ": [" << p[0] << ", " << p[1] << "]";
+        first = false;
+      }
+      os << "}\n";
+    }
   }
   return os.str();
 }
@@ -156,6 +189,23 @@ nlohmann::json rp_iteration_json(const adapt::RpIteration& it) {
                           {"gamma_star", {n.gamma_star.x(), n.gamma_star.y()}}});
   j["zone_ends_found"] = it.zone_ends_found;
   j["distance"] = it.distance;
+  j["solve_time_s"] = it.seconds;
+  return j;
+}
+
+nlohmann::json hp_iteration_json(const adapt::HpIteration& it) {
+  nlohmann::json j;
+  j["step"] = it.step;
+  j["dofs"] = it.dofs;
+  j["elements"] = it.elements;
+  j["strain_energy"] = it.strain_energy;
+  j["newton_iterations"] = it.newton_iterations;
+  j["gamma_star"] = nlohmann::json::array();
+  for (const auto& g : it.gamma_star) j["gamma_star"].push_back({g.x(), g.y()});
+  j["centres"] = nlohmann::json::array();
+  for (const auto& c : it.centres) j["centres"].push_back({c.x(), c.y()});
+  j["recentred"] = it.recentred;
+  j["gamma_star_inside"] = it.inside;
   j["solve_time_s"] = it.seconds;
   return j;
 }
@@ -180,64 +230,98 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     say("wrote " + (fs::path(out_dir) / "summary.json").string());
   };
 
-  if (spec.adapt.method == model::AdaptMethod::rp) {
-    // rp: every iteration's pressure curve and errors are kept; the final mesh is the result.
+  if (spec.adapt.method != model::AdaptMethod::none) {
+    // rp / hp: every iteration's pressure curve and errors are kept; the final mesh is the result.
+    const bool rp = spec.adapt.method == model::AdaptMethod::rp;
+    const std::string method = rp ? "rp" : "hp";
     const std::string iter_dir =
-        options.out_dir.empty() ? "" : (fs::path(options.out_dir) / "rp").string();
+        options.out_dir.empty() ? "" : (fs::path(options.out_dir) / method).string();
     if (!iter_dir.empty()) fs::create_directories(iter_dir);
     nlohmann::json history = nlohmann::json::array();
-    auto observe = [&](const adapt::RpIteration& it, const adapt::Solved& solved) {
-      nlohmann::json j = rp_iteration_json(it);
+    // The pressure errors of one iteration into its record, its curve into iter_dir.
+    auto add_pressure = [&](nlohmann::json& j, int iteration, const adapt::Solved& solved) {
+      if (!spec.contact.front().compare) return;
       const auto& sol = solved.solution;
-      if (spec.contact.front().compare) {
-        const std::string csv = iter_dir.empty() ? ""
-                                                 : (fs::path(iter_dir) / ("pressure-" +
-                                                                           std::to_string(it.iteration) +
-                                                                           ".csv")).string();
-        const nlohmann::json cj =
-            contact_json(solved.spec, {&solved.discretization, sol.u, sol.contact, sol.pairs}, csv);
-        for (const char* key : {"half_width", "e_L2_hertz_percent", "e_L2_shtayerman_percent",
-                                "e_seed_hertz_percent", "e_seed_shtayerman_percent",
-                                "e_L2_reference_percent"})
-          if (cj.contains(key)) j[key] = cj[key];
-      }
-      history.push_back(j);
+      const std::string csv =
+          iter_dir.empty() ? ""
+                           : (fs::path(iter_dir) / ("pressure-" + std::to_string(iteration) + ".csv"))
+                                 .string();
+      const nlohmann::json cj =
+          contact_json(solved.spec, {&solved.discretization, sol.u, sol.contact, sol.pairs}, csv);
+      for (const char* key : {"half_width", "e_L2_hertz_percent", "e_L2_shtayerman_percent",
+                              "e_seed_hertz_percent", "e_seed_shtayerman_percent",
+                              "e_L2_reference_percent"})
+        if (cj.contains(key)) j[key] = cj[key];
     };
-    adapt::RpOptions ro;
-    ro.tolerance = spec.adapt.tolerance;
-    ro.max_iterations = spec.adapt.max_iterations;
-    ro.secant = spec.adapt.secant;
-    const adapt::RpOutcome rp = adapt::relocate_nodes(spec, ro, options.progress, observe);
-    HPC_REQUIRE(rp.last, AdaptError, rp.message);
-    const adapt::Solved& last = *rp.last;
-    s.method = "rp";
-    s.newton_iterations = last.solution.newton_iterations;
-    s.load_steps = last.solution.load_steps;
-    s.extra["load_factor"] = last.solution.load_factor;
-    s.extra["adapt"] = {{"method", "rp"},
-                        {"iterations", static_cast<int>(rp.history.size()) - 1},
-                        {"converged", rp.converged},
-                        {"tolerance", spec.adapt.tolerance},
-                        {"update", spec.adapt.secant ? "secant" : "relocate"},
-                        {"history", history}};
+    adapt::SolvedPtr last;
+    bool converged = false;
+    std::string message;
+    nlohmann::json aj = {{"method", method}};
+    if (rp) {
+      adapt::RpOptions ro;
+      ro.tolerance = spec.adapt.tolerance;
+      ro.max_iterations = spec.adapt.max_iterations;
+      ro.secant = spec.adapt.secant;
+      const auto outcome = adapt::relocate_nodes(
+          spec, ro, options.progress, [&](const adapt::RpIteration& it, const adapt::Solved& solved) {
+            nlohmann::json j = rp_iteration_json(it);
+            add_pressure(j, it.iteration, solved);
+            history.push_back(j);
+          });
+      last = outcome.last;
+      converged = outcome.converged;
+      message = outcome.message;
+      aj["iterations"] = static_cast<int>(outcome.history.size()) - 1;
+      aj["tolerance"] = spec.adapt.tolerance;
+      aj["update"] = spec.adapt.secant ? "secant" : "relocate";
+    } else {
+      adapt::HpOptions ho;
+      ho.factor = spec.adapt.factor;
+      ho.steps = spec.adapt.steps;
+      ho.rising_degree = spec.adapt.rising_degree;
+      ho.min_degree = spec.adapt.min_degree;
+      const auto outcome = adapt::refine_towards_zone_ends(
+          spec, ho, options.progress, [&](const adapt::HpIteration& it, const adapt::Solved& solved) {
+            nlohmann::json j = hp_iteration_json(it);
+            add_pressure(j, it.step, solved);
+            history.push_back(j);
+          });
+      last = outcome.last;
+      converged = outcome.converged;
+      message = outcome.message;
+      aj["iterations"] = static_cast<int>(outcome.history.size()) - 1;
+      aj["factor"] = spec.adapt.factor;
+      aj["steps"] = spec.adapt.steps;
+      aj["degree"] = spec.adapt.rising_degree ? "rising" : "constant";
+      if (spec.adapt.rising_degree) aj["min_degree"] = spec.adapt.min_degree;
+    }
+    HPC_REQUIRE(last, AdaptError, message);
+    s.method = method;
+    s.newton_iterations = last->solution.newton_iterations;
+    s.load_steps = last->solution.load_steps;
+    s.extra["load_factor"] = last->solution.load_factor;
+    aj["converged"] = converged;
+    aj["message"] = message;
+    aj["history"] = history;
+    s.extra["adapt"] = aj;
     // A failed loop keeps its last good result apart, so it cannot pass for the run's result.
     const std::string out_dir = options.out_dir.empty() ? ""
-                                : rp.converged ? options.out_dir
-                                               : (fs::path(options.out_dir) / "last-good").string();
+                                : converged ? options.out_dir
+                                            : (fs::path(options.out_dir) / "last-good").string();
     if (!out_dir.empty()) fs::create_directories(out_dir);
-    SolvedState st{&last.discretization, last.solution.u, last.solution.contact, last.solution.pairs};
-    post_process(last.spec, st, out_dir, options, s);
-    if (!out_dir.empty()) post::write_text_file((fs::path(out_dir) / "mesh-nodes.yaml").string(),
-                                                nodes_yaml(last.spec));
-    s.converged = rp.converged;
-    s.extra["adapt"]["message"] = rp.message;
+    SolvedState st{&last->discretization, last->solution.u, last->solution.contact,
+                   last->solution.pairs};
+    post_process(last->spec, st, out_dir, options, s);
+    if (!out_dir.empty())
+      post::write_text_file((fs::path(out_dir) / "mesh.yaml").string(), mesh_yaml(last->spec));
+    s.converged = converged;
     write_summary(out_dir);
-    HPC_REQUIRE(rp.converged, AdaptError, rp.message,
+    HPC_REQUIRE(converged, AdaptError, message,
                 out_dir.empty() ? std::string()
                                 : "; the last good result (iteration " +
-                                      std::to_string(rp.history.size() - 1) + ") is in " + out_dir);
-    result.discretization = last.discretization;
-    result.u = last.solution.u;
+                                      std::to_string(history.size() - 1) + ") is in " + out_dir);
+    result.discretization = last->discretization;
+    result.u = last->solution.u;
     return result;
   }
 

@@ -251,8 +251,11 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "adapt.method", .type = T::choice, .required = true,
        .doc = "rp: move the boundary node nearest to each Γ* onto it along the exact boundary "
               "(interior neighbours follow if an element would invert), solve again, until node "
-              "and Γ* coincide (seed §4.8); none: no adaptivity.",
-       .choices = {"rp", "none"}},
+              "and Γ* coincide (seed §4.8). hp: move that node onto Γ* once, then refine "
+              "geometrically around it, one layer per step, the degree rising by one per layer "
+              "away from Γ* (seed §4.7, Fig. 4.12-4.13); a step whose Γ* leaves the two smallest "
+              "elements is refined again around the new Γ*. none: no adaptivity.",
+       .choices = {"rp", "hp", "none"}},
       {.path = "adapt.tolerance", .type = T::number, .default_yaml = "1e-10",
        .doc = "rp: stop when every moved node is within this fraction of its body's size "
               "(bounding-box diagonal) of its Γ*.",
@@ -260,6 +263,19 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "adapt.max_iterations", .type = T::integer, .default_yaml = "20",
        .doc = "rp: relocations after the first solve; not reaching the tolerance is a failure.",
        .lower = at_least(1)},
+      {.path = "adapt.factor", .type = T::number, .default_yaml = "0.5",
+       .doc = "hp: size of the element at Γ* relative to the one it is cut from, per step (the "
+              "seed's 0.5; 0.17 is the classical optimum for corner singularities).",
+       .lower = greater_than(0), .upper = less_than(1)},
+      {.path = "adapt.steps", .type = T::integer, .default_yaml = "8",
+       .doc = "hp: refinement steps.", .lower = at_least(1), .upper = at_most(40)},
+      {.path = "adapt.degree", .type = T::choice, .default_yaml = "rising",
+       .doc = "hp: rising: min_degree at Γ* and one more per layer away from it (elements far "
+              "from Γ* get min_degree + steps + 1); constant: discretization.degree everywhere.",
+       .choices = {"rising", "constant"}},
+      {.path = "adapt.min_degree", .type = T::integer, .default_yaml = "1",
+       .doc = "hp: degree of the elements at Γ* (rising degree).", .lower = at_least(1),
+       .upper = at_most(max_degree)},
       {.path = "adapt.update", .type = T::choice, .default_yaml = "secant",
        .doc = "rp: secant: secant steps on Γ*(node) - node along the boundary (fewer solves); "
               "relocate: put the node onto the last Γ* (the seed's iteration).",

@@ -336,13 +336,21 @@ class SpecBuilder {
   AdaptSpec adapt(const YAML::Node& node, const ProblemSpec& spec) {
     AdaptSpec a;
     a.where = source_.where(node, "adapt");
-    a.method = node["method"].Scalar() == "rp" ? AdaptMethod::rp : AdaptMethod::none;
+    const std::string method = node["method"].Scalar();
+    a.method = method == "rp" ? AdaptMethod::rp : method == "hp" ? AdaptMethod::hp : AdaptMethod::none;
+    a.factor = number(node["factor"]);
+    a.steps = integer(node["steps"]);
+    a.rising_degree = node["degree"].Scalar() == "rising";
+    a.min_degree = integer(node["min_degree"]);
     a.tolerance = number(node["tolerance"]);
     a.max_iterations = integer(node["max_iterations"]);
     a.secant = node["update"].Scalar() == "secant";
-    if (a.method == AdaptMethod::rp && spec.contact.empty())
+    if (a.method != AdaptMethod::none && spec.contact.empty())
       source_.fail(node["method"], "adapt.method",
-                   "rp moves nodes onto the ends of contact zones, but the problem has no contact");
+                   method + " adapts the mesh to the ends of contact zones, but the problem has no contact");
+    if (a.method != AdaptMethod::none && spec.discretization.method != Method::p)
+      source_.fail(node["method"], "adapt.method",
+                   method + " needs the p-version (discretization.method: p)");
     return a;
   }
 

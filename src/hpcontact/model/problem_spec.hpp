@@ -189,7 +189,7 @@ struct OutputSpec {
   SourceRef where;
 };
 
-enum class AdaptMethod { none, rp };
+enum class AdaptMethod { none, rp, hp };
 
 /// Adaptive mesh changes around the ends of the contact zone (seed §4.7–4.8).
 struct AdaptSpec {
@@ -197,6 +197,10 @@ struct AdaptSpec {
   double tolerance = 1e-10;  ///< rp: stop when |node − Γ*| <= tolerance · body size
   int max_iterations = 20;   ///< rp: relocations after the first solve
   bool secant = true;        ///< rp: secant steps (false: the seed's plain move onto Γ*)
+  double factor = 0.5;       ///< hp: size of the corner square per refinement step
+  int steps = 8;             ///< hp: refinement steps
+  bool rising_degree = true; ///< hp: degree min_degree + layer (false: discretization.degree)
+  int min_degree = 1;        ///< hp: degree of the elements at Γ*
   SourceRef where;
 };
 

@@ -1,0 +1,121 @@
+// The hp loop: solve -> Γ* -> centre node at Γ* -> k geometric layers with rising degree -> solve.
+#include "hpcontact/adapt/hp.hpp"
+
+#include <chrono>
+#include <sstream>
+
+#include "hpcontact/adapt/boundary_track.hpp"
+#include "hpcontact/adapt/geometric_refinement.hpp"
+#include "hpcontact/core/error.hpp"
+#include "hpcontact/post/fields.hpp"
+
+namespace hpcontact::adapt {
+
+namespace {
+
+struct Centre {
+  int body = 0, node = 0;
+  Vec2 at = Vec2::Zero();  ///< where the node is put on the input mesh
+};
+
+/// The input mesh with the centres moved to their points and refined `steps` times around them,
+/// degrees set by layer.
+model::ProblemSpec build_mesh(const model::ProblemSpec& input, const std::vector<Centre>& centres,
+                              int steps, const HpOptions& options) {
+  model::ProblemSpec spec = input;
+  for (const Centre& c : centres) {
+    const BoundaryTrack track(spec, c.body, c.node);
+    spec = with_node_moved(spec, track, track.parameter(c.at));
+  }
+  for (int k = 0; k < steps; ++k)
+    for (const Centre& c : centres) spec = refine_towards_node(spec, c.body, c.node, options.factor);
+  if (options.rising_degree) {
+    for (size_t b = 0; b < spec.bodies.size(); ++b) {
+      std::vector<int> nodes;
+      for (const Centre& c : centres)
+        if (c.body == static_cast<int>(b)) nodes.push_back(c.node);
+      if (nodes.empty()) continue;
+      for (const auto& [id, layer] : element_layers(spec.bodies[b], nodes)) {
+        const int p = options.min_degree + std::max(layer, 0);
+        spec.bodies[b].element_degrees[id] = {p, p};
+      }
+    }
+  }
+  return spec;
+}
+
+}  // namespace
+
+HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptions& options,
+                                   const model::ProgressFn& progress, const HpObserver& observe) {
+  using Clock = std::chrono::steady_clock;
+  auto say = [&](const std::string& s) {
+    if (progress) progress(s);
+  };
+  HpOutcome out;
+  std::vector<Centre> centres;
+  try {
+    for (int step = 0; step <= options.steps; ++step) {
+      const auto t0 = Clock::now();
+      HpIteration rec;
+      rec.step = step;
+      SolvedPtr s;
+      std::vector<ZoneEnd> ends;
+      for (;; ++rec.recentred) {
+        s = solve(step == 0 ? spec : build_mesh(spec, centres, step, options), progress);
+        ends = outer_zone_ends(*s);
+        if (step == 0) {
+          for (const auto& t : nearest_movable_nodes(*s, ends))
+            centres.push_back({t.body(), t.node_id(), Vec2::Zero()});
+          for (size_t i = 0; i < centres.size(); ++i) centres[i].at = ends[i].X;
+          break;
+        }
+        // Is each Γ* still within the two smallest elements at its centre? (Each centre follows
+        // the zone end nearest to it; ends a coarse early step adds elsewhere are left alone.)
+        rec.inside = true;
+        std::vector<Centre> recentred = centres;
+        for (Centre& c : recentred) {
+          const BoundaryTrack track(s->spec, c.body, c.node);
+          const ZoneEnd* nearest = nullptr;
+          for (const auto& e : ends)
+            if (e.body == c.body && (!nearest || (e.X - c.at).norm() < (nearest->X - c.at).norm()))
+              nearest = &e;
+          const double t = track.parameter(nearest->X);
+          if (t <= track.lower() || t >= track.upper()) {
+            rec.inside = false;
+            c.at = nearest->X;
+          }
+        }
+        if (rec.inside || rec.recentred >= options.max_recentre) break;
+        centres = std::move(recentred);
+        say("hp step " + std::to_string(step) + ": Γ* left the smallest elements; refining again "
+            "around it");
+      }
+      rec.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+      rec.dofs = s->discretization.n_free;
+      for (const auto& b : s->discretization.bodies) rec.elements += b.mesh.n_quads();
+      rec.strain_energy = post::strain_energy(s->discretization, s->solution.u);
+      rec.newton_iterations = s->solution.newton_iterations;
+      for (const auto& e : ends) rec.gamma_star.push_back(e.X);
+      if (step > 0)
+        for (const Centre& c : centres) rec.centres.push_back(c.at);
+      {
+        std::ostringstream os;
+        os.precision(10);
+        os << "hp step " << step << ": " << rec.elements << " elements, " << rec.dofs
+           << " dofs, U = " << rec.strain_energy << ", Γ* at";
+        for (const auto& g : rec.gamma_star) os << " (" << g.x() << ", " << g.y() << ")";
+        say(os.str());
+      }
+      out.history.push_back(rec);
+      out.last = s;
+      if (observe) observe(rec, *s);
+    }
+    out.converged = true;
+  } catch (const Error& e) {
+    out.message = e.what();
+  }
+  return out;
+}
+
+}  // namespace hpcontact::adapt

@@ -1,0 +1,52 @@
+// The adaptive hp-version towards the end of the contact zone (seed §4.7, Fig. 4.12–4.13):
+// geometric refinement around a node placed at Γ*, the degree rising away from it.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "hpcontact/adapt/solved.hpp"
+
+namespace hpcontact::adapt {
+
+struct HpOptions {
+  double factor = 0.5;      ///< size of the corner square per step (seed: 0.5, option 0.17)
+  int steps = 8;            ///< refinement steps
+  bool rising_degree = true;  ///< degree min_degree + layer; false: the input's degrees
+  int min_degree = 1;       ///< degree of the elements at Γ* (rising_degree)
+  int max_recentre = 3;     ///< re-refinements of one step when Γ* leaves the smallest elements
+};
+
+struct HpIteration {
+  int step = 0;  ///< 0: the input mesh
+  int dofs = 0, elements = 0;
+  double strain_energy = 0;
+  int newton_iterations = 0;
+  std::vector<Vec2> centres;     ///< refinement centres of this mesh (nodes on the boundary)
+  std::vector<Vec2> gamma_star;  ///< zone ends this solve found
+  int recentred = 0;             ///< how often this step was re-refined around a moved centre
+  bool inside = true;            ///< every Γ* within the smallest elements at its centre
+  double seconds = 0;            ///< the solves of this step
+};
+
+using HpObserver = std::function<void(const HpIteration&, const Solved&)>;
+
+struct HpOutcome {
+  SolvedPtr last;
+  std::vector<HpIteration> history;
+  bool converged = false;  ///< all steps done
+  std::string message;     ///< why it stopped early
+};
+
+/// Solves, places the nearest movable boundary node of each zone end on it (one rp move on
+/// the input mesh) and refines geometrically around those nodes, one more layer per step. When
+/// a solve puts Γ* outside the two smallest elements at its centre, that centre is moved to the
+/// new Γ* and the mesh of the step is built again from the input mesh (the seed re-refines
+/// from the second-last mesh; rebuilding from the input gives the same mesh with the centre
+/// moved, and never distorts small elements). Failures end the loop with the last good solve.
+HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptions& options,
+                                   const model::ProgressFn& progress = {},
+                                   const HpObserver& observe = {});
+
+}  // namespace hpcontact::adapt

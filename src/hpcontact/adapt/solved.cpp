@@ -1,0 +1,64 @@
+// Solving once and locating the zone ends a node can serve.
+#include "hpcontact/adapt/solved.hpp"
+
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "hpcontact/core/error.hpp"
+
+namespace hpcontact::adapt {
+
+SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progress) {
+  auto s = std::make_shared<Solved>();
+  s->spec = spec;
+  s->discretization = model::discretize(s->spec);
+  s->solution = model::solve_contact(s->spec, s->discretization, progress);
+  HPC_REQUIRE(s->solution.converged, NumericalError, spec.file, ": the solver stopped: ",
+              s->solution.message);
+  return s;
+}
+
+std::vector<ZoneEnd> outer_zone_ends(const Solved& s) {
+  std::vector<ZoneEnd> ends;
+  for (size_t k = 0; k < s.solution.contact.size(); ++k)
+    for (int i : s.solution.contact[k].outer_ends)
+      ends.push_back({s.solution.pairs[k].body, s.solution.contact[k].gamma_star[i]});
+  HPC_REQUIRE(!ends.empty(), AdaptError, s.spec.file, ": no end of a contact zone found (no "
+              "contact, or every contact point is closed); there is no Γ* to adapt the mesh to");
+  return ends;
+}
+
+std::vector<BoundaryTrack> nearest_movable_nodes(const Solved& s, const std::vector<ZoneEnd>& ends) {
+  std::vector<BoundaryTrack> tracks;
+  for (const ZoneEnd& end : ends) {
+    const model::Body* body = &s.discretization.bodies[end.body];
+    double best = std::numeric_limits<double>::infinity();
+    std::optional<BoundaryTrack> choice;
+    std::string reasons;
+    for (size_t k = 0; k < s.solution.pairs.size(); ++k) {
+      if (s.solution.pairs[k].body != end.body) continue;
+      for (int e : s.solution.pairs[k].edges)
+        for (int v : {body->mesh.edge(e).v0, body->mesh.edge(e).v1}) {
+          const double dist = (body->mesh.node(v) - end.X).norm();
+          if (dist >= best) continue;
+          try {
+            choice.emplace(s.spec, end.body, body->mesh.node_id(v));
+            best = dist;
+          } catch (const AdaptError& err) {
+            reasons += std::string("\n  ") + err.what();
+          }
+        }
+    }
+    HPC_REQUIRE(choice, AdaptError, "no boundary node of body '", body->name,
+                "' can move onto the zone end at (", end.X.x(), ", ", end.X.y(), "):", reasons);
+    for (const auto& t : tracks)
+      HPC_REQUIRE(t.body() != choice->body() || t.node_id() != choice->node_id(), AdaptError,
+                  "two zone ends are nearest to the same node ", t.node_id(), " of body '",
+                  body->name, "'; the mesh needs a node for each end");
+    tracks.push_back(*choice);
+  }
+  return tracks;
+}
+
+}  // namespace hpcontact::adapt

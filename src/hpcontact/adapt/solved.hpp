@@ -1,0 +1,39 @@
+// A solved discretisation and the ends of its contact zones: what the rp and hp loops adapt to.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "hpcontact/adapt/boundary_track.hpp"
+#include "hpcontact/geometry/vec2.hpp"
+#include "hpcontact/model/contact_solve.hpp"
+#include "hpcontact/model/discretization.hpp"
+#include "hpcontact/model/problem_spec.hpp"
+
+namespace hpcontact::adapt {
+
+/// One solved discretisation; heap-held because the contact pairs refer into its bodies.
+struct Solved {
+  model::ProblemSpec spec;
+  model::Discretization discretization;
+  model::NonlinearSolution solution;
+};
+using SolvedPtr = std::shared_ptr<const Solved>;
+
+/// Discretises and solves a contact problem; NumericalError when the solver does not converge.
+SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progress = {});
+
+/// An end of a contact zone (Γ*) on the undeformed boundary of a body.
+struct ZoneEnd {
+  int body = 0;
+  Vec2 X = Vec2::Zero();
+};
+
+/// The outer ends of every pair's active region (ContactResult::outer_ends), pair by pair.
+std::vector<ZoneEnd> outer_zone_ends(const Solved& s);
+
+/// For each zone end, the movable boundary node of its pair's contact edges nearest to it;
+/// AdaptError when there is none, or when two ends would share a node.
+std::vector<BoundaryTrack> nearest_movable_nodes(const Solved& s, const std::vector<ZoneEnd>& ends);
+
+}  // namespace hpcontact::adapt

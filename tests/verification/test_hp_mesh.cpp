@@ -1,0 +1,112 @@
+// Geometric hp meshes (adapt/geometric_refinement): conforming, exact on the circle, with the
+// displacement continuous across every interior edge for any dofs, degrees rising by layer.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "hpcontact/adapt/geometric_refinement.hpp"
+#include "hpcontact/core/error.hpp"
+#include "hpcontact/fem/edge_load.hpp"
+#include "hpcontact/model/discretization.hpp"
+#include "problems.hpp"
+
+using namespace hpcontact;
+
+namespace {
+
+/// Displacement of body 0 at local edge le, parameter t of element q.
+Vec2 displacement(const model::Body& body, int q, int le, double t, const Eigen::VectorXd& u) {
+  const auto& es = body.dofs.element(q);
+  Eigen::VectorXd N(es.n_modes());
+  const auto r = fem::edge_reference_point(le, t);
+  es.evaluate(r[0], r[1], N.data(), nullptr, nullptr);
+  Vec2 v = Vec2::Zero();
+  for (int a = 0; a < es.n_modes(); ++a) {
+    const int dof = body.dof_offset + 2 * es.modes[a];
+    v += N(a) * Vec2(u(dof), u(dof + 1));
+  }
+  return v;
+}
+
+/// The Hertz quarter refined `steps` times towards node 2 (on the arc), degrees by layer.
+model::ProblemSpec graded(int steps, double factor) {
+  auto spec = test_problems::quarter_circle_2x2(4);
+  for (int k = 0; k < steps; ++k) spec = adapt::refine_towards_node(spec, 0, 2, factor);
+  for (const auto& [id, layer] : adapt::element_layers(spec.bodies[0], {2}))
+    spec.bodies[0].element_degrees[id] = {1 + layer, 1 + layer};
+  return spec;
+}
+
+}  // namespace
+
+TEST(HpMesh, RefinementIsConformingAndContinuous) {
+  for (const double factor : {0.5, 0.17}) {
+    const auto spec = graded(4, factor);
+    const auto d = model::discretize(spec);
+    const auto& body = d.bodies[0];
+    EXPECT_EQ(body.mesh.n_quads(), 4 + 4 * 4);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> uni(-1, 1);
+    Eigen::VectorXd u(d.n_dofs);
+    for (int i = 0; i < u.size(); ++i) u(i) = uni(rng);
+    int interior = 0;
+    for (int e = 0; e < body.mesh.n_edges(); ++e) {
+      const auto& edge = body.mesh.edge(e);
+      if (edge.on_boundary()) continue;
+      ++interior;
+      for (const double t : {-0.83, -0.2, 0.35, 0.9}) {
+        const int qa = edge.quads[0], la = edge.local_edge[0];
+        const int qb = edge.quads[1], lb = edge.local_edge[1];
+        const Vec2 xa = fem::edge_geometry(body.maps[qa], la, t, nullptr, nullptr);
+        // The same point seen from the other element: its local edge may run the other way.
+        double tb = t;
+        if ((fem::edge_geometry(body.maps[qb], lb, t, nullptr, nullptr) - xa).norm() >
+            (fem::edge_geometry(body.maps[qb], lb, -t, nullptr, nullptr) - xa).norm())
+          tb = -t;
+        const Vec2 xb = fem::edge_geometry(body.maps[qb], lb, tb, nullptr, nullptr);
+        ASSERT_LT((xa - xb).norm(), 1e-12) << "factor " << factor << " edge " << e;
+        EXPECT_LT((displacement(body, qa, la, t, u) - displacement(body, qb, lb, tb, u)).norm(),
+                  1e-12)
+            << "factor " << factor << " edge " << e << " t " << t;
+      }
+    }
+    EXPECT_GT(interior, 20);
+  }
+}
+
+TEST(HpMesh, NewBoundaryNodesLieOnTheCircleAndEdgeSetsFollow) {
+  const auto spec = graded(3, 0.17);
+  const auto& b = spec.bodies[0];
+  // Every node on the arc edge set lies on the circle of radius 10 about (0, 10).
+  for (const auto& set : b.edge_sets) {
+    if (set.name != "arc") continue;
+    EXPECT_EQ(set.edges.size(), 4u + 2 * 3);  // each step splits the two arc edges at node 2
+    for (const auto& e : set.edges)
+      for (int id : e)
+        for (size_t i = 0; i < b.node_ids.size(); ++i)
+          if (b.node_ids[i] == id)
+            EXPECT_NEAR(std::hypot(b.nodes[i][0], b.nodes[i][1] - 10), 10.0, 1e-12) << id;
+  }
+  // The element at node 2 shrinks geometrically: its arc edge is 0.17³ of the original.
+  const auto d = model::discretize(spec);
+  const auto& m = d.bodies[0].mesh;
+  double shortest = 1e9;
+  for (int e = 0; e < m.n_edges(); ++e)
+    if (m.edge(e).v0 == m.node_index(2) || m.edge(e).v1 == m.node_index(2))
+      if (m.edge(e).on_boundary() && m.edge(e).curve)
+        shortest = std::min(shortest, m.edge(e).curve->length());
+  const double first = 10 * std::asin(2.48 / 10);  // arc from node 1 (x = 0) to node 2
+  EXPECT_NEAR(shortest, std::pow(0.17, 3) * first, 1e-9);
+}
+
+TEST(HpMesh, LayersCountRingsAroundTheCentre) {
+  const auto spec = graded(2, 0.5);
+  const auto layers = adapt::element_layers(spec.bodies[0], {2});
+  std::map<int, int> count;
+  for (const auto& [id, layer] : layers) ++count[layer];
+  EXPECT_EQ(count[0], 2);  // the two corner squares at node 2
+  EXPECT_EQ(count[1], 4);  // the pieces of the last step
+  EXPECT_EQ(count[2], 4);  // the pieces of the first step
+  EXPECT_EQ(count[3], 2);  // the top elements, which share nodes with the first step's pieces
+  EXPECT_EQ(layers.size(), 12u);
+}
