@@ -37,7 +37,11 @@ TEST(EdgeLoads, ShapesIntegrateToResultantWithTheirCentroid) {
         case model::LoadShape::constant: return 1.0;
         case model::LoadShape::linear: return 1 - t;
         case model::LoadShape::bspline1: return (1 - t) * (1 - t);
-        case model::LoadShape::bspline2: return t <= 0.5 ? 1 - 2 * t * t : 2 * (1 - t) * (1 - t);
+        case model::LoadShape::bspline2: {
+          // eq. 4.9: the uniform quadratic B-spline on [0, 3] from its peak x = 1.5 to x = 3
+          const double x = 1.5 + 1.5 * t;
+          return (x < 2 ? -x * x + 3 * x - 1.5 : 0.5 * (3 - x) * (3 - x)) / 0.75;
+        }
         default: return 1 - 3 * t * t + 2 * t * t * t;
       }
     };
@@ -89,4 +93,25 @@ TEST(EdgeLoads, HermiteCentroidClosedForm) {
   const auto [F, M] = force_and_moment(d);
   EXPECT_NEAR(F, -5.0 * 2.0 * 0.5, 1e-12);  // ∫_0^1 (1 - 3t² + 2t³) dt = 1/2, length 2
   EXPECT_NEAR(M / F, 2.0 * 0.3, 1e-12);
+}
+
+// A load ending exactly in the middle of an element edge (a point of the break-point scan) is
+// integrated piecewise: its resultant and centroid are exact even at high p, where one Gauss
+// rule across the jump would miss them.
+TEST(EdgeLoads, LoadEndingOnAScanPointIsSplitThere) {
+  for (int p : {4, 16}) {
+    auto spec = test_problems::distorted_patch(p);
+    model::EdgeLoadSpec l;
+    l.edge_sets = {"top"};
+    l.kind = model::LoadKind::traction;
+    l.value = {0.0, -1.0};
+    l.resultant = 1000.0;
+    l.along = 'x';
+    l.interval = std::array<double, 2>{0.0, 0.65};  // the top-left edge runs from x = 0 to 1.3
+    spec.bodies[0].edge_loads = {l};
+    const auto d = model::discretize(spec);
+    const auto [F, M] = force_and_moment(d);
+    EXPECT_NEAR(F, -1000.0, 1e-9) << "p " << p;
+    EXPECT_NEAR(M / F, 0.325, 1e-12) << "p " << p;
+  }
 }

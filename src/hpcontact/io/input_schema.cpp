@@ -116,8 +116,10 @@ const std::vector<KeySpec>& input_schema() {
        .lower = greater_than(0)},
       {.path = "bodies[].loads[].shape", .type = T::choice, .default_yaml = "constant",
        .doc = "Profile along the loaded part, t in [0, 1] from its start to its end: constant 1, "
-              "linear 1 - t, bspline1 (1 - t)², bspline2 1 - 2t² up to t = ½ and "
-              "2(1 - t)² beyond, hermite 1 - 3t² + 2t³, or a formula (expression).",
+              "linear 1 - t, bspline1 (1 - t)² (seed: ½(1 - t)²), bspline2 1 - 3t² up to t = ⅓ and "
+              "1.5(1 - t)² beyond (the seed's eq. 4.9: the right half of a quadratic B-spline), "
+              "hermite 1 - 3t² + 2t³ (eq. 4.10), or a formula (expression; not split at its "
+              "kinks). All scaled to 1 at t = 0.",
        .choices = {"constant", "linear", "bspline1", "bspline2", "hermite", "expression"}},
       {.path = "bodies[].loads[].expression", .type = T::string,
        .doc = "Formula in x, y multiplying the load; required if and only if shape is expression."},

@@ -179,7 +179,8 @@ double load_shape(LoadShape shape, double t) {
     case LoadShape::constant: return 1.0;
     case LoadShape::linear: return 1.0 - t;
     case LoadShape::bspline1: return (1 - t) * (1 - t);
-    case LoadShape::bspline2: return t <= 0.5 ? 1 - 2 * t * t : 2 * (1 - t) * (1 - t);
+    // The right half of the uniform quadratic B-spline, from its peak to zero (eq. 4.9, scaled).
+    case LoadShape::bspline2: return t <= 1.0 / 3 ? 1 - 3 * t * t : 1.5 * (1 - t) * (1 - t);
     case LoadShape::hermite: return 1 - 3 * t * t + 2 * t * t * t;
     case LoadShape::expression: return 1.0;
   }
@@ -233,11 +234,11 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
     const double t = b != a ? std::clamp((c - a) / (b - a), 0.0, 1.0) : 0.0;
     return expr ? (*expr)(x.x(), x.y()) : load_shape(ls.shape, t);
   };
-  // Break points of each edge: where the coordinate crosses a or b, and the joint t = 1/2 of
+  // Break points of each edge: where the coordinate crosses a or b, and the joint t = 1/3 of
   // the two-sided B-spline (its second derivative jumps there).
   std::vector<double> targets;
   if (ls.interval) targets = {a, b};
-  if (ls.shape == LoadShape::bspline2) targets.push_back(0.5 * (a + b));
+  if (ls.shape == LoadShape::bspline2) targets.push_back(a + (b - a) / 3);
   auto pieces = [&](int q, int le) {
     std::vector<double> ts{-1.0, 1.0};
     for (double target : targets) {
@@ -247,6 +248,7 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
       const int ns = 64;
       for (int i = 0; i < ns; ++i) {
         double t0 = -1 + 2.0 * i / ns, t1 = -1 + 2.0 * (i + 1) / ns, f0 = f(t0), f1 = f(t1);
+        if (f0 == 0 && i > 0) ts.push_back(t0);  // a break point on a scan point
         if (f0 == 0 || f0 * f1 >= 0) continue;
         for (int it = 0; it < 60; ++it) {
           const double tm = 0.5 * (t0 + t1), fm = f(tm);

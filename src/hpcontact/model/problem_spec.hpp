@@ -63,7 +63,8 @@ enum class LoadKind { pressure, traction };
 
 /// Load profile shapes along the loaded part, parameter t in [0, 1] from its start to its end:
 /// constant 1; linear 1 - t; bspline1 (1 - t)² (one-sided quadratic B-spline, ½(1-t)² up to scale);
-/// bspline2 1 - 2t² (t <= ½), 2(1 - t)² (t >= ½) (eq. 4.9 up to scale); hermite 1 - 3t² + 2t³
+/// bspline2 1 - 3t² (t <= ⅓), 1.5(1 - t)² (t >= ⅓): the right half of the uniform quadratic
+/// B-spline from its peak, C1 at the joint (eq. 4.9 scaled to 1 at t = 0); hermite 1 - 3t² + 2t³
 /// (eq. 4.10 mapped from [-1, 1] and scaled to 1 at t = 0); expression: a user formula in x, y.
 enum class LoadShape { constant, linear, bspline1, bspline2, hermite, expression };
 
