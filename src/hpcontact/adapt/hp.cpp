@@ -62,7 +62,8 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       SolvedPtr s;
       std::vector<ZoneEnd> ends;
       for (;; ++rec.recentred) {
-        s = solve(step == 0 ? spec : build_mesh(spec, centres, step, options), progress);
+        s = solve(step == 0 ? spec : build_mesh(spec, centres, step, options), progress,
+                  s ? s.get() : out.last.get());
         ends = outer_zone_ends(*s);
         if (step == 0) {
           for (const auto& t : nearest_movable_nodes(*s, ends))

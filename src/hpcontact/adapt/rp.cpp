@@ -36,7 +36,7 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
   try {
     for (int it = 0;; ++it) {
       const auto t0 = Clock::now();
-      SolvedPtr s = solve(current, progress);
+      SolvedPtr s = solve(current, progress, out.last.get());
       RpIteration rec;
       rec.iteration = it;
       rec.seconds = std::chrono::duration<double>(Clock::now() - t0).count();

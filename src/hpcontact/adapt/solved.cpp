@@ -9,11 +9,13 @@
 
 namespace hpcontact::adapt {
 
-SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progress) {
+SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progress,
+                const Solved* previous) {
   auto s = std::make_shared<Solved>();
   s->spec = spec;
   s->discretization = model::discretize(s->spec);
-  s->solution = model::solve_contact(s->spec, s->discretization, progress);
+  s->solution = model::solve_contact(s->spec, s->discretization, progress,
+                                     previous ? previous->solution.load_factor : 0.0);
   HPC_REQUIRE(s->solution.converged, NumericalError, spec.file, ": the solver stopped: ",
               s->solution.message);
   return s;

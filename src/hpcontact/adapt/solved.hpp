@@ -21,7 +21,10 @@ struct Solved {
 using SolvedPtr = std::shared_ptr<const Solved>;
 
 /// Discretises and solves a contact problem; NumericalError when the solver does not converge.
-SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progress = {});
+/// `previous` (if not null) is a solve of the same problem on another mesh: force control starts
+/// from its load factor.
+SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progress = {},
+                const Solved* previous = nullptr);
 
 /// An end of a contact zone (Γ*) on the undeformed boundary of a body.
 struct ZoneEnd {

@@ -390,7 +390,7 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
 }
 
 NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d,
-                                const ProgressFn& progress) {
+                                const ProgressFn& progress, double initial_factor) {
   const SolverSpec& ss = spec.solver;
   auto pairs = make_contact_pairs(spec, d);
   for (const auto& pair : pairs)
@@ -455,9 +455,12 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     return true;
   };
 
+  // The first factor: 1 (the displacements as prescribed) or, under force control, a factor
+  // the caller expects to be close (the previous mesh's, in an adaptive loop).
+  const double first = ss.target_resultant && initial_factor > 0 ? initial_factor : 1.0;
   double lambda = 0;
-  if (!advance_to(0.0, 1.0)) return sol;
-  lambda = 1.0;
+  if (!advance_to(0.0, first)) return sol;
+  lambda = first;
   if (ss.target_resultant) {
     const auto& tr = *ss.target_resultant;
     HPC_REQUIRE(!pairs.empty(), InputError, ss.where.str(),
