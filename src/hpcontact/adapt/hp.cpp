@@ -66,9 +66,15 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
                   s ? s.get() : out.last.get());
         ends = outer_zone_ends(*s);
         if (step == 0) {
-          for (const auto& t : nearest_movable_nodes(*s, ends))
-            centres.push_back({t.body(), t.node_id(), Vec2::Zero()});
-          for (size_t i = 0; i < centres.size(); ++i) centres[i].at = ends[i].X;
+          for (const auto& t : nearest_movable_nodes(*s, ends)) {
+            // The centre goes to the zone end nearest to its node.
+            const Vec2 X = t.point(t.node());
+            const ZoneEnd* nearest = nullptr;
+            for (const auto& e : ends)
+              if (e.body == t.body() && (!nearest || (e.X - X).norm() < (nearest->X - X).norm()))
+                nearest = &e;
+            centres.push_back({t.body(), t.node_id(), nearest->X});
+          }
           break;
         }
         // Is each Γ* still within the two smallest elements at its centre? (Each centre follows

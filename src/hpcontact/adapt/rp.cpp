@@ -49,9 +49,8 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
       if (moved.empty()) {
         for (const auto& t : nearest_movable_nodes(*s, ends)) moved.emplace_back(t.body(), t.node_id());
       }
-      HPC_REQUIRE(ends.size() == moved.size(), AdaptError, spec.file, ": rp: the number of zone ",
-                  "ends changed from ", moved.size(), " to ", ends.size(), " in iteration ", it);
-      // Each node follows the zone end of its body nearest to it.
+      // Each node follows the zone end of its body nearest to it (ends a coarse solve adds
+      // elsewhere, e.g. an opening at a symmetry line, are left alone).
       std::vector<Vec2> target;
       for (const auto& [body, id] : moved) {
         const Vec2 X = node_position(current, body, id);

@@ -32,7 +32,11 @@ std::vector<ZoneEnd> outer_zone_ends(const Solved& s) {
 }
 
 std::vector<BoundaryTrack> nearest_movable_nodes(const Solved& s, const std::vector<ZoneEnd>& ends) {
-  std::vector<BoundaryTrack> tracks;
+  struct Choice {
+    BoundaryTrack track;
+    double distance;
+  };
+  std::vector<Choice> chosen;
   for (const ZoneEnd& end : ends) {
     const model::Body* body = &s.discretization.bodies[end.body];
     double best = std::numeric_limits<double>::infinity();
@@ -54,12 +58,18 @@ std::vector<BoundaryTrack> nearest_movable_nodes(const Solved& s, const std::vec
     }
     HPC_REQUIRE(choice, AdaptError, "no boundary node of body '", body->name,
                 "' can move onto the zone end at (", end.X.x(), ", ", end.X.y(), "):", reasons);
-    for (const auto& t : tracks)
-      HPC_REQUIRE(t.body() != choice->body() || t.node_id() != choice->node_id(), AdaptError,
-                  "two zone ends are nearest to the same node ", t.node_id(), " of body '",
-                  body->name, "'; the mesh needs a node for each end");
-    tracks.push_back(*choice);
+    // Two ends nearest to one node (a coarse solve whose zone starts open at a symmetry line as
+    // well as ending): the node serves the nearer one; the other is left alone.
+    bool taken = false;
+    for (auto& c : chosen)
+      if (c.track.body() == choice->body() && c.track.node_id() == choice->node_id()) {
+        taken = true;
+        if (best < c.distance) c = {*choice, best};
+      }
+    if (!taken) chosen.push_back({*choice, best});
   }
+  std::vector<BoundaryTrack> tracks;
+  for (const auto& c : chosen) tracks.push_back(c.track);
   return tracks;
 }
 

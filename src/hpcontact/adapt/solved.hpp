@@ -35,8 +35,9 @@ struct ZoneEnd {
 /// The outer ends of every pair's active region (ContactResult::outer_ends), pair by pair.
 std::vector<ZoneEnd> outer_zone_ends(const Solved& s);
 
-/// For each zone end, the movable boundary node of its pair's contact edges nearest to it;
-/// AdaptError when there is none, or when two ends would share a node.
+/// For each zone end, the movable boundary node of its pair's contact edges nearest to it (one
+/// per node: of two ends nearest to the same node, the nearer is served); AdaptError when an
+/// end has no movable node.
 std::vector<BoundaryTrack> nearest_movable_nodes(const Solved& s, const std::vector<ZoneEnd>& ends);
 
 }  // namespace hpcontact::adapt
