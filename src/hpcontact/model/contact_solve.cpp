@@ -3,7 +3,10 @@
 // resultant.
 #include "hpcontact/model/contact_solve.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <limits>
 #include <sstream>
 
 #include "hpcontact/contact/two_body.hpp"
@@ -201,6 +204,11 @@ double gap_at(const Body& body, const ContactPair& pair, int q, int le, double t
   return pair.obstacle->gap(x, nullptr, nullptr);
 }
 
+bool shares_node(const mesh::Mesh& m, int a, int b) {
+  const auto &ea = m.edge(a), &eb = m.edge(b);
+  return ea.v0 == eb.v0 || ea.v0 == eb.v1 || ea.v1 == eb.v0 || ea.v1 == eb.v1;
+}
+
 /// Root of the gap between parameters a and b of one edge by the Pegasus method (seed §4.7):
 /// the boundary point where the contact zone ends, undeformed (X) and deformed (x).
 std::pair<Vec2, Vec2> zone_end(const Body& body, const ContactPair& pair, int q, int le, double a,
@@ -247,7 +255,8 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       std::optional<std::pair<Vec2, Vec2>> end;
       if (same_edge) {
         end = zone_end(body, pair, p0.element, p0.local_edge, p0.t, p1.t, u);
-      } else {
+      } else if (shares_node(body.mesh, body.mesh.quad_edge(p0.element, p0.local_edge),
+                             body.mesh.quad_edge(p1.element, p1.local_edge))) {
         // The zone ends between two edges: on the side whose end gap changes sign (a node
         // placed on Γ*, as rp does, gives a root at the edge end itself).
         for (const auto* cp : {&p0, &p1}) {
@@ -263,10 +272,23 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       }
     }
   }
-  const int n_ends = static_cast<int>(res.gamma_star.size());
-  if (n_ends > 0 && res.states.front().gap >= 0) res.outer_ends.push_back(0);
-  if (n_ends > 0 && res.states.back().gap >= 0 && (res.outer_ends.empty() || n_ends > 1))
-    res.outer_ends.push_back(n_ends - 1);
+  // The outer ends of the active region, by the coordinate along the obstacle (the contact
+  // edges need not be listed as one path): the zone end just outside the first and the last
+  // closed point, where open points lie beyond them.
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (size_t i = 0; i < pair.points.size(); ++i)
+    if (res.states[i].gap < 0) {
+      lo = std::min(lo, pair.coordinate(pair.points[i].X));
+      hi = std::max(hi, pair.coordinate(pair.points[i].X));
+    }
+  int below = -1, above = -1;
+  for (int k = 0; k < static_cast<int>(res.gamma_star.size()); ++k) {
+    const double c = pair.coordinate(res.gamma_star[k]);
+    if (c <= lo && (below < 0 || c > pair.coordinate(res.gamma_star[below]))) below = k;
+    if (c >= hi && (above < 0 || c < pair.coordinate(res.gamma_star[above]))) above = k;
+  }
+  if (below >= 0) res.outer_ends.push_back(below);
+  if (above >= 0 && above != below) res.outer_ends.push_back(above);
   for (const Vec2& g : res.gamma_star)
     res.half_width = std::max(res.half_width, std::abs(pair.coordinate(g)));
   return res;
@@ -329,6 +351,53 @@ std::vector<int> edges_named(const Body& body, const std::vector<std::string>& n
   return edges;
 }
 
+/// The contact points of `edges` in the order of the boundary path(s) they form: edges sorted
+/// into chains through shared nodes, the points of each edge running along its chain (zone ends
+/// are found between neighbouring points, so the list must follow the boundary whatever the
+/// order the edge sets list the edges in). `edges` is reordered the same way.
+std::vector<contact::ContactPoint> chained_contact_points(const Body& body, std::vector<int>& edges,
+                                                          int quadrature) {
+  const auto& m = body.mesh;
+  std::map<int, std::vector<int>> at_node;  // node -> positions in `edges`
+  for (size_t k = 0; k < edges.size(); ++k)
+    for (int v : {m.edge(edges[k]).v0, m.edge(edges[k]).v1}) at_node[v].push_back(static_cast<int>(k));
+  std::vector<bool> used(edges.size(), false);
+  std::vector<int> ordered;
+  std::vector<bool> reversed;  // the edge's own direction v0 -> v1 runs against the chain
+  auto walk = [&](int k, int from) {
+    while (k >= 0 && !used[k]) {
+      used[k] = true;
+      const auto& e = m.edge(edges[k]);
+      ordered.push_back(edges[k]);
+      reversed.push_back(e.v0 != from);
+      const int to = e.v0 == from ? e.v1 : e.v0;
+      int next = -1;
+      for (int j : at_node[to])
+        if (!used[j]) next = j;
+      k = next;
+      from = to;
+    }
+  };
+  // Chains start at a node with one edge; what is left are closed loops.
+  for (const auto& [v, ks] : at_node)
+    if (ks.size() == 1 && !used[ks[0]]) walk(ks[0], v);
+  for (size_t k = 0; k < edges.size(); ++k)
+    if (!used[k]) walk(static_cast<int>(k), m.edge(edges[k]).v0);
+  edges = ordered;
+  std::vector<contact::ContactPoint> points;
+  for (size_t k = 0; k < edges.size(); ++k) {
+    auto pts = contact::contact_points(m, body.dofs, body.maps, {edges[k]}, quadrature, body.thickness);
+    // Local edge parameters run with the element's edge; put them along the chain.
+    const auto& e = m.edge(edges[k]);
+    const int q = e.quads[0], le = e.local_edge[0];
+    const int local_start = m.quad(q)[mesh::kEdgeVertices[le][0]];
+    const int chain_start = reversed[k] ? e.v1 : e.v0;
+    if (local_start != chain_start) std::reverse(pts.begin(), pts.end());
+    points.insert(points.end(), pts.begin(), pts.end());
+  }
+  return points;
+}
+
 }  // namespace
 
 std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discretization& d) {
@@ -361,11 +430,10 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       pair.other_boundary = std::make_shared<contact::DeformableBoundary>(
           other.mesh, other.dofs, other.maps, other_edges);
       pair.obstacle = pair.other_boundary;
-      pair.other_points = contact::contact_points(other.mesh, other.dofs, other.maps, other_edges,
-                                                  cs.quadrature, other.thickness);
+      auto chained = other_edges;
+      pair.other_points = chained_contact_points(other, chained, cs.quadrature);
     }
-    pair.points = contact::contact_points(body.mesh, body.dofs, body.maps, pair.edges, cs.quadrature,
-                                          body.thickness);
+    pair.points = chained_contact_points(body, pair.edges, cs.quadrature);
     // An obstacle the body starts deep inside (more than 1 % of its size) is a wrong normal or
     // position, not a contact problem: say so before solving.
     if (pair.other < 0) {
