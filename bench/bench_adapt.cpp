@@ -29,9 +29,9 @@ void BM_RpLoop(benchmark::State& state) {
     if (!out.converged) state.SkipWithError(out.message.c_str());
   }
   int newton = 0;
-  for (const auto& it : out.history) newton += it.newton_iterations;
+  for (const auto& it : out.history) newton += it.solve.newton_iterations;
   state.counters["p"] = state.range(0);
-  state.counters["dofs"] = out.history.empty() ? 0 : out.history.back().dofs;
+  state.counters["dofs"] = out.history.empty() ? 0 : out.history.back().solve.dofs;
   state.counters["solves"] = static_cast<double>(out.history.size());
   state.counters["newton_iterations"] = newton;
 }
@@ -49,9 +49,9 @@ void BM_HpLoop(benchmark::State& state) {
     if (!out.converged) state.SkipWithError(out.message.c_str());
   }
   int newton = 0, solves = 0;
-  for (const auto& it : out.history) newton += it.newton_iterations, solves += 1 + it.recentred;
+  for (const auto& it : out.history) newton += it.solve.newton_iterations, solves += 1 + it.recentred;
   state.counters["factor"] = o.factor;
-  state.counters["dofs"] = out.history.empty() ? 0 : out.history.back().dofs;
+  state.counters["dofs"] = out.history.empty() ? 0 : out.history.back().solve.dofs;
   state.counters["solves"] = solves;
   state.counters["newton_iterations"] = newton;
 }

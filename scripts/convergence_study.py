@@ -67,6 +67,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 from energy_extrapolation import (ExtrapolationError, extrapolate_energy, fit_beta,  # noqa: E402
                                   relative_energy_error)
+from hpc_run import csv_number, run_case  # noqa: E402
 
 HERTZ_MESH = os.path.join(ROOT, "scripts", "hertz_mesh.py")
 METHODS = ("h", "p", "rp", "hp")
@@ -357,20 +358,11 @@ def build_points(study, out):
 
 
 def run_one(hpcontact, point, out):
-    out_dir = os.path.join(out, point["run_dir"])
-    cmd = [hpcontact, "run", point["case_path"], "--out", out_dir, "-q"]
-    for s in point["sets"] + ["output.vtu=false"]:
-        cmd += ["--set", s]
     t0 = time.monotonic()
-    proc = subprocess.run(cmd, capture_output=True, text=True)
+    result = run_case(hpcontact, point["case_path"], os.path.join(out, point["run_dir"]),
+                      point["sets"])
     point["elapsed_s"] = time.monotonic() - t0
-    summary_path = os.path.join(out_dir, "summary.json")
-    if proc.returncode != 0 or not os.path.isfile(summary_path):
-        lines = (proc.stderr or proc.stdout or "").strip().splitlines()
-        msg = lines[-1] if lines else f"exit status {proc.returncode}, no message"
-        return None, msg.replace("hpcontact: error: ", "")
-    with open(summary_path) as f:
-        return json.load(f), None
+    return result
 
 
 # --------------------------------------------------------------------------- energies
@@ -583,14 +575,6 @@ def curve_stats(points, fit_last, trust=0.0):
 
 # --------------------------------------------------------------------------- writers
 
-def num(v):
-    if v is None:
-        return ""
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    return repr(v) if isinstance(v, float) else str(v)
-
-
 def fmt(v, spec):
     return "-" if v is None else format(v, spec)
 
@@ -604,7 +588,7 @@ def write_csv(path, rows):
         w = csv.DictWriter(f, fieldnames=CSV_COLUMNS)
         w.writeheader()
         for r in rows:
-            w.writerow({k: num(r.get(k)) for k in CSV_COLUMNS})
+            w.writerow({k: csv_number(r.get(k)) for k in CSV_COLUMNS})
 
 
 def write_plot(path, study, curves, ref, force):

@@ -43,10 +43,8 @@ load vector is integrated exactly at every p.
 import argparse
 import concurrent.futures
 import csv
-import json
 import math
 import pathlib
-import subprocess
 import sys
 import tempfile
 import time
@@ -62,6 +60,7 @@ ROOT = SCRIPTS.parent
 sys.path.insert(0, str(SCRIPTS))
 from energy_extrapolation import (ExtrapolationError, extrapolate_energy, fit_beta,  # noqa: E402
                                   relative_energy_error)
+from hpc_run import run_case  # noqa: E402
 
 SHAPES = ["constant", "linear", "bspline1", "bspline2", "hermite"]
 SHAPE_NAMES = {"constant": "rectangular", "linear": "triangular",
@@ -108,18 +107,13 @@ def study_config(name, quick=False, all_shapes=False):
 def run_one(hpcontact, case, degree, shape, out, sets=()):
     """One run (sets: further `--set` overrides); returns its summary.json. Raises RuntimeError
     naming the run if it fails."""
-    cmd = [str(hpcontact), "run", str(case), "--out", str(out), "-q",
-           "--set", f"discretization.degree={degree}",
-           "--set", f"bodies[0].loads[0].shape={shape}"]
-    for s in sets:
-        cmd += ["--set", s]
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    if r.returncode != 0:
-        raise RuntimeError(f"{case} p = {degree} {shape}: {r.stderr.strip()}")
-    s = json.loads((pathlib.Path(out) / "summary.json").read_text())
-    if not s.get("converged"):
+    summary, msg = run_case(hpcontact, case, out, [f"discretization.degree={degree}",
+                                                   f"bodies[0].loads[0].shape={shape}", *sets])
+    if summary is None:
+        raise RuntimeError(f"{case} p = {degree} {shape}: {msg}")
+    if not summary.get("converged"):
         raise RuntimeError(f"{case} p = {degree} {shape}: did not converge")
-    return s
+    return summary
 
 
 def run_study(name, cfg, hpcontact, jobs=2, workdir=None):
@@ -347,7 +341,6 @@ def write_fine_mesh(path, cells=(6, 6), fine=0.5):
     bottom, left, right_t, comment = hertz_mesh.refined(cells[0], cells[1], zone, fine)
     nodes, quads, bot, right, sym, top = hertz_mesh.build(bottom, left, len(left) - 1, right_t)
     arc = [e for e, x in zip(bot, bottom) if x < zone - 1e-9]
-    fmt = lambda v: repr(round(v, 15))  # noqa: E731
     es = lambda edges: ", ".join(f"[{a}, {b}]" for a, b in edges)  # noqa: E731
     lines = [
         "# Quarter circle with a triangular load instead of contact (seed §5.2.4.3.1, CASES.md",
@@ -363,12 +356,7 @@ def write_fine_mesh(path, cells=(6, 6), fine=0.5):
         "  arc x in [0, 2.48] with resultant 35000 N; ux = 0 on x = 0, uy = 0 on y = 10.",
         "", "bodies:", "  - name: cylinder",
         "    material: {E: 210000, nu: 0.3, plane: strain}", "    nodes:"]
-    lines += [f"      {k}: [{fmt(x)}, {fmt(y)}]" for k, (x, y) in nodes.items()]
-    lines.append("    elements:")
-    lines += [f"      {k}: [{a}, {b}, {c}, {d}]" for k, (a, b, c, d) in quads.items()]
-    lines.append("    curves:")
-    lines += [f"      - {{nodes: [{a}, {b}], arc: {{center: [0, 10.0], radius: 10.0}}}}"
-              for a, b in bot + right]
+    lines += hertz_mesh.mesh_lines(nodes, quads, bot + right)
     lines += ["    edge_sets:", f"      symmetry: [{es(sym)}]", f"      centre: [{es(top)}]",
               f"      arc: [{es(arc)}]",
               "    constraints:", "      - {edges: [symmetry], ux: 0}",

@@ -9,7 +9,6 @@ and contact[].compare); writes RESULTS_DIR/adapt-pressure.png: p/p0 over x/b for
 iteration against Hertz and Shtayerman, the whole range and zoomed on the end of the zone.
 """
 import argparse
-import csv
 import json
 import os
 import sys
@@ -19,14 +18,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-
-def read_csv(path):
-    cols = {}
-    with open(path) as f:
-        for row in csv.DictReader(f):
-            for k, v in row.items():
-                cols.setdefault(k, []).append(float(v))
-    return cols
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from hpc_run import read_columns  # noqa: E402
 
 
 def main(argv=None):
@@ -61,7 +54,7 @@ def main(argv=None):
         if not os.path.exists(path):
             print(f"{path}: missing", file=sys.stderr)
             return 1
-        c = read_csv(path)
+        c = read_columns(path)
         closed = closed or c
         xb = [x / b for x in c["x"]]
         colour = cmap(i / max(1, len(history) - 1))

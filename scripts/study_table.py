@@ -26,7 +26,6 @@ import json
 import math
 import os
 import re
-import subprocess
 import sys
 import threading
 
@@ -36,6 +35,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+from hpc_run import csv_number, read_columns, run_case  # noqa: E402
 RUN_KEYS = {"label", "case", "set", "seed"}
 SEED_KEYS = {"dofs", "time_s", "vs_hertz", "vs_shtayerman"}
 CONTACT_KEYS = ["e_seed_hertz_percent", "e_seed_shtayerman_percent", "e_seed_reference_percent",
@@ -111,28 +112,7 @@ def load_study(path):
 
 
 def run_one(hpcontact, run, out_dir, vtu):
-    cmd = [hpcontact, "run", run["case_path"], "--out", out_dir, "-q"]
-    for s in run["set"]:
-        cmd += ["--set", s]
-    if not vtu:
-        cmd += ["--set", "output.vtu=false"]
-    proc = subprocess.run(cmd, capture_output=True, text=True)
-    summary_path = os.path.join(out_dir, "summary.json")
-    if proc.returncode != 0 or not os.path.isfile(summary_path):
-        lines = (proc.stderr or proc.stdout or "").strip().splitlines()
-        msg = lines[-1] if lines else f"exit status {proc.returncode}, no message"
-        return None, f"exit status {proc.returncode}: {msg}"
-    with open(summary_path) as f:
-        return json.load(f), None
-
-
-def number(v):
-    """A value for the CSV: the summary's number exactly (repr round-trips), '' if absent."""
-    if v is None:
-        return ""
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    return repr(v) if isinstance(v, float) else str(v)
+    return run_case(hpcontact, run["case_path"], out_dir, run["set"], vtu)
 
 
 def csv_row(run, result):
@@ -140,15 +120,15 @@ def csv_row(run, result):
     c = s.get("contact", {})
     seed = run["seed"]
     row = {"label": run["label"], "case": run["case"], "run_dir": result["run_dir"],
-           "converged": number(s.get("converged")) if s else "failed",
-           "dofs": number(s.get("dofs")), "wall_time_s": number(s.get("wall_time_s"))}
-    row["rp_iterations"] = number(s.get("adapt", {}).get("iterations"))
-    row.update({k: number(c.get(k)) for k in CONTACT_KEYS})
+           "converged": csv_number(s.get("converged")) if s else "failed",
+           "dofs": csv_number(s.get("dofs")), "wall_time_s": csv_number(s.get("wall_time_s"))}
+    row["rp_iterations"] = csv_number(s.get("adapt", {}).get("iterations"))
+    row.update({k: csv_number(c.get(k)) for k in CONTACT_KEYS})
     pen = c.get("penalty_traction", {})
-    row.update({"penalty_" + k: number(pen.get(k)) for k in PENALTY_KEYS})
-    row.update({"seed_dofs": number(seed.get("dofs")), "seed_time_s": number(seed.get("time_s")),
-                "seed_vs_hertz": number(seed.get("vs_hertz")),
-                "seed_vs_shtayerman": number(seed.get("vs_shtayerman"))})
+    row.update({"penalty_" + k: csv_number(pen.get(k)) for k in PENALTY_KEYS})
+    row.update({"seed_dofs": csv_number(seed.get("dofs")), "seed_time_s": csv_number(seed.get("time_s")),
+                "seed_vs_hertz": csv_number(seed.get("vs_hertz")),
+                "seed_vs_shtayerman": csv_number(seed.get("vs_shtayerman"))})
     return row
 
 
@@ -210,15 +190,6 @@ def write_markdown(path, study, runs, results, jobs):
     lines += [legend, ""]
     with open(path, "w") as f:
         f.write("\n".join(lines))
-
-
-def read_columns(path):
-    cols = {}
-    with open(path) as f:
-        for row in csv.DictReader(f):
-            for k, v in row.items():
-                cols.setdefault(k, []).append(float(v))
-    return cols
 
 
 def write_plot(path, study, runs, results):

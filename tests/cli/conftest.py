@@ -1,4 +1,6 @@
-"""Fixtures of the command-line tests: the path of the built hpcontact program."""
+"""Fixtures of the command-line tests: the path of the built hpcontact program, and the
+scripts/ modules loaded for tests of their functions."""
+import importlib.util
 import os
 import subprocess
 
@@ -28,3 +30,17 @@ def hpcontact(request):
 @pytest.fixture(scope="session")
 def root():
     return ROOT
+
+
+@pytest.fixture(scope="session")
+def exe(hpcontact, request):
+    """The executable's path (the hpcontact fixture fails the test if it is missing)."""
+    return request.config.getoption("--hpcontact")
+
+
+def load_script(name):
+    """scripts/<name>.py as a module (its functions, without running main)."""
+    spec = importlib.util.spec_from_file_location(name, os.path.join(ROOT, "scripts", name + ".py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module

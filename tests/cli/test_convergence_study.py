@@ -25,12 +25,6 @@ def study_script(root, exe, *args, timeout=120):
 
 
 @pytest.fixture(scope="module")
-def exe(hpcontact, pytestconfig):
-    """The executable's path (the hpcontact fixture fails the test if it is missing)."""
-    return pytestconfig.getoption("--hpcontact")
-
-
-@pytest.fixture(scope="module")
 def quick(exe, root, tmp_path_factory):
     """The --quick study, run once for every test of this file."""
     out = tmp_path_factory.mktemp("convergence-quick")

@@ -1,23 +1,11 @@
 """scripts/energy_extrapolation.py: the seed's extrapolation of the exact energy from three
 discretisations (eq. 4.14), the relative energy-norm error (eq. 4.3) and the fitted rate β."""
-import importlib.util
 import math
-import os
 
 import pytest
+from conftest import load_script
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-
-
-def load_module():
-    spec = importlib.util.spec_from_file_location(
-        "energy_extrapolation", os.path.join(ROOT, "scripts", "energy_extrapolation.py"))
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-ee = load_module()
+ee = load_script("energy_extrapolation")
 DOF_TRIPLES = [(220, 312, 420), (544, 1204, 2112), (40, 41, 100)]
 
 

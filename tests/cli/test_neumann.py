@@ -3,34 +3,18 @@ sweeps of scripts/neumann_study.py: on the plate with a hole the Hermite load co
 and the rectangular load slowest, and the quarter circle under a triangular load converges
 algebraically at about the seed's rate."""
 import csv
-import importlib.util
 import math
 import os
 import subprocess
 import sys
 
 import pytest
-
-
-def load_study(root):
-    spec = importlib.util.spec_from_file_location(
-        "neumann_study", os.path.join(root, "scripts", "neumann_study.py"))
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-@pytest.fixture(scope="module")
-def exe(pytestconfig):
-    path = pytestconfig.getoption("--hpcontact")
-    if not os.path.exists(path):
-        pytest.fail(f"hpcontact executable not found at {path}")
-    return path
+from conftest import load_script
 
 
 @pytest.fixture(scope="module")
 def study(root):
-    return load_study(root)
+    return load_script("neumann_study")
 
 
 @pytest.fixture(scope="module")

@@ -3,7 +3,6 @@ Hertz cylinder, the p5 quarter and its mirror image, pressed onto the plane. Its
 has two ends, each served by its own node (A and its mirror); by symmetry the result must be
 the quarter model's (rp5.yaml) with the load doubled."""
 import json
-import math
 import os
 
 import pytest

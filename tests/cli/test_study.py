@@ -7,7 +7,7 @@ import os
 import subprocess
 import sys
 
-import pytest
+from conftest import load_script
 
 STUDY = os.path.join("tests", "cli", "data", "study-small.yaml")
 NUMBERS = ["e_seed_hertz_percent", "e_seed_shtayerman_percent", "e_seed_reference_percent",
@@ -19,20 +19,6 @@ def study_script(root, exe, *args):
     return subprocess.run([sys.executable, os.path.join(root, "scripts", "study_table.py"),
                            *map(str, args), "--hpcontact", exe], capture_output=True, text=True,
                           timeout=120)
-
-
-@pytest.fixture
-def exe(hpcontact, pytestconfig):
-    """The executable's path (the hpcontact fixture fails the test if it is missing)."""
-    return pytestconfig.getoption("--hpcontact")
-
-
-def load_module(root):
-    spec = importlib.util.spec_from_file_location(
-        "study_table", os.path.join(root, "scripts", "study_table.py"))
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 def test_study_table_rows_equal_the_runs(exe, root, tmp_path):
@@ -96,7 +82,7 @@ def test_study_file_errors_name_the_place(root, tmp_path):
 def test_study_file_reads_without_pyyaml(root, monkeypatch):
     """The study files are JSON-compatible flow YAML: without PyYAML the json module reads
     them, and both readers agree."""
-    module = load_module(root)
+    module = load_script("study_table")
     path = os.path.join(root, "examples", "hertz", "table-5-1.yaml")
     with_yaml = module.load_study(path) if importlib.util.find_spec("yaml") else None
     monkeypatch.setitem(sys.modules, "yaml", None)        # `import yaml` raises ImportError

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "hpcontact/core/error.hpp"
@@ -24,13 +25,6 @@ std::map<EdgeKey, int> edge_counts(const model::BodySpec& b) {
   return count;
 }
 
-Vec2 node_position(const model::BodySpec& b, int id) {
-  const auto it = std::find(b.node_ids.begin(), b.node_ids.end(), id);
-  HPC_ASSERT(it != b.node_ids.end(), "node ", id);
-  const auto& p = b.nodes[it - b.node_ids.begin()];
-  return Vec2(p[0], p[1]);
-}
-
 const model::CurveSpec* curve_of(const model::BodySpec& b, int u, int v) {
   for (const auto& c : b.curves)
     if (key(c.node_a, c.node_b) == key(u, v)) return &c;
@@ -40,6 +34,13 @@ const model::CurveSpec* curve_of(const model::BodySpec& b, int u, int v) {
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 }  // namespace
+
+Vec2 node_position(const model::BodySpec& b, int id) {
+  const auto it = std::find(b.node_ids.begin(), b.node_ids.end(), id);
+  HPC_ASSERT(it != b.node_ids.end(), "node ", id);
+  const auto& p = b.nodes[it - b.node_ids.begin()];
+  return Vec2(p[0], p[1]);
+}
 
 double body_size(const model::BodySpec& body) {
   Vec2 lo = Vec2::Constant(1e300), hi = Vec2::Constant(-1e300);
@@ -130,15 +131,13 @@ model::ProblemSpec with_node_moved(const model::ProblemSpec& spec, const Boundar
               "): that point is not between its two boundary neighbours on its ", track.describe());
 
   const auto counts = edge_counts(b);
+  std::set<int> boundary;
+  for (const auto& [edge, c] : counts)
+    if (c == 1) boundary.insert({edge.first, edge.second});
   std::vector<int> interior;  // nodes joined to the moved one by an element edge, off the boundary
-  auto on_boundary = [&](int n) {
-    for (const auto& [edge, c] : counts)
-      if (c == 1 && (edge.first == n || edge.second == n)) return true;
-    return false;
-  };
   for (const auto& [edge, c] : counts) {
     const int other = edge.first == id ? edge.second : edge.second == id ? edge.first : -1;
-    if (other >= 0 && !on_boundary(other)) interior.push_back(other);
+    if (other >= 0 && !boundary.count(other)) interior.push_back(other);
   }
 
   const Vec2 shift = target - node_position(b, id);

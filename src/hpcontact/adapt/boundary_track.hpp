@@ -45,6 +45,9 @@ private:
 model::ProblemSpec with_node_moved(const model::ProblemSpec& spec, const BoundaryTrack& track,
                                    double s);
 
+/// Position of node `id` (user id) of a body.
+Vec2 node_position(const model::BodySpec& body, int id);
+
 /// Size of a body: the diagonal of its nodes' bounding box.
 double body_size(const model::BodySpec& body);
 

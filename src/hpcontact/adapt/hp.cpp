@@ -7,7 +7,6 @@
 #include "hpcontact/adapt/boundary_track.hpp"
 #include "hpcontact/adapt/geometric_refinement.hpp"
 #include "hpcontact/core/error.hpp"
-#include "hpcontact/post/fields.hpp"
 
 namespace hpcontact::adapt {
 
@@ -66,15 +65,8 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
                   s ? s.get() : out.last.get());
         ends = outer_zone_ends(*s);
         if (step == 0) {
-          for (const auto& t : nearest_movable_nodes(*s, ends)) {
-            // The centre goes to the zone end nearest to its node.
-            const Vec2 X = t.point(t.node());
-            const ZoneEnd* nearest = nullptr;
-            for (const auto& e : ends)
-              if (e.body == t.body() && (!nearest || (e.X - X).norm() < (nearest->X - X).norm()))
-                nearest = &e;
-            centres.push_back({t.body(), t.node_id(), nearest->X});
-          }
+          for (const auto& n : nearest_movable_nodes(*s, ends))
+            centres.push_back({n.track.body(), n.track.node_id(), n.end.X});
           break;
         }
         // Is each Γ* still within the two smallest elements at its centre? (Each centre follows
@@ -83,10 +75,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         std::vector<Centre> recentred = centres;
         for (Centre& c : recentred) {
           const BoundaryTrack track(s->spec, c.body, c.node);
-          const ZoneEnd* nearest = nullptr;
-          for (const auto& e : ends)
-            if (e.body == c.body && (!nearest || (e.X - c.at).norm() < (nearest->X - c.at).norm()))
-              nearest = &e;
+          const ZoneEnd* nearest = nearest_end(ends, c.body, c.at);
           const double t = track.parameter(nearest->X);
           if (t <= track.lower() || t >= track.upper()) {
             rec.inside = false;
@@ -98,20 +87,15 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         say("hp step " + std::to_string(step) + ": Γ* left the smallest elements; refining again "
             "around it");
       }
-      rec.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-      rec.dofs = s->discretization.n_free;
-      for (const auto& b : s->discretization.bodies) rec.elements += b.mesh.n_quads();
-      rec.strain_energy = post::strain_energy(s->discretization, s->solution.u);
-      rec.newton_iterations = s->solution.newton_iterations;
-      for (const auto& e : ends) rec.gamma_star.push_back(e.X);
+      rec.solve = figures_of(*s, ends, std::chrono::duration<double>(Clock::now() - t0).count());
       if (step > 0)
         for (const Centre& c : centres) rec.centres.push_back(c.at);
       {
         std::ostringstream os;
         os.precision(10);
-        os << "hp step " << step << ": " << rec.elements << " elements, " << rec.dofs
-           << " dofs, U = " << rec.strain_energy << ", Γ* at";
-        for (const auto& g : rec.gamma_star) os << " (" << g.x() << ", " << g.y() << ")";
+        os << "hp step " << step << ": " << rec.solve.elements << " elements, " << rec.solve.dofs
+           << " dofs, U = " << rec.solve.strain_energy << ", Γ* at";
+        for (const auto& g : rec.solve.gamma_star) os << " (" << g.x() << ", " << g.y() << ")";
         say(os.str());
       }
       out.history.push_back(rec);

@@ -20,14 +20,10 @@ struct HpOptions {
 
 struct HpIteration {
   int step = 0;  ///< 0: the input mesh
-  int dofs = 0, elements = 0;
-  double strain_energy = 0;
-  int newton_iterations = 0;
-  std::vector<Vec2> centres;     ///< refinement centres of this mesh (nodes on the boundary)
-  std::vector<Vec2> gamma_star;  ///< zone ends this solve found
-  int recentred = 0;             ///< how often this step was re-refined around a moved centre
-  bool inside = true;            ///< every Γ* within the smallest elements at its centre
-  double seconds = 0;            ///< the solves of this step
+  SolveFigures solve;
+  std::vector<Vec2> centres;  ///< refinement centres of this mesh (nodes on the boundary)
+  int recentred = 0;          ///< how often this step was re-refined around a moved centre
+  bool inside = true;         ///< every Γ* within the smallest elements at its centre
 };
 
 using HpObserver = std::function<void(const HpIteration&, const Solved&)>;

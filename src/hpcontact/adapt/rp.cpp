@@ -8,21 +8,8 @@
 
 #include "hpcontact/adapt/boundary_track.hpp"
 #include "hpcontact/core/error.hpp"
-#include "hpcontact/post/fields.hpp"
 
 namespace hpcontact::adapt {
-
-namespace {
-
-Vec2 node_position(const model::ProblemSpec& spec, int body, int id) {
-  const auto& b = spec.bodies[body];
-  for (size_t i = 0; i < b.node_ids.size(); ++i)
-    if (b.node_ids[i] == id) return Vec2(b.nodes[i][0], b.nodes[i][1]);
-  HPC_ASSERT(false, "node ", id);
-  return Vec2::Zero();
-}
-
-}  // namespace
 
 RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& options,
                          const model::ProgressFn& progress, const IterationObserver& observe) {
@@ -37,27 +24,20 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
     for (int it = 0;; ++it) {
       const auto t0 = Clock::now();
       SolvedPtr s = solve(current, progress, out.last.get());
+      const auto ends = outer_zone_ends(*s);
       RpIteration rec;
       rec.iteration = it;
-      rec.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-      rec.dofs = s->discretization.n_free;
-      rec.strain_energy = post::strain_energy(s->discretization, s->solution.u);
-      rec.newton_iterations = s->solution.newton_iterations;
-      const auto ends = outer_zone_ends(*s);
-      for (const auto& e : ends) rec.gamma_star.push_back(e.X);
+      rec.solve = figures_of(*s, ends, std::chrono::duration<double>(Clock::now() - t0).count());
       for (const auto& c : s->solution.contact) rec.zone_ends_found += static_cast<int>(c.gamma_star.size());
-      if (moved.empty()) {
-        for (const auto& t : nearest_movable_nodes(*s, ends)) moved.emplace_back(t.body(), t.node_id());
-      }
+      if (moved.empty())
+        for (const auto& n : nearest_movable_nodes(*s, ends))
+          moved.emplace_back(n.track.body(), n.track.node_id());
       // Each node follows the zone end of its body nearest to it (ends a coarse solve adds
       // elsewhere, e.g. an opening at a symmetry line, are left alone).
       std::vector<Vec2> target;
       for (const auto& [body, id] : moved) {
-        const Vec2 X = node_position(current, body, id);
-        const ZoneEnd* nearest = nullptr;
-        for (const auto& e : ends)
-          if (e.body == body && (!nearest || (e.X - X).norm() < (nearest->X - X).norm()))
-            nearest = &e;
+        const Vec2 X = node_position(current.bodies[body], id);
+        const ZoneEnd* nearest = nearest_end(ends, body, X);
         target.push_back(nearest->X);
         const double size = body_size(current.bodies[body]);
         rec.distance = std::max(rec.distance, (nearest->X - X).norm() / size);

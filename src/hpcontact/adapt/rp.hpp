@@ -25,14 +25,10 @@ struct RelocatedNode {
 
 struct RpIteration {
   int iteration = 0;  ///< 0: the starting mesh
-  int dofs = 0;
-  double strain_energy = 0;
-  int newton_iterations = 0;
+  SolveFigures solve;
   std::vector<RelocatedNode> nodes;
-  std::vector<Vec2> gamma_star;  ///< the outer zone ends (undeformed) the nodes follow, pair by pair
-  int zone_ends_found = 0;       ///< all sign changes of the gap, islands of opening included
-  double distance = 0;  ///< max |Γ* − node| / body size
-  double seconds = 0;   ///< this iteration's solve
+  int zone_ends_found = 0;  ///< all sign changes of the gap, islands of opening included
+  double distance = 0;      ///< max |Γ* − node| / body size
 };
 
 struct RpOptions {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/post/fields.hpp"
 
 namespace hpcontact::adapt {
 
@@ -31,9 +32,27 @@ std::vector<ZoneEnd> outer_zone_ends(const Solved& s) {
   return ends;
 }
 
-std::vector<BoundaryTrack> nearest_movable_nodes(const Solved& s, const std::vector<ZoneEnd>& ends) {
+const ZoneEnd* nearest_end(const std::vector<ZoneEnd>& ends, int body, const Vec2& X) {
+  const ZoneEnd* nearest = nullptr;
+  for (const auto& e : ends)
+    if (e.body == body && (!nearest || (e.X - X).norm() < (nearest->X - X).norm())) nearest = &e;
+  return nearest;
+}
+
+SolveFigures figures_of(const Solved& s, const std::vector<ZoneEnd>& ends, double seconds) {
+  SolveFigures f;
+  f.dofs = s.discretization.n_free;
+  for (const auto& b : s.discretization.bodies) f.elements += b.mesh.n_quads();
+  f.strain_energy = post::strain_energy(s.discretization, s.solution.u);
+  f.newton_iterations = s.solution.newton_iterations;
+  f.seconds = seconds;
+  for (const auto& e : ends) f.gamma_star.push_back(e.X);
+  return f;
+}
+
+std::vector<NodeForEnd> nearest_movable_nodes(const Solved& s, const std::vector<ZoneEnd>& ends) {
   struct Choice {
-    BoundaryTrack track;
+    NodeForEnd node;
     double distance;
   };
   std::vector<Choice> chosen;
@@ -62,15 +81,15 @@ std::vector<BoundaryTrack> nearest_movable_nodes(const Solved& s, const std::vec
     // well as ending): the node serves the nearer one; the other is left alone.
     bool taken = false;
     for (auto& c : chosen)
-      if (c.track.body() == choice->body() && c.track.node_id() == choice->node_id()) {
+      if (c.node.track.body() == choice->body() && c.node.track.node_id() == choice->node_id()) {
         taken = true;
-        if (best < c.distance) c = {*choice, best};
+        if (best < c.distance) c = {{*choice, end}, best};
       }
-    if (!taken) chosen.push_back({*choice, best});
+    if (!taken) chosen.push_back({{*choice, end}, best});
   }
-  std::vector<BoundaryTrack> tracks;
-  for (const auto& c : chosen) tracks.push_back(c.track);
-  return tracks;
+  std::vector<NodeForEnd> nodes;
+  for (const auto& c : chosen) nodes.push_back(c.node);
+  return nodes;
 }
 
 }  // namespace hpcontact::adapt

@@ -35,9 +35,29 @@ struct ZoneEnd {
 /// The outer ends of every pair's active region (ContactResult::outer_ends), pair by pair.
 std::vector<ZoneEnd> outer_zone_ends(const Solved& s);
 
+/// The zone end of `body` nearest to X, or null if that body has none.
+const ZoneEnd* nearest_end(const std::vector<ZoneEnd>& ends, int body, const Vec2& X);
+
+/// A boundary node that can move onto a zone end, and that end.
+struct NodeForEnd {
+  BoundaryTrack track;
+  ZoneEnd end;
+};
+
 /// For each zone end, the movable boundary node of its pair's contact edges nearest to it (one
 /// per node: of two ends nearest to the same node, the nearer is served); AdaptError when an
 /// end has no movable node.
-std::vector<BoundaryTrack> nearest_movable_nodes(const Solved& s, const std::vector<ZoneEnd>& ends);
+std::vector<NodeForEnd> nearest_movable_nodes(const Solved& s, const std::vector<ZoneEnd>& ends);
+
+/// The figures of one solve of an adaptive loop, as its history records them.
+struct SolveFigures {
+  int dofs = 0, elements = 0;
+  double strain_energy = 0;
+  int newton_iterations = 0;
+  double seconds = 0;            ///< the solve(s) behind this record
+  std::vector<Vec2> gamma_star;  ///< the outer zone ends found (undeformed)
+};
+
+SolveFigures figures_of(const Solved& s, const std::vector<ZoneEnd>& ends, double seconds);
 
 }  // namespace hpcontact::adapt

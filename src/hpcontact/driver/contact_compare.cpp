@@ -17,20 +17,15 @@
 
 namespace hpcontact::driver {
 
-namespace {
+double ReferenceCurve::operator()(double s) const {
+  if (x.empty() || s < x.front() || s > x.back()) return 0.0;
+  const auto it = std::upper_bound(x.begin(), x.end(), s);
+  const size_t i = std::min<size_t>(std::max<long>(it - x.begin(), 1), x.size() - 1);
+  const double w = (s - x[i - 1]) / (x[i] - x[i - 1]);
+  return (1 - w) * p[i - 1] + w * p[i];
+}
 
-/// A piecewise linear curve p(x) read from a CSV with columns x and pressure_from_stress (or
-/// pressure); zero outside its range.
-struct ReferenceCurve {
-  std::vector<double> x, p;
-  double operator()(double s) const {
-    if (x.empty() || s < x.front() || s > x.back()) return 0.0;
-    const auto it = std::upper_bound(x.begin(), x.end(), s);
-    const size_t i = std::min<size_t>(std::max<long>(it - x.begin(), 1), x.size() - 1);
-    const double w = (s - x[i - 1]) / (x[i] - x[i - 1]);
-    return (1 - w) * p[i - 1] + w * p[i];
-  }
-};
+namespace {
 
 ReferenceCurve read_reference(const std::string& path, const std::string& where) {
   std::ifstream in(path);
@@ -76,16 +71,28 @@ ReferenceCurve read_reference(const std::string& path, const std::string& where)
 
 }  // namespace
 
-nlohmann::json compare_pressure(const model::ProblemSpec& spec, const model::PressureCompareSpec& cmp,
-                                const model::Discretization& d, const model::ContactPair& pair,
-                                const Eigen::VectorXd& u, const std::vector<double>& zone_ends,
-                                const std::string& csv_path) {
-  const auto& mat = d.bodies[pair.body].material;
-  const double E = mat.youngs_modulus, nu = mat.poisson_ratio;
+PressureComparison::PressureComparison(const model::ProblemSpec& spec,
+                                       const model::PressureCompareSpec& cmp,
+                                       const material::LinearElastic& mat)
+    : hertz_{cmp.radius, cmp.force, mat.youngs_modulus, mat.poisson_ratio},
+      shtayerman_(analytic::Shtayerman::circle(cmp.radius, cmp.force, mat.youngs_modulus,
+                                               mat.poisson_ratio)),
+      reference_name_(cmp.reference) {
   HPC_REQUIRE(mat.plane == material::Plane::strain, InputError, cmp.where.str(),
               ": Hertz and Shtayerman are implemented for plane strain");
-  const analytic::Hertz hertz{cmp.radius, cmp.force, E, nu};
-  const auto shtayerman = analytic::Shtayerman::circle(cmp.radius, cmp.force, E, nu);
+  if (!cmp.reference.empty()) {
+    namespace fs = std::filesystem;
+    fs::path path(cmp.reference);
+    if (path.is_relative()) path = fs::path(spec.file).parent_path() / path;
+    reference_ = read_reference(path.string(), cmp.where.str());
+  }
+}
+
+nlohmann::json PressureComparison::measure(const model::Discretization& d,
+                                           const model::ContactPair& pair,
+                                           const Eigen::VectorXd& u,
+                                           const std::vector<double>& zone_ends,
+                                           const std::string& csv_path) const {
   // Hertz and the reference are integrated on the same points: locate each point only once.
   const model::BoundaryPressureProbe probe(d, pair, u);
   std::unordered_map<double, std::pair<double, double>> located;  // x -> (from stress, penalty)
@@ -94,27 +101,20 @@ nlohmann::json compare_pressure(const model::ProblemSpec& spec, const model::Pre
     const auto bp = probe(x);
     return located[x] = bp ? std::pair(bp->from_stress, bp->penalty) : std::pair(0.0, 0.0);
   };
-  const double b = hertz.half_width(), p0 = hertz.peak_pressure();
-  const std::function<double(double)> hertz_p = [&](double x) { return hertz.pressure(x); };
-  const std::function<double(double)> shtayerman_p = [&](double x) { return shtayerman.pressure(x); };
-  std::optional<ReferenceCurve> ref;
-  if (!cmp.reference.empty()) {
-    namespace fs = std::filesystem;
-    fs::path path(cmp.reference);
-    if (path.is_relative()) path = fs::path(spec.file).parent_path() / path;
-    ref = read_reference(path.string(), cmp.where.str());
-  }
+  const double b = hertz_.half_width(), p0 = hertz_.peak_pressure();
+  const std::function<double(double)> hertz_p = [&](double x) { return hertz_.pressure(x); };
+  const std::function<double(double)> shtayerman_p = [&](double x) { return shtayerman_.pressure(x); };
   // The errors of one FE pressure (from the stresses or the penalty traction), keys of RESULTS.md.
   auto errors = [&](const std::function<double(double)>& fe) {
     nlohmann::json e;
     const auto eh = post::pressure_errors(fe, hertz_p, b, p0);
-    const auto es = post::pressure_errors(fe, shtayerman_p, shtayerman.half_width(), p0);
+    const auto es = post::pressure_errors(fe, shtayerman_p, shtayerman_.half_width(), p0);
     e["e_L2_hertz_percent"] = eh.e_L2;
     e["e_seed_hertz_percent"] = eh.e_seed;
     e["e_L2_shtayerman_percent"] = es.e_L2;
     e["e_seed_shtayerman_percent"] = es.e_seed;
-    if (ref) {
-      const auto er = post::pressure_errors(fe, *ref, b, p0);
+    if (reference_) {
+      const auto er = post::pressure_errors(fe, *reference_, b, p0);
       e["e_L2_reference_percent"] = er.e_L2;
       e["e_seed_reference_percent"] = er.e_seed;
     }
@@ -123,12 +123,12 @@ nlohmann::json compare_pressure(const model::ProblemSpec& spec, const model::Pre
   nlohmann::json j = errors([&](double x) { return at(x).first; });
   j["hertz_half_width"] = b;
   j["hertz_peak_pressure"] = p0;
-  j["shtayerman_half_width"] = shtayerman.half_width();
+  j["shtayerman_half_width"] = shtayerman_.half_width();
   j["pressure_measured_from"] = "stress";
   // The same measures of the penalty traction eps_N <-g_N>, the contact pressure the method
   // itself carries (oscillating while Γ* lies inside an element, clean once a node sits on it).
   j["penalty_traction"] = errors([&](double x) { return at(x).second; });
-  if (ref) j["reference"] = cmp.reference;
+  if (reference_) j["reference"] = reference_name_;
   if (!csv_path.empty()) {
     std::ostringstream csv;
     csv.precision(12);
@@ -141,7 +141,7 @@ nlohmann::json compare_pressure(const model::ProblemSpec& spec, const model::Pre
     for (const double x : xs) {
       const auto bp = probe(x);
       csv << x << ',' << (bp ? bp->from_stress : 0.0) << ',' << (bp ? bp->penalty : 0.0) << ','
-          << hertz.pressure(x) << ',' << shtayerman.pressure(x) << '\n';
+          << hertz_.pressure(x) << ',' << shtayerman_.pressure(x) << '\n';
     }
     post::write_text_file(csv_path, csv.str());
   }

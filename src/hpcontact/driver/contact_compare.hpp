@@ -1,24 +1,52 @@
 // The contact pressure of a run against Hertz, Shtayerman and a reference curve (CASES.md §1).
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
+#include "hpcontact/analytic/hertz.hpp"
+#include "hpcontact/material/linear_elastic.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 
 namespace hpcontact::driver {
 
-/// The error measures of the pair's pressure from the stresses (the seed's plotted pressure)
-/// over [0, 1.5 b] against Hertz (b_Hertz), Shtayerman (b_Shtayerman) and, if given, the
-/// reference curve (b_Hertz); keys as in RESULTS.md plus the half widths. If csv_path is not
-/// empty, writes the curves on 1001 points of [0, 1.5 b_Hertz] and on the ends of the contact
-/// zone `zone_ends` (coordinates along the obstacle) there (x, pressure_from_stress,
-/// pressure_penalty, hertz, shtayerman), so that a curve read back as a reference keeps its kink.
-nlohmann::json compare_pressure(const model::ProblemSpec& spec, const model::PressureCompareSpec& cmp,
-                                const model::Discretization& d, const model::ContactPair& pair,
-                                const Eigen::VectorXd& u, const std::vector<double>& zone_ends,
-                                const std::string& csv_path);
+/// A piecewise linear curve p(x) read from a CSV (columns x and pressure_from_stress, or
+/// pressure); zero outside its range.
+struct ReferenceCurve {
+  std::vector<double> x, p;
+  double operator()(double s) const;
+};
+
+/// The contact pressure of a pair against Hertz, Shtayerman (for the exact circle) and, if the
+/// input names one, a reference curve (CASES.md §1). Built once per run: the closed forms and
+/// the reference file are set up when constructed, each solve is then measured with measure().
+class PressureComparison {
+public:
+  /// For the material of the body in contact; InputError (naming the key) when it is not plane
+  /// strain or the reference file cannot be read.
+  PressureComparison(const model::ProblemSpec& spec, const model::PressureCompareSpec& cmp,
+                     const material::LinearElastic& material);
+
+  /// The error measures of the pair's pressure from the stresses (the seed's plotted pressure)
+  /// and, under "penalty_traction", of the penalty traction, over [0, 1.5 b] against Hertz
+  /// (b_Hertz), Shtayerman (b_Shtayerman) and the reference (b_Hertz); keys as in RESULTS.md
+  /// plus the half widths. If csv_path is not empty, writes the curves on 1001 points of
+  /// [0, 1.5 b_Hertz] and on the ends of the contact zone `zone_ends` (coordinates along the
+  /// obstacle) there (x, pressure_from_stress, pressure_penalty, hertz, shtayerman), so that a
+  /// curve read back as a reference keeps its kink.
+  nlohmann::json measure(const model::Discretization& d, const model::ContactPair& pair,
+                         const Eigen::VectorXd& u, const std::vector<double>& zone_ends,
+                         const std::string& csv_path) const;
+
+private:
+  analytic::Hertz hertz_;
+  analytic::Shtayerman shtayerman_;
+  std::optional<ReferenceCurve> reference_;
+  std::string reference_name_;
+};
 
 }  // namespace hpcontact::driver

@@ -67,24 +67,46 @@ struct SolvedState {
   std::vector<model::ContactPair> pairs;
 };
 
-/// The contact figures of a state for summary.json; with a compare section also the pressure
-/// errors, and the pressure curve into csv_path if not empty.
-nlohmann::json contact_json(const model::ProblemSpec& spec, const SolvedState& st,
+nlohmann::json points_json(const std::vector<Vec2>& points) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& g : points) j.push_back({g.x(), g.y()});
+  return j;
+}
+
+/// The pressure comparison of a problem with a compare section, set up once for the run (the
+/// closed forms and the reference file), at its first solved state.
+class LazyComparison {
+public:
+  explicit LazyComparison(const model::ProblemSpec& spec) : spec_(spec) {}
+  const PressureComparison* operator()(const SolvedState& st) {
+    const auto& cmp = spec_.contact.front().compare;
+    if (!cmp) return nullptr;
+    if (!comparison_)
+      comparison_.emplace(spec_, *cmp, st.d->bodies[st.pairs.front().body].material);
+    return &*comparison_;
+  }
+
+private:
+  const model::ProblemSpec& spec_;
+  std::optional<PressureComparison> comparison_;
+};
+
+/// The contact figures of a state for summary.json; with a comparison also the pressure errors,
+/// and the pressure curve into csv_path if not empty.
+nlohmann::json contact_json(const SolvedState& st, const PressureComparison* comparison,
                             const std::string& csv_path) {
   nlohmann::json cj;
   const auto& c = st.contact.front();
   cj["half_width"] = c.half_width;
-  cj["gamma_star"] = nlohmann::json::array();
-  for (const auto& g : c.gamma_star) cj["gamma_star"].push_back({g.x(), g.y()});
-  cj["gamma_star_deformed"] = nlohmann::json::array();
-  for (const auto& g : c.gamma_star_deformed) cj["gamma_star_deformed"].push_back({g.x(), g.y()});
+  cj["gamma_star"] = points_json(c.gamma_star);
+  cj["gamma_star_deformed"] = points_json(c.gamma_star_deformed);
   cj["p_max"] = c.p_max;
   cj["resultant"] = {c.resultant.x(), c.resultant.y()};
   cj["max_penetration"] = c.max_penetration;
-  if (const auto& cmp = spec.contact.front().compare) {
+  if (comparison) {
     std::vector<double> zone_ends;
     for (const auto& g : c.gamma_star) zone_ends.push_back(st.pairs.front().coordinate(g));
-    cj.update(compare_pressure(spec, *cmp, *st.d, st.pairs.front(), st.u, zone_ends, csv_path));
+    cj.update(comparison->measure(*st.d, st.pairs.front(), st.u, zone_ends, csv_path));
   }
   return cj;
 }
@@ -92,7 +114,7 @@ nlohmann::json contact_json(const model::ProblemSpec& spec, const SolvedState& s
 /// Fills the summary of a solved state and writes its files (except summary.json) into out_dir
 /// (nothing if empty).
 void post_process(const model::ProblemSpec& spec, const SolvedState& st, const std::string& out_dir,
-                  const RunOptions& options, post::Summary& s) {
+                  const RunOptions& options, LazyComparison& comparison, post::Summary& s) {
   namespace fs = std::filesystem;
   auto say = [&](const std::string& line) {
     if (options.progress) options.progress(line);
@@ -104,8 +126,8 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
   s.strain_energy = post::strain_energy(disc, st.u);
   s.error = exact_error(spec, disc, st.u, s.strain_energy);
   if (!st.contact.empty())
-    s.extra["contact"] =
-        contact_json(spec, st, out_dir.empty() ? "" : (fs::path(out_dir) / "pressure.csv").string());
+    s.extra["contact"] = contact_json(st, comparison(st),
+                                      out_dir.empty() ? "" : (fs::path(out_dir) / "pressure.csv").string());
   if (out_dir.empty()) return;
   const fs::path out(out_dir);
   if (!options.effective_input.empty())
@@ -174,14 +196,19 @@ std::string mesh_yaml(const model::ProblemSpec& spec) {
   return os.str();
 }
 
+/// The figures every adaptive iteration records.
+nlohmann::json solve_json(const adapt::SolveFigures& f) {
+  return {{"dofs", f.dofs},
+          {"elements", f.elements},
+          {"strain_energy", f.strain_energy},
+          {"newton_iterations", f.newton_iterations},
+          {"gamma_star", points_json(f.gamma_star)},
+          {"solve_time_s", f.seconds}};
+}
+
 nlohmann::json rp_iteration_json(const adapt::RpIteration& it) {
-  nlohmann::json j;
+  nlohmann::json j = solve_json(it.solve);
   j["iteration"] = it.iteration;
-  j["dofs"] = it.dofs;
-  j["strain_energy"] = it.strain_energy;
-  j["newton_iterations"] = it.newton_iterations;
-  j["gamma_star"] = nlohmann::json::array();
-  for (const auto& g : it.gamma_star) j["gamma_star"].push_back({g.x(), g.y()});
   j["nodes"] = nlohmann::json::array();
   for (const auto& n : it.nodes)
     j["nodes"].push_back({{"body", n.body}, {"node", n.node_id},
@@ -189,24 +216,15 @@ nlohmann::json rp_iteration_json(const adapt::RpIteration& it) {
                           {"gamma_star", {n.gamma_star.x(), n.gamma_star.y()}}});
   j["zone_ends_found"] = it.zone_ends_found;
   j["distance"] = it.distance;
-  j["solve_time_s"] = it.seconds;
   return j;
 }
 
 nlohmann::json hp_iteration_json(const adapt::HpIteration& it) {
-  nlohmann::json j;
+  nlohmann::json j = solve_json(it.solve);
   j["step"] = it.step;
-  j["dofs"] = it.dofs;
-  j["elements"] = it.elements;
-  j["strain_energy"] = it.strain_energy;
-  j["newton_iterations"] = it.newton_iterations;
-  j["gamma_star"] = nlohmann::json::array();
-  for (const auto& g : it.gamma_star) j["gamma_star"].push_back({g.x(), g.y()});
-  j["centres"] = nlohmann::json::array();
-  for (const auto& c : it.centres) j["centres"].push_back({c.x(), c.y()});
+  j["centres"] = points_json(it.centres);
   j["recentred"] = it.recentred;
   j["gamma_star_inside"] = it.inside;
-  j["solve_time_s"] = it.seconds;
   return j;
 }
 
@@ -223,6 +241,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
   if (!options.out_dir.empty()) prepare_output_folder(options.out_dir);
   RunResult result{{}, {}, {}};
   post::Summary& s = result.summary;
+  LazyComparison comparison(spec);
   auto write_summary = [&](const std::string& out_dir) {
     s.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
     if (out_dir.empty()) return;
@@ -240,14 +259,15 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     nlohmann::json history = nlohmann::json::array();
     // The pressure errors of one iteration into its record, its curve into iter_dir.
     auto add_pressure = [&](nlohmann::json& j, int iteration, const adapt::Solved& solved) {
-      if (!spec.contact.front().compare) return;
       const auto& sol = solved.solution;
+      const SolvedState st{&solved.discretization, sol.u, sol.contact, sol.pairs};
+      const PressureComparison* cmp = comparison(st);
+      if (!cmp) return;
       const std::string csv =
           iter_dir.empty() ? ""
                            : (fs::path(iter_dir) / ("pressure-" + std::to_string(iteration) + ".csv"))
                                  .string();
-      const nlohmann::json cj =
-          contact_json(solved.spec, {&solved.discretization, sol.u, sol.contact, sol.pairs}, csv);
+      const nlohmann::json cj = contact_json(st, cmp, csv);
       for (const char* key : {"half_width", "e_L2_hertz_percent", "e_L2_shtayerman_percent",
                               "e_seed_hertz_percent", "e_seed_shtayerman_percent",
                               "e_L2_reference_percent"})
@@ -271,7 +291,6 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       last = outcome.last;
       converged = outcome.converged;
       message = outcome.message;
-      aj["iterations"] = static_cast<int>(outcome.history.size()) - 1;
       aj["tolerance"] = spec.adapt.tolerance;
       aj["update"] = spec.adapt.secant ? "secant" : "relocate";
     } else {
@@ -289,7 +308,6 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       last = outcome.last;
       converged = outcome.converged;
       message = outcome.message;
-      aj["iterations"] = static_cast<int>(outcome.history.size()) - 1;
       aj["factor"] = spec.adapt.factor;
       aj["steps"] = spec.adapt.steps;
       aj["degree"] = spec.adapt.rising_degree ? "rising" : "constant";
@@ -300,6 +318,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     s.newton_iterations = last->solution.newton_iterations;
     s.load_steps = last->solution.load_steps;
     s.extra["load_factor"] = last->solution.load_factor;
+    aj["iterations"] = static_cast<int>(history.size()) - 1;
     aj["converged"] = converged;
     aj["message"] = message;
     aj["history"] = history;
@@ -311,7 +330,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     if (!out_dir.empty()) fs::create_directories(out_dir);
     SolvedState st{&last->discretization, last->solution.u, last->solution.contact,
                    last->solution.pairs};
-    post_process(last->spec, st, out_dir, options, s);
+    post_process(last->spec, st, out_dir, options, comparison, s);
     if (!out_dir.empty())
       post::write_text_file((fs::path(out_dir) / "mesh.yaml").string(), mesh_yaml(last->spec));
     s.converged = converged;
@@ -363,7 +382,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
   }
   result.discretization = std::move(d);
   st.d = &result.discretization;
-  post_process(spec, st, options.out_dir, options, s);
+  post_process(spec, st, options.out_dir, options, comparison, s);
   s.converged = true;
   result.u = st.u;
   write_summary(options.out_dir);

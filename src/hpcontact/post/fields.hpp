@@ -20,7 +20,8 @@ struct PointResult {
   double principal_2 = 0;    ///< smaller in-plane principal stress
 };
 
-/// Fields at reference point (xi, eta) of element q of a body.
+/// Fields at reference point (xi, eta) of element q of a body. Where the map is singular (a
+/// corner of 180°) the strain is that of a point just inside.
 PointResult evaluate(const model::Body& body, int q, double xi, double eta, const Eigen::VectorXd& u);
 
 /// von Mises stress from sxx, syy, szz, sxy.
