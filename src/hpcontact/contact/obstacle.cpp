@@ -47,4 +47,17 @@ std::string RigidCircle::describe() const {
   return os.str();
 }
 
+DisplacedObstacle::DisplacedObstacle(ObstaclePtr base, Vec2 displacement)
+    : base_(std::move(base)), d_(displacement) {}
+
+double DisplacedObstacle::gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const {
+  return base_->gap(x - lambda_ * d_, normal, dnormal_dx);
+}
+
+std::string DisplacedObstacle::describe() const {
+  std::ostringstream os;
+  os << base_->describe() << " displaced by " << lambda_ << " x (" << d_.x() << "," << d_.y() << ")";
+  return os.str();
+}
+
 }  // namespace hpcontact::contact

@@ -20,6 +20,21 @@ public:
 
 using ObstaclePtr = std::shared_ptr<const Obstacle>;
 
+/// A rigid obstacle moved by a prescribed displacement d scaled by the load factor λ, like the
+/// prescribed displacements of the bodies: gap(x) = gap₀(x − λ d) (a translation keeps n, dn/dx).
+class DisplacedObstacle final : public Obstacle {
+public:
+  DisplacedObstacle(ObstaclePtr base, Vec2 displacement);
+  void set_load_factor(double lambda) { lambda_ = lambda; }
+  double gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const override;
+  std::string describe() const override;
+
+private:
+  ObstaclePtr base_;
+  Vec2 d_;
+  double lambda_ = 1;
+};
+
 /// Half-plane {(x - point)·normal < 0}; the body lies on the side the normal points to.
 class RigidPlane final : public Obstacle {
 public:

@@ -354,7 +354,9 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     say(os.str());
   }
   SolvedState st;
-  if (spec.contact.empty()) {
+  bool finite_strain = false;
+  for (const auto& b : d.bodies) finite_strain = finite_strain || b.finite_strain();
+  if (spec.contact.empty() && !finite_strain) {
     model::LinearSolveOptions lo;
     lo.condense = spec.discretization.condense;
     lo.solver = solve::linear_solver_kind(spec.solver.linear, spec.solver.where.str() + "linear");
@@ -372,11 +374,28 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     s.extra["assembly_time_s"] = sol.assembly_seconds;
   } else {
     auto sol = model::solve_contact(spec, d, options.progress);
-    HPC_REQUIRE(sol.converged, NumericalError, spec.file, ": the solver stopped: ", sol.message);
-    st.u = sol.u;
     s.newton_iterations = sol.newton_iterations;
     s.load_steps = sol.load_steps;
     s.extra["load_factor"] = sol.load_factor;
+    if (!sol.converged) {
+      // The last converged load step is kept apart, in last-good/, with converged: false: it
+      // cannot pass for the run's result (no summary.json in the output folder).
+      std::string kept;
+      if (!options.out_dir.empty() && sol.load_steps > 0) {
+        const std::string good = (fs::path(options.out_dir) / "last-good").string();
+        fs::create_directories(good);
+        const SolvedState last{&d, sol.u, sol.contact, sol.pairs};
+        post_process(spec, last, good, options, comparison, s);
+        s.converged = false;
+        s.extra["message"] = sol.message;
+        write_summary(good);
+        std::ostringstream os;
+        os << "; the last converged load step (factor " << sol.load_factor << ") is in " << good;
+        kept = os.str();
+      }
+      throw NumericalError(spec.file + ": the solver stopped: " + sol.message + kept);
+    }
+    st.u = sol.u;
     st.contact = std::move(sol.contact);
     st.pairs = std::move(sol.pairs);
   }

@@ -66,7 +66,11 @@ const std::vector<KeySpec>& input_schema() {
        .unit = "force/length³", .doc = "Force per unit volume, [bx, by]."},
 
       {.path = "bodies[].material.model", .type = T::choice, .default_yaml = "linear-elastic",
-       .doc = "Material law.", .choices = {"linear-elastic"}},
+       .doc = "Material law. `linear-elastic`: small strain. `saint-venant-kirchhoff` and "
+              "`neo-hooke` (compressible, W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2, plane "
+              "strain only): finite strain, total Lagrangian, solved by Newton in load steps; "
+              "stresses reported are Cauchy stresses on the deformed body, strains Green-Lagrange.",
+       .choices = {"linear-elastic", "saint-venant-kirchhoff", "neo-hooke"}},
       {.path = "bodies[].material.E", .type = T::number, .required = true,
        .unit = "force/length²", .doc = "Young's modulus.", .lower = greater_than(0)},
       {.path = "bodies[].material.nu", .type = T::number, .required = true,
@@ -170,7 +174,8 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Newton convergence: relative residual norm.",
        .lower = greater_than(0)},
       {.path = "solver.max_cuts", .type = T::integer, .default_yaml = "5",
-       .doc = "Halvings of a load step that does not converge.",
+       .doc = "Halvings in a row of a load step that does not converge (the step doubles "
+              "again, up to the nominal one, after two converged steps).",
        .lower = at_least(0)},
       {.path = "solver.target_resultant", .type = T::section,
        .doc = "Load control by force: the prescribed displacements are scaled until the contact "
@@ -232,6 +237,10 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "circle: radius; required if and only if type is circle.", .lower = greater_than(0)},
       {.path = "contact[].obstacle.inside", .type = T::boolean, .default_yaml = "false",
        .doc = "circle: false: the body stays outside the circle; true: inside it."},
+      {.path = "contact[].obstacle.displacement", .type = T::point, .default_yaml = "[0, 0]",
+       .unit = "length",
+       .doc = "plane, circle: rigid displacement of the obstacle, [dx, dy], applied with the load "
+              "factor like the prescribed displacements (a displacement-driven indenter)."},
 
       {.path = "exact", .type = T::section,
        .doc = "A closed-form solution to measure the error against; absent: none."},

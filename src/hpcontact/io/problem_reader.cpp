@@ -448,6 +448,11 @@ class SpecBuilder {
     const double length = std::hypot(o.normal[0], o.normal[1]);
     o.normal = {o.normal[0] / length, o.normal[1] / length};
     o.center = point(node["center"]);
+    o.displacement = point(node["displacement"]);
+    if (o.kind == ObstacleKind::body && (o.displacement[0] != 0 || o.displacement[1] != 0))
+      source_.fail(node["displacement"], path + ".displacement",
+                   "a body obstacle moves with its own constraints; displacement is for rigid "
+                   "obstacles (type: plane or circle)");
     const bool is_circle = o.kind == ObstacleKind::circle;
     if (is_circle && !node["radius"])
       source_.fail(node, path, "missing key 'radius' (required by type: circle)");

@@ -14,6 +14,8 @@
 #include "hpcontact/core/roots.hpp"
 #include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/fem/elasticity.hpp"
+#include "hpcontact/fem/finite_strain.hpp"
+#include "hpcontact/model/body_stress.hpp"
 #include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/model/linear_solve.hpp"
 
@@ -77,20 +79,98 @@ PairForces pair_forces(const Discretization& d, const ContactPair& pair, const E
   return f;
 }
 
-/// The contact system over the unknowns of the elastic operator: with static condensation only
+bool has_finite_strain(const Discretization& d) {
+  for (const auto& b : d.bodies)
+    if (b.finite_strain()) return true;
+  return false;
+}
+
+/// The internal forces of the finite-strain bodies at the state u (all dofs), their tangent's
+/// triplets into t if not null. The element values are computed once and kept.
+class FiniteStrainForces {
+public:
+  explicit FiniteStrainForces(const Discretization& d) : d_(d) {
+    for (int b = 0; b < static_cast<int>(d.bodies.size()); ++b) {
+      const Body& body = d.bodies[b];
+      if (!body.finite_strain()) continue;
+      for (int q = 0; q < body.mesh.n_quads(); ++q) {
+        elements_.push_back({b, q});
+        values_.push_back(fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q],
+                                              body.mesh, q));
+      }
+    }
+  }
+  bool empty() const { return elements_.empty(); }
+
+  /// Adds the internal forces into R (all dofs). Returns false, and says where in `inverted`,
+  /// when an element inverts (det F ≤ 0 at a quadrature point).
+  bool add(const Eigen::VectorXd& u, Eigen::VectorXd& R, std::vector<Eigen::Triplet<double>>* t,
+           std::string* inverted) const {
+    const int ne = static_cast<int>(elements_.size());
+    std::vector<fem::FiniteStrainElement> el(ne);
+#pragma omp parallel for schedule(dynamic)
+    for (int i = 0; i < ne; ++i) {
+      const Body& body = d_.bodies[elements_[i].body];
+      const int q = elements_[i].q;
+      el[i] = fem::finite_strain_element(values_[i], body.material, body.law, body.thickness,
+                                         body.element_coefficients(q, u), t != nullptr);
+    }
+    for (int i = 0; i < ne; ++i) {
+      const Body& body = d_.bodies[elements_[i].body];
+      const int q = elements_[i].q;
+      if (el[i].inverted()) {
+        if (inverted) {
+          const Vec2& X = values_[i].x[el[i].min_J_point];
+          std::ostringstream os;
+          os << "element " << body.mesh.quad_id(q) << " of body '" << body.name
+             << "' inverts: det F = " << el[i].min_J << " at (" << X.x() << ", " << X.y() << ")";
+          *inverted = os.str();
+        }
+        return false;
+      }
+      const int n = static_cast<int>(el[i].f_int.size());
+      for (int a = 0; a < n; ++a) R(body.global_dof(q, a)) += el[i].f_int(a);
+      if (!t) continue;
+      for (int a = 0; a < n; ++a)
+        for (int b = 0; b < n; ++b)
+          t->emplace_back(body.global_dof(q, a), body.global_dof(q, b), el[i].K(a, b));
+    }
+    return true;
+  }
+
+private:
+  struct Ref {
+    int body, q;
+  };
+  const Discretization& d_;
+  std::vector<Ref> elements_;
+  std::vector<fem::ElementValues> values_;
+};
+
+/// The nonlinear system over the unknowns of the elastic operator: with static condensation only
 /// the free external dofs, since contact acts on vertex and edge modes alone and the internal
-/// modes of the linear elastic elements can be eliminated once, before Newton.
+/// modes of the linear elastic elements can be eliminated once, before Newton (not with a
+/// finite-strain body, whose internal modes stay unknowns). Finite-strain bodies add their
+/// internal forces and tangents at every evaluation.
 class ContactSystem final : public solve::NonlinearSystem {
 public:
   ContactSystem(const Discretization& d, const std::vector<ContactPair>& pairs, bool condense,
                 bool fd_tangent = false)
       : d_(d),
         pairs_(pairs),
-        op_(assemble_elastic(d, condense)),
+        op_(assemble_elastic(d, condense && !has_finite_strain(d))),
         K_uu_(op_.unknown_block(d)),
+        finite_(d),
         fd_tangent_(fd_tangent) {}
 
-  void set_load_factor(double lambda) { lambda_ = lambda; }
+  /// Why the last evaluation failed (an inverted element), empty if it did not.
+  const std::string& failure() const { return failure_; }
+
+  void set_load_factor(double lambda) {
+    lambda_ = lambda;
+    for (const auto& pair : pairs_)
+      if (pair.moving) pair.moving->set_load_factor(lambda);
+  }
   /// The unknowns' values in a vector of all dofs.
   Eigen::VectorXd unknowns(const Eigen::VectorXd& u) const { return op_.restrict(d_, u); }
   int size() const override { return op_.n_unknowns; }
@@ -104,10 +184,18 @@ public:
     return u;
   }
 
-  /// Scale of the residual: the norm of the forces the current load produces.
-  double force_scale() const {
-    return op_.restrict(d_, op_.K * (lambda_ * d_.prescribed)).norm() +
-           lambda_ * op_.restrict(d_, op_.load).norm();
+  /// Scale of the residual: the norm of the forces the current load produces, and of the
+  /// internal forces at the state x (a load step that starts from a loaded state, e.g. a
+  /// displaced obstacle with no other load, must converge relative to those, not to its own
+  /// small increment).
+  double force_scale(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd f = op_.K * (lambda_ * d_.prescribed);
+    if (!finite_.empty()) finite_.add(lambda_ * d_.prescribed, f, nullptr, nullptr);
+    const Eigen::VectorXd u = full(x);
+    Eigen::VectorXd g = op_.K * u;
+    if (!finite_.empty()) finite_.add(u, g, nullptr, nullptr);
+    return op_.restrict(d_, f).norm() + lambda_ * op_.restrict(d_, op_.load).norm() +
+           op_.restrict(d_, g).norm();
   }
 
   void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve::SparseMatrix* K) override {
@@ -140,6 +228,12 @@ private:
                 PairStates* states, const PairStates* frozen) const {
     const Eigen::VectorXd u = full(x);
     Eigen::VectorXd R = op_.K * u - lambda_ * op_.load;
+    if (!finite_.empty() && !finite_.add(u, R, t, &failure_)) {
+      // An inverted element has no internal force: a not-finite residual makes Newton stop and
+      // the load step be cut.
+      r = Eigen::VectorXd::Constant(size(), std::numeric_limits<double>::quiet_NaN());
+      return;
+    }
     if (states) states->resize(pairs_.size());
     for (size_t k = 0; k < pairs_.size(); ++k) {
       const ContactPair& pair = pairs_[k];
@@ -179,7 +273,9 @@ private:
   const Discretization& d_;
   const std::vector<ContactPair>& pairs_;
   ElasticOperator op_;
-  solve::SparseMatrix K_uu_;  ///< the elastic tangent on the unknowns, constant
+  solve::SparseMatrix K_uu_;  ///< the linear bodies' tangent on the unknowns, constant
+  FiniteStrainForces finite_;
+  mutable std::string failure_;
   bool fd_tangent_ = false;   ///< the seed's finite-difference tangent instead of the analytic one
   double lambda_ = 1.0;
 };
@@ -220,12 +316,15 @@ std::pair<Vec2, Vec2> zone_end(const Body& body, const ContactPair& pair, int q,
   return {X, x};
 }
 
-/// -n·σ·n at local edge parameter t of element q.
-double stress_pressure(const Body& body, int q, int le, double t, const Vec2& n,
+/// -n·σ·n at local edge parameter t of element q, n the outward normal N of the undeformed
+/// boundary; under finite strain the Cauchy stress and the deformed normal F⁻ᵀN / |F⁻ᵀN|.
+double stress_pressure(const Body& body, int q, int le, double t, const Vec2& N,
                        const Eigen::VectorXd& u) {
   const auto r = fem::edge_reference_point(le, t);
   const auto pv = fem::point_values(body.dofs.element(q), body.maps[q], r[0], r[1]);
-  const Eigen::Vector3d sig = body.material.D() * fem::strain(pv, body.element_coefficients(q, u));
+  const auto ps = point_stress(body, pv, body.element_coefficients(q, u));
+  const Vec2 n = body.finite_strain() ? Vec2(ps.F.inverse().transpose() * N).normalized() : N;
+  const Eigen::Vector3d& sig = ps.stress;
   return -(n.x() * n.x() * sig(0) + n.y() * n.y() * sig(1) + 2 * n.x() * n.y() * sig(2));
 }
 
@@ -452,6 +551,12 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
                   ", ", deepest->X.y(), "), more than 1 % of its size (", size,
                   "): is the obstacle's position or normal (pointing towards the body) wrong?");
     }
+    if (pair.other < 0 && (o.displacement[0] != 0 || o.displacement[1] != 0)) {
+      pair.moving = std::make_shared<contact::DisplacedObstacle>(
+          pair.obstacle, Vec2(o.displacement[0], o.displacement[1]));
+      pair.moving->set_load_factor(0);
+      pair.obstacle = pair.moving;
+    }
     pairs.push_back(std::move(pair));
   }
   return pairs;
@@ -477,47 +582,64 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   // the solution (a deep first step): symmetric, but solved by LU.
   for (const auto& pair : pairs)
     if (pair.other >= 0) no.linear_solver = solve::LinearSolverKind::lu;
+  // The finite-strain tangent is indefinite wherever the body is unstable under compression
+  // (and may be on the way to a stable state): solved by LU.
+  if (has_finite_strain(d)) no.linear_solver = solve::LinearSolverKind::lu;
 
   NonlinearSolution sol;
+  double converged_factor = 0;  // the load factor of the last converged step
   Eigen::VectorXd x = Eigen::VectorXd::Zero(system.size());
   auto say = [&](const std::string& s) {
     if (progress) progress(s);
   };
 
-  // Load steps from the current factor to `target`, halving a step that does not converge.
+  // Load steps from the current factor to `target`, halving a step that does not converge (at
+  // most max_cuts times in a row) and doubling it again, up to the nominal step, after two
+  // steps in a row converged.
   auto advance_to = [&](double from, double target) -> bool {
     const int steps = std::max(1, ss.load_steps);
-    double lambda = from, step = (target - from) / steps;
-    int cuts = 0;
+    const double nominal = (target - from) / steps;
+    double lambda = from, step = nominal;
+    int cuts = 0, in_a_row = 0;
     while (std::abs(target - lambda) > 1e-14 * std::max(1.0, std::abs(target))) {
       const double next = std::abs(target - lambda) < std::abs(step) * (1 + 1e-12) ? target : lambda + step;
       system.set_load_factor(next);
-      no.reference_norm = system.force_scale();
+      no.reference_norm = system.force_scale(x);
       Eigen::VectorXd trial = x;
       const auto rep = solve::newton(system, trial, no);
       sol.newton_iterations += rep.iterations;
       if (rep.ok()) {
         x = trial;
-        lambda = next;
+        lambda = converged_factor = next;
         ++sol.load_steps;
         std::ostringstream os;
         os << "load step " << sol.load_steps << ": factor " << next << ", " << rep.iterations
            << " Newton iterations, |R| " << rep.residual_history.front() << " -> "
            << rep.residual_history.back();
         say(os.str());
+        cuts = 0;
+        if (++in_a_row >= 2 && std::abs(step) < std::abs(nominal)) {
+          step = std::abs(2 * step) < std::abs(nominal) ? 2 * step : nominal;
+          in_a_row = 0;
+        }
         continue;
       }
+      in_a_row = 0;
+      const std::string why =
+          rep.status == solve::SolveStatus::not_finite && !system.failure().empty()
+              ? rep.message + " (" + system.failure() + ")"
+              : rep.message;
       if (cuts == ss.max_cuts) {
         std::ostringstream os;
         os << "load step " << sol.load_steps + 1 << " (factor " << next << ") failed after " << cuts
-           << " cuts: " << rep.message << "; residual history:";
+           << " cuts: " << why << "; residual history:";
         for (double r : rep.residual_history) os << ' ' << r;
         sol.message = os.str();
         return false;
       }
       ++cuts;
       step *= 0.5;
-      say("load step did not converge (" + rep.message + "): cutting the step to " +
+      say("load step did not converge (" + why + "): cutting the step to " +
           std::to_string(step));
     }
     return true;
@@ -527,7 +649,16 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   // the caller expects to be close (the previous mesh's, in an adaptive loop).
   const double first = ss.target_resultant && initial_factor > 0 ? initial_factor : 1.0;
   double lambda = 0;
-  if (!advance_to(0.0, first)) return sol;
+  // A failed run keeps the last converged state (at converged_factor), marked not converged.
+  auto failed = [&]() {
+    system.set_load_factor(converged_factor);
+    sol.u = system.solution(x);
+    sol.load_factor = converged_factor;
+    for (const auto& pair : pairs) sol.contact.push_back(contact_result(d, pair, sol.u));
+    sol.pairs = pairs;
+    return sol;
+  };
+  if (!advance_to(0.0, first)) return failed();
   lambda = first;
   if (ss.target_resultant) {
     const auto& tr = *ss.target_resultant;
@@ -543,7 +674,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
                 "cannot be scaled to the target");
     double l1 = l0 * tr.value / (f0 + tr.value);
     for (int it = 0; it < 50; ++it) {
-      if (!advance_to(lambda, l1)) return sol;
+      if (!advance_to(lambda, l1)) return failed();
       lambda = l1;
       const double f1 = measured() - tr.value;
       std::ostringstream os;
@@ -557,7 +688,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       l1 = l2;
       if (it == 49) {
         sol.message = "force control did not reach the target resultant in 50 secant iterations";
-        return sol;
+        return failed();
       }
     }
   }

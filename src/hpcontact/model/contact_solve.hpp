@@ -26,6 +26,8 @@ struct ContactPair {
   std::vector<contact::ContactPoint> points;
   std::vector<int> edges;  ///< mesh edges of the contact boundary, in order
   contact::ObstaclePtr obstacle;
+  /// The same obstacle when it moves (a rigid obstacle with a displacement), else null.
+  std::shared_ptr<contact::DisplacedObstacle> moving;
   int other = -1;  ///< the other body of a bilateral pair, -1 against a rigid obstacle
   std::vector<contact::ContactPoint> other_points;
   std::shared_ptr<const contact::DeformableBoundary> boundary, other_boundary;
@@ -60,11 +62,13 @@ struct ContactResult {
 };
 
 struct NonlinearSolution {
-  Eigen::VectorXd u;  ///< all dofs
+  /// All dofs; when not converged, those of the last converged load step (at load_factor, 0
+  /// if none converged) — a state to inspect, not a solution of the problem as posed.
+  Eigen::VectorXd u;
   bool converged = false;
   std::string message;  ///< why it stopped, when not converged
   int newton_iterations = 0, load_steps = 0;
-  double load_factor = 1;  ///< factor on the prescribed displacements and loads
+  double load_factor = 1;  ///< factor on the prescribed displacements and loads reached
   std::vector<ContactPair> pairs;     ///< the contact pairs solved, for post-processing
   std::vector<ContactResult> contact;  ///< per pair
 };

@@ -85,6 +85,11 @@ Body make_body(const ProblemSpec& spec, int b) {
   mat.validate(bs.material.where.str());
 
   Body body{bs.name, std::move(mesh), std::move(dofs), {}, {}, mat, bs.material.thickness, 0, {}};
+  if (bs.material.model == "saint-venant-kirchhoff") body.law = material::Law::saint_venant_kirchhoff;
+  if (bs.material.model == "neo-hooke") body.law = material::Law::neo_hooke;
+  HPC_REQUIRE(body.law != material::Law::neo_hooke || mat.plane == material::Plane::strain, InputError,
+              bs.material.where.str(), ".plane: neo-hooke is implemented in plane strain only "
+              "(use plane: strain, or saint-venant-kirchhoff in plane stress)");
   for (int q = 0; q < body.mesh.n_quads(); ++q) {
     body.maps.push_back(opt.lagrange ? mesh::ElementMap::isoparametric(body.mesh, q, opt.lagrange_type)
                                      : mesh::ElementMap::blending(body.mesh, q));

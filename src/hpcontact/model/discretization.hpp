@@ -8,7 +8,7 @@
 #include <Eigen/Dense>
 
 #include "hpcontact/fem/dof_map.hpp"
-#include "hpcontact/material/linear_elastic.hpp"
+#include "hpcontact/material/hyperelastic.hpp"
 #include "hpcontact/mesh/element_map.hpp"
 #include "hpcontact/mesh/mesh.hpp"
 #include "hpcontact/model/problem_spec.hpp"
@@ -26,6 +26,9 @@ struct Body {
   double thickness = 1.0;
   int dof_offset = 0;
   std::map<std::string, std::vector<int>> edge_sets;  ///< name -> mesh edges
+  /// Linear elasticity, or a hyperelastic law of finite strain (total Lagrangian).
+  material::Law law = material::Law::linear;
+  bool finite_strain() const { return law != material::Law::linear; }
 
   /// Global dof of local dof `local` (component-blocked) of element q.
   int global_dof(int q, int local) const {

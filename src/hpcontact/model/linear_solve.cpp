@@ -20,7 +20,8 @@ ElasticOperator assemble_elastic(const Discretization& d, bool condense) {
   };
   std::vector<Ref> refs;
   for (int b = 0; b < static_cast<int>(d.bodies.size()); ++b)
-    for (int q = 0; q < d.bodies[b].mesh.n_quads(); ++q) refs.push_back({b, q});
+    if (!d.bodies[b].finite_strain())
+      for (int q = 0; q < d.bodies[b].mesh.n_quads(); ++q) refs.push_back({b, q});
 
   ElasticOperator op;
   op.n_unknowns = condense ? d.n_free_external : d.n_free;

@@ -14,7 +14,8 @@ namespace hpcontact::model {
 /// Element stiffness of element q of a body (component-blocked local order).
 Eigen::MatrixXd element_stiffness(const Body& body, int q);
 
-/// The linear elastic part K u - f of a problem, assembled once over all dofs. With static
+/// The linear elastic part K u - f of a problem, assembled once over all dofs (the bodies of
+/// linear elasticity; finite-strain bodies contribute nothing to K, only their loads). With static
 /// condensation every element's internal modes are eliminated first (they are never prescribed
 /// and belong to one element), so K and load act on the external dofs only and the unknowns
 /// are the free external dofs; the internal ones are recovered afterwards.

@@ -149,6 +149,7 @@ struct ObstacleSpec {
   std::array<double, 2> center{0, 0};
   double radius = 0;
   bool inside = false;
+  std::array<double, 2> displacement{0, 0};  ///< plane, circle: moved by λ × this
   std::string body;                    ///< body: the other deformable body
   std::vector<std::string> edge_sets;  ///< body: its contact edge sets
 };

@@ -5,6 +5,8 @@
 
 #include "hpcontact/fem/elasticity.hpp"
 #include "hpcontact/fem/element_values.hpp"
+#include "hpcontact/fem/finite_strain.hpp"
+#include "hpcontact/model/body_stress.hpp"
 
 namespace hpcontact::post {
 
@@ -21,16 +23,17 @@ PointResult evaluate(const model::Body& body, int q, double xi, double eta, cons
   PointResult r;
   r.x = pv.x;
   r.u = Vec2(ue.head(n).dot(pv.N), ue.tail(n).dot(pv.N));
-  r.strain = fem::strain(pv, ue);
-  if (!r.strain.allFinite()) {
+  auto ps = model::point_stress(body, pv, ue);
+  if (!ps.strain.allFinite() || !ps.stress.allFinite()) {
     // det J = 0 at a corner of 180° (two edges on one circle, node 3 of the Hertz 2×2 mesh):
     // the strain there is taken a hair inside the element, at the exact position.
     const auto inner = fem::point_values(body.dofs.element(q), body.maps[q], xi * (1 - 1e-7),
                                          eta * (1 - 1e-7));
-    r.strain = fem::strain(inner, ue);
+    ps = model::point_stress(body, inner, ue);
   }
-  r.stress = body.material.D() * r.strain;
-  r.stress_zz = body.material.sigma_zz(r.stress);
+  r.strain = ps.strain;
+  r.stress = ps.stress;
+  r.stress_zz = ps.stress_zz;
   r.von_mises = von_mises(r.stress(0), r.stress(1), r.stress_zz, r.stress(2));
   const double c = 0.5 * (r.stress(0) + r.stress(1));
   const double R = std::hypot(0.5 * (r.stress(0) - r.stress(1)), r.stress(2));
@@ -46,6 +49,12 @@ double strain_energy(const model::Discretization& d, const Eigen::VectorXd& u) {
     for (int q = 0; q < body.mesh.n_quads(); ++q) {
       const auto ev = fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q],
                                           body.mesh, q);
+      if (body.finite_strain()) {
+        U += fem::finite_strain_element(ev, body.material, body.law, body.thickness,
+                                        body.element_coefficients(q, u), false)
+                 .energy;
+        continue;
+      }
       const Eigen::Matrix3Xd eps = fem::strains(ev, body.element_coefficients(q, u));
       for (int k = 0; k < ev.n_points(); ++k)
         U += 0.5 * body.thickness * ev.JxW(k) * eps.col(k).dot(D * eps.col(k));

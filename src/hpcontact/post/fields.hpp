@@ -12,8 +12,8 @@ namespace hpcontact::post {
 struct PointResult {
   Vec2 x;                    ///< physical point
   Vec2 u;                    ///< displacement
-  Eigen::Vector3d strain;    ///< (xx, yy, gamma_xy)
-  Eigen::Vector3d stress;    ///< (xx, yy, xy)
+  Eigen::Vector3d strain;    ///< (xx, yy, gamma_xy); Green–Lagrange under finite strain
+  Eigen::Vector3d stress;    ///< (xx, yy, xy); Cauchy under finite strain
   double stress_zz = 0;      ///< out of plane: nu (sxx + syy) in plane strain
   double von_mises = 0;      ///< from all four stress components
   double principal_1 = 0;    ///< larger in-plane principal stress
@@ -27,7 +27,8 @@ PointResult evaluate(const model::Body& body, int q, double xi, double eta, cons
 /// von Mises stress from sxx, syy, szz, sxy.
 double von_mises(double sxx, double syy, double szz, double sxy);
 
-/// U = ½ B(u, u) = ½ ∫ eps^T D eps t dA over all bodies (seed eq. 2.31).
+/// U = ½ B(u, u) = ½ ∫ eps^T D eps t dA over all bodies (seed eq. 2.31); for a finite-strain
+/// body ∫ W(F) t dA over the reference body.
 double strain_energy(const model::Discretization& d, const Eigen::VectorXd& u);
 
 /// Exact strain (xx, yy, gamma_xy) as a function of the physical point.

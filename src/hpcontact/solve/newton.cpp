@@ -15,9 +15,20 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
   SparseMatrix K;
   LinearSolver solver(options.linear_solver);
   double scale = 0;
+  Eigen::VectorXd dx;
   for (int it = 0;; ++it) {
     system.evaluate(x, r, &K);
-    const double rn = r.norm();
+    double rn = r.norm();
+    // A correction that leaves the admissible states (an element turned inside out under finite
+    // strain: no residual there) is halved back towards the last state, up to kBacktracks times.
+    constexpr int kBacktracks = 12;
+    for (int b = 0; b < kBacktracks && it > 0 && !std::isfinite(rn); ++b) {
+      dx *= 0.5;
+      x -= dx;
+      ++report.backtracks;
+      system.evaluate(x, r, &K);
+      rn = r.norm();
+    }
     report.residual_history.push_back(rn);
     if (!std::isfinite(rn)) {
       report.status = SolveStatus::not_finite;
@@ -47,7 +58,7 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
       report.iterations = it;
       return report;
     }
-    const Eigen::VectorXd dx = solver.solve(-r);
+    dx = solver.solve(-r);
     x += dx;
     if (callback) callback(it + 1, rn, dx.norm());
   }

@@ -36,6 +36,7 @@ struct SolveReport {
   SolveStatus status = SolveStatus::max_iterations;
   std::string message;
   int iterations = 0;
+  int backtracks = 0;  ///< corrections halved because the residual was not finite there
   std::vector<double> residual_history;  ///< ||R|| before each iteration, and at the end
   bool ok() const { return status == SolveStatus::converged; }
 };
