@@ -154,14 +154,19 @@ private:
 /// internal forces and tangents at every evaluation.
 class ContactSystem final : public solve::NonlinearSystem {
 public:
+  /// How the Newton tangent is formed: analytic; the seed's differences (normals of the
+  /// undisturbed state frozen, symmetrised); plain central differences of the residual (the
+  /// exact Jacobian to O(h²), for checking the analytic one).
+  enum class Tangent { analytic, seed_difference, central_difference };
+
   ContactSystem(const Discretization& d, const std::vector<ContactPair>& pairs, bool condense,
-                bool fd_tangent = false)
+                Tangent tangent = Tangent::analytic)
       : d_(d),
         pairs_(pairs),
         op_(assemble_elastic(d, condense && !has_finite_strain(d))),
         K_uu_(op_.unknown_block(d)),
         finite_(d),
-        fd_tangent_(fd_tangent) {}
+        tangent_(tangent) {}
 
   /// Why the last evaluation failed (an inverted element), empty if it did not.
   const std::string& failure() const { return failure_; }
@@ -199,10 +204,10 @@ public:
   }
 
   void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve::SparseMatrix* K) override {
-    if (K && fd_tangent_) {
+    if (K && tangent_ != Tangent::analytic) {
       PairStates undisturbed;
       residual(x, r, nullptr, &undisturbed, nullptr);
-      *K = finite_difference_tangent(x, undisturbed);
+      *K = finite_difference_tangent(x, tangent_ == Tangent::seed_difference ? &undisturbed : nullptr);
       return;
     }
     std::vector<Eigen::Triplet<double>> t;
@@ -248,23 +253,25 @@ private:
   /// The seed's tangent (eq. 3.35–3.36): column m by central differences of the whole residual
   /// with the step h_m = ν (|x_m| + 1e-3), ν = 1e-6 (< √η; below the seed's 1e-5 because a
   /// column straddling a contact switch is wrong and a small step makes that rare), the normals
-  /// of the undisturbed state kept.
+  /// of the undisturbed state kept. Without `undisturbed`: plain central differences, not
+  /// symmetrised.
   solve::SparseMatrix finite_difference_tangent(const Eigen::VectorXd& x,
-                                                const PairStates& undisturbed) const {
+                                                const PairStates* undisturbed) const {
     std::vector<Eigen::Triplet<double>> t;
     Eigen::VectorXd xd = x, r_plus, r_minus;
     for (int m = 0; m < size(); ++m) {
       const double h = 1e-6 * (std::abs(x(m)) + 1e-3);
       xd(m) = x(m) + h / 2;
-      residual(xd, r_plus, nullptr, nullptr, &undisturbed);
+      residual(xd, r_plus, nullptr, nullptr, undisturbed);
       xd(m) = x(m) - h / 2;
-      residual(xd, r_minus, nullptr, nullptr, &undisturbed);
+      residual(xd, r_minus, nullptr, nullptr, undisturbed);
       xd(m) = x(m);
       for (int i = 0; i < size(); ++i)
         if (const double v = (r_plus(i) - r_minus(i)) / h; v != 0) t.emplace_back(i, m, v);
     }
     solve::SparseMatrix K(size(), size());
     K.setFromTriplets(t.begin(), t.end());
+    if (!undisturbed) return K;
     // Central differences are symmetric up to round-off and up to columns straddling a contact
     // switch; the seed solves the symmetric part ("symmetric equation system"), and so do we.
     return solve::SparseMatrix(0.5 * (K + solve::SparseMatrix(K.transpose())));
@@ -276,7 +283,7 @@ private:
   solve::SparseMatrix K_uu_;  ///< the linear bodies' tangent on the unknowns, constant
   FiniteStrainForces finite_;
   mutable std::string failure_;
-  bool fd_tangent_ = false;   ///< the seed's finite-difference tangent instead of the analytic one
+  Tangent tangent_ = Tangent::analytic;
   double lambda_ = 1.0;
 };
 
@@ -570,7 +577,9 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     HPC_REQUIRE(pair.other < 0 || ss.tangent == "analytic", InputError, ss.where.str(),
                 "tangent: finite-difference is implemented for rigid obstacles only; contact "
                 "between two bodies needs tangent: analytic");
-  ContactSystem system(d, pairs, spec.discretization.condense, ss.tangent == "finite-difference");
+  ContactSystem system(d, pairs, spec.discretization.condense,
+                       ss.tangent == "finite-difference" ? ContactSystem::Tangent::seed_difference
+                                                         : ContactSystem::Tangent::analytic);
   solve::NewtonOptions no;
   no.max_iterations = ss.max_iterations;
   no.tolerance = ss.tolerance;
@@ -700,10 +709,12 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   return sol;
 }
 
-solve::SparseMatrix contact_tangent(const ProblemSpec& spec, const Discretization& d,
-                                    const NonlinearSolution& sol, bool finite_difference,
-                                    Eigen::VectorXd* residual) {
-  ContactSystem system(d, sol.pairs, spec.discretization.condense, finite_difference);
+namespace {
+
+solve::SparseMatrix tangent_at(const ProblemSpec& spec, const Discretization& d,
+                               const NonlinearSolution& sol, ContactSystem::Tangent kind,
+                               Eigen::VectorXd* residual) {
+  ContactSystem system(d, sol.pairs, spec.discretization.condense, kind);
   system.set_load_factor(sol.load_factor);
   const Eigen::VectorXd x = system.unknowns(sol.u);
   Eigen::VectorXd r;
@@ -711,6 +722,22 @@ solve::SparseMatrix contact_tangent(const ProblemSpec& spec, const Discretizatio
   system.evaluate(x, r, &K);
   if (residual) *residual = r;
   return K;
+}
+
+}  // namespace
+
+solve::SparseMatrix contact_tangent(const ProblemSpec& spec, const Discretization& d,
+                                    const NonlinearSolution& sol, bool finite_difference,
+                                    Eigen::VectorXd* residual) {
+  return tangent_at(spec, d, sol,
+                    finite_difference ? ContactSystem::Tangent::seed_difference
+                                      : ContactSystem::Tangent::analytic,
+                    residual);
+}
+
+solve::SparseMatrix residual_jacobian_by_differences(const ProblemSpec& spec, const Discretization& d,
+                                                     const NonlinearSolution& sol) {
+  return tangent_at(spec, d, sol, ContactSystem::Tangent::central_difference, nullptr);
 }
 
 }  // namespace hpcontact::model

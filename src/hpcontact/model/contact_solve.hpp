@@ -116,4 +116,10 @@ solve::SparseMatrix contact_tangent(const ProblemSpec& spec, const Discretizatio
                                     const NonlinearSolution& sol, bool finite_difference,
                                     Eigen::VectorXd* residual = nullptr);
 
+/// The Jacobian of the residual at a solution by plain central differences, every normal and
+/// every finite-strain term re-evaluated (not the seed's frozen-normal variant, not
+/// symmetrised): what the analytic tangent must equal, to O(h²). For tests.
+solve::SparseMatrix residual_jacobian_by_differences(const ProblemSpec& spec, const Discretization& d,
+                                                     const NonlinearSolution& sol);
+
 }  // namespace hpcontact::model
