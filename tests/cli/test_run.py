@@ -133,7 +133,9 @@ def test_hertz_run_writes_contact_curve(hpcontact, root, tmp_path):
     assert s["converged"] and s["dofs"] == 544
     assert abs(s["contact"]["resultant"][1] - 35000) < 35
     lines = (tmp_path / "contact.csv").read_text().splitlines()
-    assert lines[0] == "pair,X,Y,x,y,gap,pressure,pressure_from_stress"
+    assert lines[0] == ("pair,X,Y,x,y,gap,pressure,pressure_from_stress,tangential_gap,"
+                        "tangential_traction,slip,state")
+    assert {line.rsplit(",", 1)[1] for line in lines[1:]} <= {"open", "contact"}  # frictionless
     assert len(lines) == 1 + 2 * 50
     # the comparison with the closed forms: its keys, and its curves on [0, 1.5 b_Hertz]
     for key in ("e_L2_hertz_percent", "e_L2_shtayerman_percent", "e_seed_hertz_percent",

@@ -16,6 +16,9 @@ public:
   /// unit normal n at the closest point, and dn/dx (for the consistent tangent).
   virtual double gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const = 0;
   virtual std::string describe() const = 0;
+  /// How far the obstacle has moved (a displaced obstacle): anchors of friction on it are kept
+  /// in its own frame and moved by this.
+  virtual Vec2 offset() const { return Vec2::Zero(); }
 };
 
 using ObstaclePtr = std::shared_ptr<const Obstacle>;
@@ -28,6 +31,7 @@ public:
   void set_load_factor(double lambda) { lambda_ = lambda; }
   double gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const override;
   std::string describe() const override;
+  Vec2 offset() const override { return lambda_ * d_; }
 
 private:
   ObstaclePtr base_;

@@ -1,12 +1,15 @@
 // Gauss-point penalty contact against a rigid obstacle with its consistent tangent.
 #include "hpcontact/contact/penalty.hpp"
 
+#include <cmath>
+
 namespace hpcontact::contact {
 
 void penalty_contact(const std::vector<ContactPoint>& points, const Obstacle& obstacle,
                      double eps_n, const Eigen::VectorXd& u, Eigen::VectorXd& force,
                      std::vector<Eigen::Triplet<double>>* tangent, int offset,
-                     std::vector<PointState>* states, const std::vector<PointState>* frozen) {
+                     std::vector<PointState>* states, const std::vector<PointState>* frozen,
+                     FrictionInput friction) {
   if (states) states->assign(points.size(), PointState{});
   for (size_t i = 0; i < points.size(); ++i) {
     const ContactPoint& cp = points[i];
@@ -25,17 +28,35 @@ void penalty_contact(const std::vector<ContactPoint>& points, const Obstacle& ob
       g = obstacle.gap(x, &n, tangent ? &dn : nullptr);
     }
     const double pen = g < 0 ? -g : 0.0;
-    if (states) (*states)[i] = PointState{x, g, eps_n * pen, eps_n * pen * n, n};
+    PointState ps{x, g, eps_n * pen, eps_n * pen * n, n};
+    ps.tau = Vec2(n.y(), -n.x());
+    ps.foot = x - g * n;
     // g = 0 counts as active: the force is zero there but the tangent takes the side of
     // contact, so a body that touches its support without load (a zero initial gap) is held.
+    Tangential tr;
+    const FrictionHistory* h = friction.active() ? &(*friction.history)[i] : nullptr;
+    if (g <= 0 && h && h->anchored) {
+      ps.tau = h->tau;
+      ps.g_t = (x - (h->anchor + obstacle.offset())).dot(h->tau);
+      tr = return_map(*friction.law, ps.g_t, h->slip, ps.pressure);
+      ps.t_t = tr.traction;
+      ps.slip = tr.slip;
+      ps.stick_slip = tr.state;
+      ps.traction -= tr.traction * h->tau;
+    }
+    if (states) (*states)[i] = ps;
     if (g > 0) continue;
-    const Vec2 f = cp.weight * eps_n * pen * n;
+    const Vec2 f = cp.weight * ps.traction;
     for (int k = 0; k < m; ++k) {
       force(2 * cp.modes[k]) += cp.N(k) * f.x();
       force(2 * cp.modes[k] + 1) += cp.N(k) * f.y();
     }
     if (!tangent) continue;
-    const Mat2 C = cp.weight * eps_n * (n * n.transpose() + g * dn);
+    Mat2 C = cp.weight * eps_n * (n * n.transpose() + g * dn);
+    if (tr.state == StickSlip::stick)
+      C += cp.weight * friction.law->eps_t * h->tau * h->tau.transpose();
+    else if (tr.state == StickSlip::slip)
+      C -= cp.weight * friction.law->mu * std::copysign(1.0, tr.traction) * eps_n * h->tau * n.transpose();
     for (int a = 0; a < m; ++a)
       for (int b = 0; b < m; ++b) {
         const double nn = cp.N(a) * cp.N(b);

@@ -7,6 +7,7 @@
 #include <Eigen/Sparse>
 
 #include "hpcontact/contact/contact_boundary.hpp"
+#include "hpcontact/contact/friction.hpp"
 #include "hpcontact/contact/obstacle.hpp"
 
 namespace hpcontact::contact {
@@ -16,8 +17,26 @@ struct PointState {
   Vec2 x;                 ///< deformed position
   double gap = 0;         ///< signed normal gap g_N (negative: penetration)
   double pressure = 0;    ///< penalty pressure p_N = eps_N <-g_N> (>= 0, compressive)
-  Vec2 traction;          ///< traction on the body, p_N n_obstacle
+  Vec2 traction;          ///< traction on the body, p_N n_obstacle − t_T τ
   Vec2 normal;            ///< the obstacle's outward normal at the closest point
+  // Friction (zero and open without it):
+  double g_t = 0;         ///< tangential gap (x − x_anchor)·τ of an anchored point
+  double t_t = 0;         ///< tangential traction t_T along τ (the body receives −t_T τ)
+  double slip = 0;        ///< accumulated slip after the return mapping
+  StickSlip stick_slip = StickSlip::open;
+  Vec2 tau = Vec2(1, 0);  ///< the tangent t_T acts along (anchored), else the current one
+  // Where the point's projection lies, for anchoring it (two bodies: edge and parameter of the
+  // other's boundary; rigid: the closest point of the obstacle, x − g n).
+  int foot_edge = -1;
+  double foot_t = 0;
+  Vec2 foot = Vec2::Zero();
+};
+
+/// Friction of a pair's points: the law and each point's history (both may be absent).
+struct FrictionInput {
+  const FrictionLaw* law = nullptr;
+  const std::vector<FrictionHistory>* history = nullptr;
+  bool active() const { return law && law->active() && history; }
 };
 
 /// Penalty contribution of all points against an obstacle.
@@ -33,10 +52,14 @@ struct PointState {
 /// With `frozen` (the states of an undisturbed evaluation), the gap is evaluated with the
 /// normal of that state, g = g_0 + n_0·(x − x_0), as the seed's finite-difference tangent
 /// requires (footnote to eq. 3.36): a disturbed point does not turn its normal.
+///
+/// With friction, an anchored active point adds the tangential force −w t_T τ N (t_T from
+/// return_map) and the tangent w ∂t_T/∂u τ Nᵀ: ε_T τ τᵀ N Nᵀ in stick, −μ s ε_N τ nᵀ N Nᵀ in
+/// slip (s = sign t_T; not symmetric).
 void penalty_contact(const std::vector<ContactPoint>& points, const Obstacle& obstacle,
                      double eps_n, const Eigen::VectorXd& u, Eigen::VectorXd& force,
                      std::vector<Eigen::Triplet<double>>* tangent, int offset,
                      std::vector<PointState>* states,
-                     const std::vector<PointState>* frozen = nullptr);
+                     const std::vector<PointState>* frozen = nullptr, FrictionInput friction = {});
 
 }  // namespace hpcontact::contact

@@ -11,7 +11,7 @@ void two_body_contact(const std::vector<ContactPoint>& points, const Eigen::Vect
                       const DeformableBoundary& master, double eps_n, double weight_factor,
                       Eigen::VectorXd& force_s, Eigen::VectorXd& force_m,
                       std::vector<Eigen::Triplet<double>>* tangent, int offset_s, int offset_m,
-                      std::vector<PointState>* states) {
+                      std::vector<PointState>* states, FrictionInput friction) {
   if (states) states->assign(points.size(), PointState{});
   BoundaryPoint foot;
   for (size_t i = 0; i < points.size(); ++i) {
@@ -27,9 +27,53 @@ void two_body_contact(const std::vector<ContactPoint>& points, const Eigen::Vect
     const Vec2 n = foot.normal, t = foot.dx_dt;
     const double g = (xs - foot.x).dot(n);
     const double p = g < 0 ? -eps_n * g : 0.0;
-    if (states) (*states)[i] = PointState{xs, g, p, p * n, n};
+    PointState ps{xs, g, p, p * n, n};
+    ps.tau = t.normalized();
+    ps.foot_edge = foot.edge;
+    ps.foot_t = foot.t;
+    ps.foot = foot.x;
+    const FrictionHistory* h = friction.active() ? &(*friction.history)[i] : nullptr;
+    Tangential tr;
+    BoundaryPoint at;  // the anchor, deformed
+    if (g <= 0 && h && h->anchored) {
+      master.evaluate(h->edge, h->t, at);
+      ps.tau = h->tau;
+      ps.g_t = (xs - at.x).dot(h->tau);
+      tr = return_map(*friction.law, ps.g_t, h->slip, p);
+      ps.t_t = tr.traction;
+      ps.slip = tr.slip;
+      ps.stick_slip = tr.state;
+      ps.traction -= tr.traction * h->tau;
+    }
+    if (states) (*states)[i] = ps;
     if (g > 0) continue;
     const double w = weight_factor * cp.weight;
+    if (tr.state != StickSlip::open) {
+      // G_T on the slave's modes and the anchor's modes of the master: forces −w t_T G_T.
+      for (int k = 0; k < ms; ++k)
+        for (int c = 0; c < 2; ++c) force_s(2 * cp.modes[k] + c) -= w * tr.traction * cp.N(k) * h->tau(c);
+      for (size_t k = 0; k < at.modes.size(); ++k)
+        for (int c = 0; c < 2; ++c) force_m(2 * at.modes[k] + c) += w * tr.traction * at.N(k) * h->tau(c);
+      if (tangent) {
+        // (global dof, value) of G_T and, in slip, of G_n.
+        std::vector<std::pair<int, double>> GT, Gn;
+        for (int k = 0; k < ms; ++k)
+          for (int c = 0; c < 2; ++c) {
+            GT.emplace_back(offset_s + 2 * cp.modes[k] + c, cp.N(k) * h->tau(c));
+            Gn.emplace_back(offset_s + 2 * cp.modes[k] + c, cp.N(k) * n(c));
+          }
+        for (size_t k = 0; k < at.modes.size(); ++k)
+          for (int c = 0; c < 2; ++c) GT.emplace_back(offset_m + 2 * at.modes[k] + c, -at.N(k) * h->tau(c));
+        for (size_t k = 0; k < foot.modes.size(); ++k)
+          for (int c = 0; c < 2; ++c) Gn.emplace_back(offset_m + 2 * foot.modes[k] + c, -foot.N(k) * n(c));
+        const bool stick = tr.state == StickSlip::stick;
+        const double f = stick ? w * friction.law->eps_t
+                               : -w * friction.law->mu * std::copysign(1.0, tr.traction) * eps_n;
+        for (const auto& [r, vr] : GT)
+          for (const auto& [c, vc] : stick ? GT : Gn)
+            if (vr * vc != 0.0) tangent->emplace_back(r, c, f * vr * vc);
+      }
+    }
     const int mm = static_cast<int>(foot.modes.size());
     // local dofs: body s's modes first (2 components each), then body m's
     const int L = 2 * (ms + mm);

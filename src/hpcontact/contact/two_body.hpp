@@ -25,10 +25,14 @@ namespace hpcontact::contact {
 /// and the tangent of an active point is w (ε_N G_n G_nᵀ − p_N M), p_N = ε_N <−g>.
 /// force_s and force_m receive the contact forces −∂Π/∂u on each body's dofs; `tangent` (may
 /// be null) the triplets of ∂²Π/∂u², rows and columns offset by offset_s and offset_m.
+///
+/// With friction, an anchored active point has g_T = (x_s − x_m(anchor))·τ (τ frozen), G_T =
+/// ∂g_T/∂u (N_s τ on s, −N_m(anchor) τ on m), the forces −w t_T G_T and the tangent
+/// w G_T ∂t_T/∂uᵀ: ε_T G_T G_Tᵀ in stick, −μ s ε_N G_T G_nᵀ in slip (not symmetric).
 void two_body_contact(const std::vector<ContactPoint>& points, const Eigen::VectorXd& u_s,
                       const DeformableBoundary& master, double eps_n, double weight_factor,
                       Eigen::VectorXd& force_s, Eigen::VectorXd& force_m,
                       std::vector<Eigen::Triplet<double>>* tangent, int offset_s, int offset_m,
-                      std::vector<PointState>* states);
+                      std::vector<PointState>* states, FrictionInput friction = {});
 
 }  // namespace hpcontact::contact

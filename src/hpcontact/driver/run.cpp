@@ -103,6 +103,42 @@ nlohmann::json contact_json(const SolvedState& st, const PressureComparison* com
   cj["p_max"] = c.p_max;
   cj["resultant"] = {c.resultant.x(), c.resultant.y()};
   cj["max_penetration"] = c.max_penetration;
+  if (const auto& pair = st.pairs.front(); pair.friction.active()) {
+    // Stick and slip along the interface: counts, the largest |t_T| / (mu p_N) of each state,
+    // and where the state changes between neighbouring points (midway between them).
+    nlohmann::json fj;
+    const bool coulomb = pair.friction.kind == contact::FrictionLaw::Kind::coulomb;
+    fj["law"] = coulomb ? "coulomb" : "stick";
+    if (coulomb) fj["mu"] = pair.friction.mu;
+    fj["penalty"] = pair.friction.eps_t;
+    int n_stick = 0, n_slip = 0;
+    double stick_ratio = 0, slip_ratio = 0;
+    std::vector<Vec2> transitions;
+    const contact::PointState* previous = nullptr;
+    for (size_t i = 0; i < c.states.size(); ++i) {
+      const auto& s = c.states[i];
+      const double ratio = s.pressure > 0 && coulomb ? std::abs(s.t_t) / (pair.friction.mu * s.pressure) : 0;
+      if (s.stick_slip == contact::StickSlip::stick) {
+        ++n_stick;
+        stick_ratio = std::max(stick_ratio, ratio);
+      } else if (s.stick_slip == contact::StickSlip::slip) {
+        ++n_slip;
+        slip_ratio = std::max(slip_ratio, ratio);
+      }
+      if (previous && previous->stick_slip != contact::StickSlip::open &&
+          s.stick_slip != contact::StickSlip::open && previous->stick_slip != s.stick_slip)
+        transitions.push_back(0.5 * (pair.points[i - 1].X + pair.points[i].X));
+      previous = &s;
+    }
+    fj["stick_points"] = n_stick;
+    fj["slip_points"] = n_slip;
+    if (coulomb) {
+      fj["max_stick_ratio"] = stick_ratio;
+      fj["max_slip_ratio"] = slip_ratio;
+    }
+    fj["stick_slip_transitions"] = points_json(transitions);
+    cj["friction"] = fj;
+  }
   if (comparison) {
     std::vector<double> zone_ends;
     for (const auto& g : c.gamma_star) zone_ends.push_back(st.pairs.front().coordinate(g));
@@ -135,13 +171,20 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
   if (!st.contact.empty()) {
     // The interface curve: one row per contact Gauss point.
     std::ostringstream csv;
-    csv << std::setprecision(12) << "pair,X,Y,x,y,gap,pressure,pressure_from_stress\n";
+    csv << std::setprecision(12)
+        << "pair,X,Y,x,y,gap,pressure,pressure_from_stress,tangential_gap,tangential_traction,"
+           "slip,state\n";
     for (size_t k = 0; k < st.contact.size(); ++k)
       for (size_t i = 0; i < st.contact[k].states.size(); ++i) {
         const auto& p = st.contact[k].states[i];
         const auto& X = st.pairs[k].points[i].X;
+        const char* state = p.gap > 0 ? "open"
+                            : p.stick_slip == contact::StickSlip::stick ? "stick"
+                            : p.stick_slip == contact::StickSlip::slip  ? "slip"
+                                                                       : "contact";
         csv << k << ',' << X.x() << ',' << X.y() << ',' << p.x.x() << ',' << p.x.y() << ','
-            << p.gap << ',' << p.pressure << ',' << st.contact[k].stress_pressure[i] << '\n';
+            << p.gap << ',' << p.pressure << ',' << st.contact[k].stress_pressure[i] << ','
+            << p.g_t << ',' << p.t_t << ',' << p.slip << ',' << state << '\n';
       }
     post::write_text_file((out / "contact.csv").string(), csv.str());
   }

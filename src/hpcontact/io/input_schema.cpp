@@ -65,6 +65,26 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "bodies[].body_force", .type = T::point, .default_yaml = "[0, 0]",
        .unit = "force/length³", .doc = "Force per unit volume, [bx, by]."},
 
+      {.path = "bodies[].regions", .type = T::section_list,
+       .doc = "Elements with their own elastic constants (a body of several materials, e.g. a "
+              "monolithic reference of two bodies in contact); the other elements take "
+              "bodies[].material."},
+      {.path = "bodies[].regions[].elements", .type = T::integer_list, .required = true,
+       .doc = "Element ids of the region (each in one region at most).", .min_items = 1},
+      {.path = "bodies[].regions[].material", .type = T::section, .required = true,
+       .doc = "The region's material: the keys of bodies[].material; model and plane must be "
+              "the body's."},
+      {.path = "bodies[].regions[].material.model", .type = T::choice, .default_yaml = "linear-elastic",
+       .doc = "As bodies[].material.model.",
+       .choices = {"linear-elastic", "saint-venant-kirchhoff", "neo-hooke"}},
+      {.path = "bodies[].regions[].material.E", .type = T::number, .required = true,
+       .unit = "force/length²", .doc = "Young's modulus.", .lower = greater_than(0)},
+      {.path = "bodies[].regions[].material.nu", .type = T::number, .required = true,
+       .doc = "Poisson's ratio.", .lower = greater_than(-1), .upper = less_than(0.5)},
+      {.path = "bodies[].regions[].material.plane", .type = T::choice, .default_yaml = "strain",
+       .doc = "As bodies[].material.plane.", .choices = {"strain", "stress"}},
+      {.path = "bodies[].regions[].material.thickness", .type = T::number, .default_yaml = "1",
+       .unit = "length", .doc = "Ignored: the thickness is the body's.", .lower = greater_than(0)},
       {.path = "bodies[].material.model", .type = T::choice, .default_yaml = "linear-elastic",
        .doc = "Material law. `linear-elastic`: small strain. `saint-venant-kirchhoff` and "
               "`neo-hooke` (compressible, W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2, plane "
@@ -177,6 +197,23 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Halvings in a row of a load step that does not converge (the step doubles "
               "again, up to the nominal one, after two converged steps).",
        .lower = at_least(0)},
+      {.path = "solver.line_search", .type = T::choice, .default_yaml = "auto",
+       .doc = "Backtracking line search on the residual norm (a Newton correction that does not "
+              "reduce |R| is halved, up to 10 times): auto = on with friction (its stick/slip "
+              "switches make plain Newton cycle with a large tangential penalty), on, off.",
+       .choices = {"auto", "on", "off"}},
+      {.path = "solver.stages", .type = T::section_list,
+       .doc = "The load path, stage by stage: the factors on the prescribed displacements and on "
+              "the loads go linearly from the previous stage's values (0 and 0 at the start) to "
+              "the stage's, in its steps. Absent: one stage to 1 and 1. With friction the path "
+              "matters (e.g. press first, then push sideways)."},
+      {.path = "solver.stages[].displacements", .type = T::number, .default_yaml = "1",
+       .doc = "Factor on every prescribed displacement (and obstacle displacement) at the end of "
+              "the stage."},
+      {.path = "solver.stages[].loads", .type = T::number, .default_yaml = "1",
+       .doc = "Factor on every load (edge loads, nodal forces, body force) at the end of the stage."},
+      {.path = "solver.stages[].steps", .type = T::integer,
+       .doc = "Load steps of the stage; absent: solver.load_steps.", .lower = at_least(1)},
       {.path = "solver.target_resultant", .type = T::section,
        .doc = "Load control by force: the prescribed displacements are scaled until the contact "
               "resultant's component equals value."},
@@ -203,6 +240,22 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "contact[].quadrature", .type = T::integer, .default_yaml = "50",
        .doc = "Gauss points per contact edge, independent of p (seed: 50).",
        .lower = at_least(1), .upper = at_most(200)},
+      {.path = "contact[].friction", .type = T::section,
+       .doc = "Friction (seed §3.3): Coulomb's law regularised by a tangential penalty, with a "
+              "return mapping at every contact Gauss point; absent: frictionless. A point is "
+              "anchored to the other side at the end of the first load step in which it is in "
+              "contact; its tangential gap is measured from there along the tangent at the anchor "
+              "(frozen), its slip carried from load step to load step (the result depends on the "
+              "load path: see solver.stages). The tangent is not symmetric: solved by LU."},
+      {.path = "contact[].friction.law", .type = T::choice, .required = true,
+       .doc = "stick: no slip whatever the traction (the tangential penalty only); coulomb: "
+              "slip where |t_T| would exceed mu p_N; none: frictionless.",
+       .choices = {"none", "stick", "coulomb"}},
+      {.path = "contact[].friction.mu", .type = T::number, .default_yaml = "0",
+       .doc = "Coulomb friction coefficient; required by law: coulomb.", .lower = at_least(0)},
+      {.path = "contact[].friction.penalty", .type = T::number, .unit = "force/length³",
+       .doc = "Tangential penalty eps_T (seed eq. 3.19); required unless law is none.",
+       .lower = greater_than(0)},
       {.path = "contact[].compare", .type = T::section,
        .doc = "Measure the contact pressure against Hertz and Shtayerman (a cylinder on the "
               "obstacle) and, optionally, a reference curve; absent: no comparison."},

@@ -90,6 +90,7 @@ class SpecBuilder {
     if (node["curves"]) read_curves(node["curves"], path + ".curves", b);
     if (node["degree"]) b.degree = degree(node["degree"]);
     if (node["degrees"]) read_element_degrees(node["degrees"], path + ".degrees", b);
+    if (node["regions"]) read_regions(node["regions"], path + ".regions", b);
     if (node["edge_sets"]) read_edge_sets(node["edge_sets"], path + ".edge_sets", b);
     if (node["constraints"]) read_constraints(node["constraints"], path + ".constraints", b);
     if (node["loads"]) read_loads(node["loads"], path + ".loads", b);
@@ -167,6 +168,32 @@ class SpecBuilder {
       }
       c.where = source_.where(node, curve_path);
       b.curves.push_back(std::move(c));
+    }
+  }
+
+  void read_regions(const YAML::Node& list, const std::string& path, BodySpec& b) {
+    std::set<int> taken;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string item = join_index(path, i);
+      MaterialRegionSpec r;
+      const YAML::Node els = list[i]["elements"];
+      for (std::size_t k = 0; k < els.size(); ++k) {
+        const int id = integer(els[k]);
+        if (!element_ids_.count(id))
+          source_.fail(els[k], item + ".elements",
+                       "no such element in the body's elements (got " + std::to_string(id) + ")");
+        if (!taken.insert(id).second)
+          source_.fail(els[k], item + ".elements",
+                       "element " + std::to_string(id) + " is already in another region");
+        r.elements.push_back(id);
+      }
+      r.material = material(list[i]["material"], item + ".material");
+      if (r.material.model != b.material.model || r.material.plane != b.material.plane)
+        source_.fail(list[i]["material"], item + ".material",
+                     "a region changes E and nu only: its model and plane must be the body's (" +
+                         b.material.model + ")");
+      r.where = source_.where(list[i], item);
+      b.regions.push_back(std::move(r));
     }
   }
 
@@ -362,12 +389,26 @@ class SpecBuilder {
     s.max_iterations = integer(node["max_iterations"]);
     s.tolerance = number(node["tolerance"]);
     s.max_cuts = integer(node["max_cuts"]);
+    s.line_search = node["line_search"].Scalar();
     if (const YAML::Node target = node["target_resultant"]) {
       TargetResultantSpec t;
       t.value = number(target["value"]);
       t.component = target["component"].Scalar() == "x" ? 0 : 1;
       t.tolerance = number(target["tolerance"]);
       s.target_resultant = t;
+    }
+    if (const YAML::Node stages = node["stages"]) {
+      for (std::size_t i = 0; i < stages.size(); ++i) {
+        LoadStageSpec st;
+        st.displacements = number(stages[i]["displacements"]);
+        st.loads = number(stages[i]["loads"]);
+        if (stages[i]["steps"]) st.steps = integer(stages[i]["steps"]);
+        s.stages.push_back(st);
+      }
+      if (s.target_resultant)
+        source_.fail(stages, "solver.stages",
+                     "a load path with stages cannot be combined with target_resultant (force "
+                     "control scales one factor)");
     }
     s.where = source_.where(node, "solver");
     return s;
@@ -408,6 +449,18 @@ class SpecBuilder {
         if (cmp["reference"]) pc.reference = cmp["reference"].Scalar();
         pc.where = source_.where(cmp, item_path + ".compare");
         c.compare = pc;
+      }
+      if (const YAML::Node fr = node["friction"]) {
+        c.friction.law = fr["law"].Scalar();
+        c.friction.mu = number(fr["mu"]);
+        c.friction.where = source_.where(fr, item_path + ".friction");
+        if (c.friction.law == "coulomb" && !fr["mu"])
+          source_.fail(fr, item_path + ".friction", "missing key 'mu' (required by law: coulomb)");
+        if (c.friction.law != "none" && !fr["penalty"])
+          source_.fail(fr, item_path + ".friction",
+                       "missing key 'penalty' (the tangential penalty eps_T, required by law: " +
+                           c.friction.law + ")");
+        if (fr["penalty"]) c.friction.penalty = number(fr["penalty"]);
       }
       c.where = source_.where(node, item_path);
       pairs.push_back(std::move(c));

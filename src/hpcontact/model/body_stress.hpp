@@ -16,7 +16,7 @@ struct PointStress {
   Eigen::Matrix2d F = Eigen::Matrix2d::Identity();  ///< deformation gradient (finite strain)
 };
 
-/// At a point with shape values pv of an element with local coefficients u_e.
-PointStress point_stress(const Body& body, const fem::PointValues& pv, const Eigen::VectorXd& u_e);
+/// At a point with shape values pv of element q with local coefficients u_e.
+PointStress point_stress(const Body& body, int q, const fem::PointValues& pv, const Eigen::VectorXd& u_e);
 
 }  // namespace hpcontact::model

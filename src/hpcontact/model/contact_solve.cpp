@@ -61,9 +61,14 @@ PairForces pair_forces(const Discretization& d, const ContactPair& pair, const E
   const Eigen::VectorXd ua = u.segment(body.dof_offset, n);
   PairForces f;
   f.body = Eigen::VectorXd::Zero(n);
+  contact::FrictionInput fr, fr_other;
+  if (pair.memory) {
+    fr = {&pair.friction, &pair.memory->points};
+    fr_other = {&pair.friction, &pair.memory->other_points};
+  }
   if (pair.other < 0) {
     contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty, ua, f.body, t,
-                             body.dof_offset, &f.states, frozen);
+                             body.dof_offset, &f.states, frozen, fr);
     return f;
   }
   const Body& other = d.bodies[pair.other];
@@ -73,9 +78,9 @@ PairForces pair_forces(const Discretization& d, const ContactPair& pair, const E
   pair.boundary->set_displacement(ua);
   pair.other_boundary->set_displacement(ub);
   contact::two_body_contact(pair.points, ua, *pair.other_boundary, pair.penalty, 0.5, f.body, f.other,
-                            t, body.dof_offset, other.dof_offset, &f.states);
+                            t, body.dof_offset, other.dof_offset, &f.states, fr);
   contact::two_body_contact(pair.other_points, ub, *pair.boundary, pair.penalty, 0.5, f.other, f.body,
-                            t, other.dof_offset, body.dof_offset, &f.other_states);
+                            t, other.dof_offset, body.dof_offset, &f.other_states, fr_other);
   return f;
 }
 
@@ -112,7 +117,7 @@ public:
     for (int i = 0; i < ne; ++i) {
       const Body& body = d_.bodies[elements_[i].body];
       const int q = elements_[i].q;
-      el[i] = fem::finite_strain_element(values_[i], body.material, body.law, body.thickness,
+      el[i] = fem::finite_strain_element(values_[i], body.material_of(q), body.law, body.thickness,
                                          body.element_coefficients(q, u), t != nullptr);
     }
     for (int i = 0; i < ne; ++i) {
@@ -147,6 +152,38 @@ private:
   std::vector<fem::ElementValues> values_;
 };
 
+/// Anchors and slips of a pair's points after a converged load step (see FrictionHistory).
+void commit_friction(const ContactPair& pair, const PairForces& f) {
+  if (!pair.memory) return;
+  auto update = [&](std::vector<contact::FrictionHistory>& hs,
+                    const std::vector<contact::PointState>& states) {
+    for (size_t i = 0; i < hs.size(); ++i) {
+      auto& h = hs[i];
+      const auto& s = states[i];
+      if (s.gap > 0 || !std::isfinite(s.gap)) {
+        h = contact::FrictionHistory{};
+        continue;
+      }
+      if (h.anchored) {
+        h.slip = s.slip;
+        continue;
+      }
+      h.anchored = true;
+      h.edge = s.foot_edge;
+      h.t = s.foot_t;
+      h.anchor = s.foot - pair.obstacle->offset();
+      h.tau = s.tau;
+      h.slip = 0;
+    }
+  };
+  pair.memory->points_before = pair.memory->points;
+  pair.memory->other_points_before = pair.memory->other_points;
+  update(pair.memory->points, f.states);
+  if (pair.other >= 0) update(pair.memory->other_points, f.other_states);
+  pair.memory->states = f.states;
+  pair.memory->other_states = f.other_states;
+}
+
 /// The nonlinear system over the unknowns of the elastic operator: with static condensation only
 /// the free external dofs, since contact acts on vertex and edge modes alone and the internal
 /// modes of the linear elastic elements can be eliminated once, before Newton (not with a
@@ -171,10 +208,28 @@ public:
   /// Why the last evaluation failed (an inverted element), empty if it did not.
   const std::string& failure() const { return failure_; }
 
-  void set_load_factor(double lambda) {
-    lambda_ = lambda;
+  /// The factors on the prescribed displacements (and obstacle displacements) and on the loads.
+  void set_factors(double displacements, double loads) {
+    lambda_ = displacements;
+    lambda_f_ = loads;
     for (const auto& pair : pairs_)
-      if (pair.moving) pair.moving->set_load_factor(lambda);
+      if (pair.moving) pair.moving->set_load_factor(displacements);
+  }
+  void set_load_factor(double lambda) { set_factors(lambda, lambda); }
+
+  /// After a converged load step at x: the friction histories take its anchors and slips.
+  void commit(const Eigen::VectorXd& x) const {
+    const Eigen::VectorXd u = full(x);
+    for (const auto& pair : pairs_)
+      if (pair.memory) {
+        commit_friction(pair, pair_forces(d_, pair, u, nullptr));
+        pair.memory->converged_at = solution(x);
+      }
+  }
+  bool has_friction() const {
+    for (const auto& pair : pairs_)
+      if (pair.memory) return true;
+    return false;
   }
   /// The unknowns' values in a vector of all dofs.
   Eigen::VectorXd unknowns(const Eigen::VectorXd& u) const { return op_.restrict(d_, u); }
@@ -185,7 +240,7 @@ public:
   /// All dofs, the condensed internal modes recovered.
   Eigen::VectorXd solution(const Eigen::VectorXd& x) const {
     Eigen::VectorXd u = full(x);
-    op_.recover_internal(d_, u, lambda_);
+    op_.recover_internal(d_, u, lambda_f_);
     return u;
   }
 
@@ -199,7 +254,7 @@ public:
     const Eigen::VectorXd u = full(x);
     Eigen::VectorXd g = op_.K * u;
     if (!finite_.empty()) finite_.add(u, g, nullptr, nullptr);
-    return op_.restrict(d_, f).norm() + lambda_ * op_.restrict(d_, op_.load).norm() +
+    return op_.restrict(d_, f).norm() + std::abs(lambda_f_) * op_.restrict(d_, op_.load).norm() +
            op_.restrict(d_, g).norm();
   }
 
@@ -232,7 +287,7 @@ private:
   void residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, std::vector<Eigen::Triplet<double>>* t,
                 PairStates* states, const PairStates* frozen) const {
     const Eigen::VectorXd u = full(x);
-    Eigen::VectorXd R = op_.K * u - lambda_ * op_.load;
+    Eigen::VectorXd R = op_.K * u - lambda_f_ * op_.load;
     if (!finite_.empty() && !finite_.add(u, R, t, &failure_)) {
       // An inverted element has no internal force: a not-finite residual makes Newton stop and
       // the load step be cut.
@@ -284,7 +339,8 @@ private:
   FiniteStrainForces finite_;
   mutable std::string failure_;
   Tangent tangent_ = Tangent::analytic;
-  double lambda_ = 1.0;
+  double lambda_ = 1.0;    ///< factor on the prescribed displacements
+  double lambda_f_ = 1.0;  ///< factor on the loads
 };
 
 /// Gap of the deformed boundary at local edge parameter t of element q; the deformed point in
@@ -329,7 +385,7 @@ double stress_pressure(const Body& body, int q, int le, double t, const Vec2& N,
                        const Eigen::VectorXd& u) {
   const auto r = fem::edge_reference_point(le, t);
   const auto pv = fem::point_values(body.dofs.element(q), body.maps[q], r[0], r[1]);
-  const auto ps = point_stress(body, pv, body.element_coefficients(q, u));
+  const auto ps = point_stress(body, q, pv, body.element_coefficients(q, u));
   const Vec2 n = body.finite_strain() ? Vec2(ps.F.inverse().transpose() * N).normalized() : N;
   const Eigen::Vector3d& sig = ps.stress;
   return -(n.x() * n.x() * sig(0) + n.y() * n.y() * sig(1) + 2 * n.x() * n.y() * sig(2));
@@ -338,7 +394,16 @@ double stress_pressure(const Body& body, int q, int le, double t, const Vec2& N,
 /// ∫ traction ds of a pair at the state u, and the states of its points.
 Vec2 contact_resultant(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u,
                        std::vector<contact::PointState>& states) {
-  PairForces f = pair_forces(d, pair, u, nullptr);
+  PairForces f;
+  if (pair.memory && pair.memory->converged_at.size() == u.size() && pair.memory->converged_at == u) {
+    // With friction, the states of the converged step as its Newton iterations saw them: a new
+    // evaluation would see the slips it committed (a point that slipped lies on the cone, where
+    // the return mapping would call it stuck).
+    f.states = pair.memory->states;
+    f.other_states = pair.memory->other_states;
+  } else {
+    f = pair_forces(d, pair, u, nullptr);
+  }
   const Vec2 r = f.resultant(pair);
   states = std::move(f.states);
   return r;
@@ -515,6 +580,19 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
     HPC_REQUIRE(cs.penalty > 0, InputError, cs.where.str(), ".penalty: must be > 0 (got ",
                 cs.penalty, ")");
     pair.penalty = cs.penalty;
+    if (cs.friction.law != "none") {
+      const std::string key = cs.friction.where.str();
+      HPC_REQUIRE(cs.friction.law == "stick" || cs.friction.law == "coulomb", InputError, key,
+                  ".law: unknown friction law '", cs.friction.law, "' (expected none, stick or coulomb)");
+      HPC_REQUIRE(cs.friction.mu >= 0, InputError, key, ".mu: the friction coefficient must be >= 0 (got ",
+                  cs.friction.mu, ")");
+      HPC_REQUIRE(cs.friction.penalty > 0, InputError, key,
+                  ".penalty: the tangential penalty must be > 0 (got ", cs.friction.penalty, ")");
+      pair.friction.kind = cs.friction.law == "stick" ? contact::FrictionLaw::Kind::stick
+                                                      : contact::FrictionLaw::Kind::coulomb;
+      pair.friction.mu = cs.friction.mu;
+      pair.friction.eps_t = cs.friction.penalty;
+    }
     const auto& o = cs.obstacle;
     if (o.kind == ObstacleKind::plane) {
       const Vec2 p(o.point[0], o.point[1]), nrm(o.normal[0], o.normal[1]);
@@ -564,6 +642,11 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       pair.moving->set_load_factor(0);
       pair.obstacle = pair.moving;
     }
+    if (pair.friction.active()) {
+      pair.memory = std::make_shared<ContactPair::FrictionMemory>();
+      pair.memory->points.resize(pair.points.size());
+      pair.memory->other_points.resize(pair.other_points.size());
+    }
     pairs.push_back(std::move(pair));
   }
   return pairs;
@@ -595,36 +678,50 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   // (and may be on the way to a stable state): solved by LU.
   if (has_finite_strain(d)) no.linear_solver = solve::LinearSolverKind::lu;
 
+  // The unsymmetric tangent of friction in slip: LU. Stick/slip switches make Newton cycle
+  // with a large tangential penalty: the line search is on with friction unless switched off.
+  if (system.has_friction()) no.linear_solver = solve::LinearSolverKind::lu;
+  no.line_search = ss.line_search == "on" || (ss.line_search == "auto" && system.has_friction());
+  HPC_REQUIRE(!system.has_friction() || !ss.target_resultant, InputError, ss.where.str(),
+              "target_resultant: force control goes back and forth along the load path, which a "
+              "contact with friction remembers; prescribe the displacements (or use stages)");
+
   NonlinearSolution sol;
-  double converged_factor = 0;  // the load factor of the last converged step
+  struct Factors {
+    double displacements = 0, loads = 0;
+  };
+  Factors converged;  // the factors of the last converged step
   Eigen::VectorXd x = Eigen::VectorXd::Zero(system.size());
   auto say = [&](const std::string& s) {
     if (progress) progress(s);
   };
 
-  // Load steps from the current factor to `target`, halving a step that does not converge (at
-  // most max_cuts times in a row) and doubling it again, up to the nominal step, after two
-  // steps in a row converged.
-  auto advance_to = [&](double from, double target) -> bool {
-    const int steps = std::max(1, ss.load_steps);
-    const double nominal = (target - from) / steps;
+  // Load steps along the path parameter from `from` to `target` (factors(s) gives the
+  // factors), halving a step that does not converge (at most max_cuts times in a row) and
+  // doubling it again, up to the nominal step, after two steps in a row converged.
+  auto advance = [&](double from, double target, int steps, const auto& factors) -> bool {
+    const double nominal = (target - from) / std::max(1, steps);
     double lambda = from, step = nominal;
     int cuts = 0, in_a_row = 0;
     while (std::abs(target - lambda) > 1e-14 * std::max(1.0, std::abs(target))) {
       const double next = std::abs(target - lambda) < std::abs(step) * (1 + 1e-12) ? target : lambda + step;
-      system.set_load_factor(next);
+      const Factors fn = factors(next);
+      system.set_factors(fn.displacements, fn.loads);
       no.reference_norm = system.force_scale(x);
       Eigen::VectorXd trial = x;
       const auto rep = solve::newton(system, trial, no);
       sol.newton_iterations += rep.iterations;
       if (rep.ok()) {
         x = trial;
-        lambda = converged_factor = next;
+        lambda = next;
+        converged = fn;
+        system.commit(x);
         ++sol.load_steps;
         std::ostringstream os;
-        os << "load step " << sol.load_steps << ": factor " << next << ", " << rep.iterations
-           << " Newton iterations, |R| " << rep.residual_history.front() << " -> "
-           << rep.residual_history.back();
+        os << "load step " << sol.load_steps << ": factor " << fn.displacements;
+        if (fn.loads != fn.displacements) os << " (loads " << fn.loads << ")";
+        os << ", " << rep.iterations << " Newton iterations, |R| " << rep.residual_history.front()
+           << " -> " << rep.residual_history.back();
         say(os.str());
         cuts = 0;
         if (++in_a_row >= 2 && std::abs(step) < std::abs(nominal)) {
@@ -640,8 +737,9 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
               : rep.message;
       if (cuts == ss.max_cuts) {
         std::ostringstream os;
-        os << "load step " << sol.load_steps + 1 << " (factor " << next << ") failed after " << cuts
-           << " cuts: " << why << "; residual history:";
+        os << "load step " << sol.load_steps + 1 << " (factor " << fn.displacements;
+        if (fn.loads != fn.displacements) os << ", loads " << fn.loads;
+        os << ") failed after " << cuts << " cuts: " << why << "; residual history:";
         for (double r : rep.residual_history) os << ' ' << r;
         sol.message = os.str();
         return false;
@@ -653,21 +751,43 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     }
     return true;
   };
+  auto proportional = [](double lambda) { return Factors{lambda, lambda}; };
+  auto advance_to = [&](double from, double target) {
+    return advance(from, target, ss.load_steps, proportional);
+  };
 
   // The first factor: 1 (the displacements as prescribed) or, under force control, a factor
   // the caller expects to be close (the previous mesh's, in an adaptive loop).
   const double first = ss.target_resultant && initial_factor > 0 ? initial_factor : 1.0;
   double lambda = 0;
-  // A failed run keeps the last converged state (at converged_factor), marked not converged.
+  // A failed run keeps the last converged state, marked not converged.
   auto failed = [&]() {
-    system.set_load_factor(converged_factor);
+    system.set_factors(converged.displacements, converged.loads);
     sol.u = system.solution(x);
-    sol.load_factor = converged_factor;
+    sol.load_factor = converged.displacements;
+    sol.loads_factor = converged.loads;
     for (const auto& pair : pairs) sol.contact.push_back(contact_result(d, pair, sol.u));
     sol.pairs = pairs;
     return sol;
   };
-  if (!advance_to(0.0, first)) return failed();
+  // Points in contact in the unloaded state (touching: g = 0) are anchored from the start, so
+  // that friction holds them in the first load step already.
+  system.set_factors(0, 0);
+  system.commit(x);
+  if (ss.stages.empty()) {
+    if (!advance_to(0.0, first)) return failed();
+  } else {
+    Factors start;
+    for (const auto& stage : ss.stages) {
+      const Factors end{stage.displacements, stage.loads};
+      auto along = [&](double s) {
+        return Factors{start.displacements + s * (end.displacements - start.displacements),
+                       start.loads + s * (end.loads - start.loads)};
+      };
+      if (!advance(0.0, 1.0, stage.steps > 0 ? stage.steps : ss.load_steps, along)) return failed();
+      start = end;
+    }
+  }
   lambda = first;
   if (ss.target_resultant) {
     const auto& tr = *ss.target_resultant;
@@ -702,7 +822,8 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     }
   }
   sol.u = system.solution(x);
-  sol.load_factor = lambda;
+  sol.load_factor = ss.stages.empty() ? lambda : converged.displacements;
+  sol.loads_factor = ss.stages.empty() ? lambda : converged.loads;
   sol.converged = true;
   for (const auto& pair : pairs) sol.contact.push_back(contact_result(d, pair, sol.u));
   sol.pairs = std::move(pairs);
@@ -714,8 +835,19 @@ namespace {
 solve::SparseMatrix tangent_at(const ProblemSpec& spec, const Discretization& d,
                                const NonlinearSolution& sol, ContactSystem::Tangent kind,
                                Eigen::VectorXd* residual) {
-  ContactSystem system(d, sol.pairs, spec.discretization.condense, kind);
-  system.set_load_factor(sol.load_factor);
+  // With friction, the histories the last load step started from: the tangent its Newton
+  // iterations converged with (the committed slips would put slipping points on the cone).
+  std::vector<ContactPair> pairs = sol.pairs;
+  for (auto& pair : pairs)
+    if (pair.memory) {
+      auto before = std::make_shared<ContactPair::FrictionMemory>(*pair.memory);
+      before->points = before->points_before;
+      before->other_points = before->other_points_before;
+      before->converged_at.resize(0);
+      pair.memory = before;
+    }
+  ContactSystem system(d, pairs, spec.discretization.condense, kind);
+  system.set_factors(sol.load_factor, sol.loads_factor);
   const Eigen::VectorXd x = system.unknowns(sol.u);
   Eigen::VectorXd r;
   solve::SparseMatrix K;

@@ -32,6 +32,18 @@ struct ContactPair {
   std::vector<contact::ContactPoint> other_points;
   std::shared_ptr<const contact::DeformableBoundary> boundary, other_boundary;
   double penalty = 0;
+  contact::FrictionLaw friction;
+  /// The friction histories of the pair's points (and of the other body's points), carried from
+  /// load step to load step; shared by copies of the pair.
+  struct FrictionMemory {
+    std::vector<contact::FrictionHistory> points, other_points;
+    /// The histories the last committed step started from (what its Newton iterations saw).
+    std::vector<contact::FrictionHistory> points_before, other_points_before;
+    /// The states of the last committed step and its displacements (all dofs).
+    std::vector<contact::PointState> states, other_states;
+    Eigen::VectorXd converged_at;
+  };
+  std::shared_ptr<FrictionMemory> memory;
   Vec2 reference_point = Vec2::Zero();  ///< obstacle point used for the half width
   Vec2 tangent = Vec2(1, 0);            ///< obstacle tangent used for the half width
   /// Coordinate of a point along the obstacle: (X − reference point)·tangent.
@@ -68,7 +80,8 @@ struct NonlinearSolution {
   bool converged = false;
   std::string message;  ///< why it stopped, when not converged
   int newton_iterations = 0, load_steps = 0;
-  double load_factor = 1;  ///< factor on the prescribed displacements and loads reached
+  double load_factor = 1;   ///< factor on the prescribed displacements reached
+  double loads_factor = 1;  ///< factor on the loads reached (= load_factor without stages)
   std::vector<ContactPair> pairs;     ///< the contact pairs solved, for post-processing
   std::vector<ContactResult> contact;  ///< per pair
 };

@@ -85,6 +85,16 @@ Body make_body(const ProblemSpec& spec, int b) {
   mat.validate(bs.material.where.str());
 
   Body body{bs.name, std::move(mesh), std::move(dofs), {}, {}, mat, bs.material.thickness, 0, {}};
+  if (!bs.regions.empty()) body.element_region.assign(body.mesh.n_quads(), -1);
+  for (const auto& region : bs.regions) {
+    material::LinearElastic rm = mat;
+    rm.youngs_modulus = region.material.youngs_modulus;
+    rm.poisson_ratio = region.material.poisson_ratio;
+    rm.validate(region.material.where.str());
+    for (int id : region.elements)
+      body.element_region[body.mesh.quad_index(id)] = static_cast<int>(body.region_materials.size());
+    body.region_materials.push_back(rm);
+  }
   if (bs.material.model == "saint-venant-kirchhoff") body.law = material::Law::saint_venant_kirchhoff;
   if (bs.material.model == "neo-hooke") body.law = material::Law::neo_hooke;
   HPC_REQUIRE(body.law != material::Law::neo_hooke || mat.plane == material::Plane::strain, InputError,

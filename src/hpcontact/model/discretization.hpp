@@ -29,6 +29,14 @@ struct Body {
   /// Linear elasticity, or a hyperelastic law of finite strain (total Lagrangian).
   material::Law law = material::Law::linear;
   bool finite_strain() const { return law != material::Law::linear; }
+  /// Elastic constants of the material regions, and per element its region (-1: `material`).
+  std::vector<material::LinearElastic> region_materials;
+  std::vector<int> element_region;
+  /// The elastic constants of element q.
+  const material::LinearElastic& material_of(int q) const {
+    const int r = element_region.empty() ? -1 : element_region[q];
+    return r < 0 ? material : region_materials[r];
+  }
 
   /// Global dof of local dof `local` (component-blocked) of element q.
   int global_dof(int q, int local) const {

@@ -11,7 +11,7 @@ namespace hpcontact::model {
 Eigen::MatrixXd element_stiffness(const Body& body, int q) {
   const auto ev =
       fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q], body.mesh, q);
-  return fem::stiffness(ev, body.material.D(), body.thickness);
+  return fem::stiffness(ev, body.material_of(q).D(), body.thickness);
 }
 
 ElasticOperator assemble_elastic(const Discretization& d, bool condense) {

@@ -88,9 +88,17 @@ struct NodalForceSpec {
   SourceRef where;
 };
 
+/// Elements of a body with their own elastic constants (same law and plane as the body's).
+struct MaterialRegionSpec {
+  std::vector<int> elements;  ///< element ids
+  MaterialSpec material;
+  SourceRef where;
+};
+
 struct BodySpec {
   std::string name;
   MaterialSpec material;
+  std::vector<MaterialRegionSpec> regions;
   std::vector<int> node_ids;
   std::vector<std::array<double, 2>> nodes;
   std::vector<int> element_ids;
@@ -128,6 +136,13 @@ struct TargetResultantSpec {
   double tolerance = 1e-9;  ///< relative
 };
 
+/// One stage of the load path: the factors on the prescribed displacements and on the loads
+/// go linearly from the previous stage's (0, 0 at the start) to these, in `steps` load steps.
+struct LoadStageSpec {
+  double displacements = 1, loads = 1;
+  int steps = 0;  ///< 0: solver.load_steps
+};
+
 struct SolverSpec {
   std::string linear = "cholmod";  ///< "cholmod" or "ldlt"
   std::string tangent = "analytic";  ///< "analytic" or "finite-difference" (seed eq. 3.36)
@@ -135,7 +150,10 @@ struct SolverSpec {
   int max_iterations = 30;   ///< Newton iterations per load step
   double tolerance = 1e-10;  ///< relative residual norm
   int max_cuts = 5;          ///< halvings of a load step that does not converge
+  std::string line_search = "auto";  ///< "auto" (on with friction), "on", "off"
   std::optional<TargetResultantSpec> target_resultant;
+  /// The load path; empty: one stage to (1, 1).
+  std::vector<LoadStageSpec> stages;
   SourceRef where;
 };
 
@@ -163,6 +181,14 @@ struct PressureCompareSpec {
   SourceRef where;
 };
 
+/// Friction of a contact pair (seed §3.3): none, full stick, or Coulomb, with a tangential penalty.
+struct FrictionSpec {
+  std::string law = "none";  ///< "none", "stick" or "coulomb"
+  double mu = 0;             ///< Coulomb coefficient
+  double penalty = 0;        ///< eps_T > 0
+  SourceRef where;
+};
+
 /// A contact boundary of a body against a rigid obstacle, enforced by a normal penalty at the
 /// Gauss points of its edges.
 struct ContactPairSpec {
@@ -172,6 +198,7 @@ struct ContactPairSpec {
   double penalty = 0;   ///< eps_N > 0 [force/length³]
   int quadrature = 50;  ///< Gauss points per contact edge, independent of p (seed: 50)
   std::optional<PressureCompareSpec> compare;
+  FrictionSpec friction;
   SourceRef where;
 };
 

@@ -23,13 +23,13 @@ PointResult evaluate(const model::Body& body, int q, double xi, double eta, cons
   PointResult r;
   r.x = pv.x;
   r.u = Vec2(ue.head(n).dot(pv.N), ue.tail(n).dot(pv.N));
-  auto ps = model::point_stress(body, pv, ue);
+  auto ps = model::point_stress(body, q, pv, ue);
   if (!ps.strain.allFinite() || !ps.stress.allFinite()) {
     // det J = 0 at a corner of 180° (two edges on one circle, node 3 of the Hertz 2×2 mesh):
     // the strain there is taken a hair inside the element, at the exact position.
     const auto inner = fem::point_values(body.dofs.element(q), body.maps[q], xi * (1 - 1e-7),
                                          eta * (1 - 1e-7));
-    ps = model::point_stress(body, inner, ue);
+    ps = model::point_stress(body, q, inner, ue);
   }
   r.strain = ps.strain;
   r.stress = ps.stress;
@@ -45,12 +45,12 @@ PointResult evaluate(const model::Body& body, int q, double xi, double eta, cons
 double strain_energy(const model::Discretization& d, const Eigen::VectorXd& u) {
   double U = 0;
   for (const auto& body : d.bodies) {
-    const auto D = body.material.D();
     for (int q = 0; q < body.mesh.n_quads(); ++q) {
+      const auto D = body.material_of(q).D();
       const auto ev = fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q],
                                           body.mesh, q);
       if (body.finite_strain()) {
-        U += fem::finite_strain_element(ev, body.material, body.law, body.thickness,
+        U += fem::finite_strain_element(ev, body.material_of(q), body.law, body.thickness,
                                         body.element_coefficients(q, u), false)
                  .energy;
         continue;
@@ -67,8 +67,8 @@ double energy_error_squared(const model::Discretization& d, const Eigen::VectorX
                             const StrainField& exact, int extra_points) {
   double E2 = 0;
   for (const auto& body : d.bodies) {
-    const auto D = body.material.D();
     for (int q = 0; q < body.mesh.n_quads(); ++q) {
+      const auto D = body.material_of(q).D();
       const auto ev = fem::element_values(body.dofs.element(q), body.maps[q],
                                           body.n_gauss[q] + extra_points, body.mesh, q);
       const Eigen::Matrix3Xd eps = fem::strains(ev, body.element_coefficients(q, u));

@@ -64,6 +64,9 @@ void write_vtu(const std::string& path, const model::Discretization& d, const Ei
     for (const auto& p : points) out << get(p) << '\n';
     out << "</DataArray>\n";
   };
+  scalar("strain_xx", [](const PointResult& p) { return p.strain(0); });
+  scalar("strain_yy", [](const PointResult& p) { return p.strain(1); });
+  scalar("gamma_xy", [](const PointResult& p) { return p.strain(2); });
   scalar("sigma_xx", [](const PointResult& p) { return p.stress(0); });
   scalar("sigma_yy", [](const PointResult& p) { return p.stress(1); });
   scalar("sigma_zz", [](const PointResult& p) { return p.stress_zz; });

@@ -2,6 +2,7 @@
 #include "hpcontact/solve/newton.hpp"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "hpcontact/core/error.hpp"
@@ -59,6 +60,25 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
       return report;
     }
     dx = solver.solve(-r);
+    if (options.line_search) {
+      // Backtracking on |R|: the full correction unless it fails to reduce the residual, else
+      // the first of ½, ¼, ... that does (or the best of them). The residual is evaluated
+      // without its tangent, which the next iteration forms anyway.
+      Eigen::VectorXd rt;
+      double best = std::numeric_limits<double>::infinity(), alpha = 1, best_alpha = 1;
+      for (int k = 0; k < 10; ++k, alpha *= 0.5) {
+        const Eigen::VectorXd xt = x + alpha * dx;
+        system.evaluate(xt, rt, nullptr);
+        const double rtn = rt.norm();
+        if (rtn < best) {
+          best = rtn;
+          best_alpha = alpha;
+        }
+        if (rtn <= (1 - 1e-4 * alpha) * rn) break;
+      }
+      if (best_alpha < 1) ++report.line_searches;
+      dx *= best_alpha;
+    }
     x += dx;
     if (callback) callback(it + 1, rn, dx.norm());
   }

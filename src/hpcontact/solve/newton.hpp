@@ -27,6 +27,8 @@ struct NewtonOptions {
   double tolerance = 1e-10;
   double reference_norm = 0;  ///< scale of R when R_0 is tiny (e.g. the norm of the external load)
   LinearSolverKind linear_solver = LinearSolverKind::cholmod;
+  /// Backtrack a correction that does not reduce |R| (halving, up to 10 times).
+  bool line_search = false;
 };
 
 enum class SolveStatus { converged, max_iterations, not_finite, singular };
@@ -37,6 +39,7 @@ struct SolveReport {
   std::string message;
   int iterations = 0;
   int backtracks = 0;  ///< corrections halved because the residual was not finite there
+  int line_searches = 0;  ///< corrections shortened by the line search
   std::vector<double> residual_history;  ///< ||R|| before each iteration, and at the end
   bool ok() const { return status == SolveStatus::converged; }
 };

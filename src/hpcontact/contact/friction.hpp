@@ -1,0 +1,50 @@
+// Coulomb friction regularised by a tangential penalty (seed §3.3, eq. 3.19-3.21): the stick
+// anchor and accumulated slip each contact point carries between load steps, and the return
+// mapping of the tangential traction.
+#pragma once
+
+#include "hpcontact/geometry/vec2.hpp"
+
+namespace hpcontact::contact {
+
+/// The tangential law of a contact pair.
+struct FrictionLaw {
+  enum class Kind { none, stick, coulomb };
+  Kind kind = Kind::none;
+  double mu = 0;     ///< Coulomb coefficient (coulomb)
+  double eps_t = 0;  ///< tangential penalty ε_T > 0 [force/length³]
+  bool active() const { return kind != Kind::none; }
+};
+
+/// What a contact point remembers between load steps (the problem is path dependent). A point
+/// is anchored at the end of the first load step in which it is in contact: to the foot of its
+/// projection on the other side (an edge and parameter of the other body, or a point of a rigid
+/// obstacle), with the unit tangent there frozen. From then on its tangential gap is
+/// g_T = (x − x_anchor)·τ_anchor, x_anchor the anchor's current position; a point that opens
+/// loses its anchor. The tangential gap is measured along the frozen tangent: exact for sliding
+/// along a straight boundary that does not turn, an approximation of small rotations otherwise.
+struct FrictionHistory {
+  bool anchored = false;
+  int edge = -1;            ///< two bodies: the anchor's edge of the other body's boundary
+  double t = 0;             ///< two bodies: its edge parameter
+  Vec2 anchor = Vec2::Zero();  ///< rigid obstacle: the anchor point, obstacle undisplaced
+  Vec2 tau = Vec2(1, 0);    ///< unit tangent at the anchor, frozen
+  double slip = 0;          ///< accumulated slip g_s (the plastic part of g_T)
+};
+
+/// Stick or slip at one point.
+enum class StickSlip { open, stick, slip };
+
+/// The tangential traction t_T (along τ, acting on the other side; the point's body receives
+/// −t_T τ) and the slip after the return mapping.
+struct Tangential {
+  double traction = 0;
+  double slip = 0;  ///< updated accumulated slip
+  StickSlip state = StickSlip::open;
+};
+
+/// Trial t_T = ε_T (g_T − g_s,n); stick if |t_T| ≤ μ p_N (always with Kind::stick), otherwise
+/// slip: t_T = μ p_N sign(trial), g_s = g_T − t_T / ε_T.
+Tangential return_map(const FrictionLaw& law, double g_t, double slip_n, double p_n);
+
+}  // namespace hpcontact::contact
