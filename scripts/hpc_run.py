@@ -34,10 +34,15 @@ def csv_number(v):
 
 
 def read_columns(path):
-    """A CSV of numbers (pressure.csv, contact.csv, ...) as {column: [values]}."""
+    """A CSV (pressure.csv, contact.csv, path.csv, ...) as {column: [values]}: numbers as
+    floats, a text column (contact.csv's state) as strings."""
     cols = {}
     with open(path) as f:
         for row in csv.DictReader(f):
             for k, v in row.items():
-                cols.setdefault(k, []).append(float(v))
+                try:
+                    value = float(v)
+                except ValueError:
+                    value = v
+                cols.setdefault(k, []).append(value)
     return cols

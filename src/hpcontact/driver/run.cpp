@@ -194,6 +194,25 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
   }
 }
 
+/// The load path (path.csv): a row per converged step, with the monitored node and the first
+/// pair's resultant. Nothing without an output folder.
+void write_path(const model::ProblemSpec& spec, const model::NonlinearSolution& sol,
+                const std::string& out_dir) {
+  if (out_dir.empty() || sol.path.empty()) return;
+  std::ostringstream csv;
+  csv << std::setprecision(12) << "step,displacement_factor,load_factor,iterations,arc_length";
+  if (!spec.solver.monitor_body.empty()) csv << ",monitor_ux,monitor_uy";
+  csv << ",resultant_x,resultant_y\n";
+  for (size_t i = 0; i < sol.path.size(); ++i) {
+    const auto& p = sol.path[i];
+    csv << i + 1 << ',' << p.displacements << ',' << p.loads << ',' << p.iterations << ','
+        << p.arc_length;
+    if (!spec.solver.monitor_body.empty()) csv << ',' << p.monitor.x() << ',' << p.monitor.y();
+    csv << ',' << p.resultant.x() << ',' << p.resultant.y() << '\n';
+  }
+  post::write_text_file((std::filesystem::path(out_dir) / "path.csv").string(), csv.str());
+}
+
 /// The final adapted mesh of every body as a problem-file fragment (nodes, elements, curves,
 /// edge sets, element degrees): paste it over the bodies' mesh keys to rerun that mesh.
 std::string mesh_yaml(const model::ProblemSpec& spec) {
@@ -399,7 +418,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
   SolvedState st;
   bool finite_strain = false;
   for (const auto& b : d.bodies) finite_strain = finite_strain || b.finite_strain();
-  if (spec.contact.empty() && !finite_strain) {
+  if (spec.contact.empty() && !finite_strain && spec.solver.control == "load") {
     model::LinearSolveOptions lo;
     lo.condense = spec.discretization.condense;
     lo.solver = solve::linear_solver_kind(spec.solver.linear, spec.solver.where.str() + "linear");
@@ -420,6 +439,9 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     s.newton_iterations = sol.newton_iterations;
     s.load_steps = sol.load_steps;
     s.extra["load_factor"] = sol.load_factor;
+    if (sol.loads_factor != sol.load_factor || !spec.solver.stages.empty() ||
+        spec.solver.control != "load")
+      s.extra["loads_factor"] = sol.loads_factor;
     if (!sol.converged) {
       // The last converged load step is kept apart, in last-good/, with converged: false: it
       // cannot pass for the run's result (no summary.json in the output folder).
@@ -429,15 +451,22 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
         fs::create_directories(good);
         const SolvedState last{&d, sol.u, sol.contact, sol.pairs};
         post_process(spec, last, good, options, comparison, s);
+        write_path(spec, sol, good);
         s.converged = false;
         s.extra["message"] = sol.message;
         write_summary(good);
         std::ostringstream os;
-        os << "; the last converged load step (factor " << sol.load_factor << ") is in " << good;
+        os << "; the last converged load step (";
+        if (sol.loads_factor != sol.load_factor)
+          os << "displacement factor " << sol.load_factor << ", load factor " << sol.loads_factor;
+        else
+          os << "factor " << sol.load_factor;
+        os << ") is in " << good;
         kept = os.str();
       }
       throw NumericalError(spec.file + ": the solver stopped: " + sol.message + kept);
     }
+    write_path(spec, sol, options.out_dir);
     st.u = sol.u;
     st.contact = std::move(sol.contact);
     st.pairs = std::move(sol.pairs);

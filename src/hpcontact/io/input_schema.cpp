@@ -202,6 +202,23 @@ const std::vector<KeySpec>& input_schema() {
               "reduce |R| is halved, up to 10 times): auto = on with friction (its stick/slip "
               "switches make plain Newton cycle with a large tangential penalty), on, off.",
        .choices = {"auto", "on", "off"}},
+      {.path = "solver.control", .type = T::choice, .default_yaml = "load",
+       .doc = "load: load steps with prescribed factors (Newton in each, cut and regrown). "
+              "arc-length: the cylindrical arc-length method (Crisfield) on the factor of the "
+              "loads, which passes limit points (snap-through): prescribed displacements are "
+              "applied first in load steps with the loads at 0, then each step advances a fixed "
+              "length of the displacement increment with the load factor unknown, the length "
+              "scaled by sqrt(5 / iterations) after each step and halved when a step fails; the "
+              "path to load factor 1 is written to path.csv. The first length is that of a "
+              "load step of 1/load_steps.",
+       .choices = {"load", "arc-length"}},
+      {.path = "solver.monitor", .type = T::section,
+       .doc = "A node whose displacement path.csv records at every step (e.g. the top of a "
+              "ring), besides the load factor and the contact resultant."},
+      {.path = "solver.monitor.body", .type = T::string, .required = true,
+       .doc = "Name of the body."},
+      {.path = "solver.monitor.node", .type = T::integer, .required = true,
+       .doc = "Node id in that body."},
       {.path = "solver.stages", .type = T::section_list,
        .doc = "The load path, stage by stage: the factors on the prescribed displacements and on "
               "the loads go linearly from the previous stage's values (0 and 0 at the start) to "
@@ -251,7 +268,7 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "stick: no slip whatever the traction (the tangential penalty only); coulomb: "
               "slip where |t_T| would exceed mu p_N; none: frictionless.",
        .choices = {"none", "stick", "coulomb"}},
-      {.path = "contact[].friction.mu", .type = T::number, .default_yaml = "0",
+      {.path = "contact[].friction.mu", .type = T::number,
        .doc = "Coulomb friction coefficient; required by law: coulomb.", .lower = at_least(0)},
       {.path = "contact[].friction.penalty", .type = T::number, .unit = "force/length³",
        .doc = "Tangential penalty eps_T (seed eq. 3.19); required unless law is none.",

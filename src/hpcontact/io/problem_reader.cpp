@@ -390,6 +390,17 @@ class SpecBuilder {
     s.tolerance = number(node["tolerance"]);
     s.max_cuts = integer(node["max_cuts"]);
     s.line_search = node["line_search"].Scalar();
+    s.control = node["control"].Scalar();
+    if (const YAML::Node m = node["monitor"]) {
+      s.monitor_body = m["body"].Scalar();
+      s.monitor_node = integer(m["node"]);
+    }
+    if (s.control == "arc-length" && node["stages"])
+      source_.fail(node["stages"], "solver.stages",
+                   "control: arc-length finds its own load path (loads only); stages are for load control");
+    if (s.control == "arc-length" && node["target_resultant"])
+      source_.fail(node["target_resultant"], "solver.target_resultant",
+                   "control: arc-length scales the loads, target_resultant the prescribed displacements");
     if (const YAML::Node target = node["target_resultant"]) {
       TargetResultantSpec t;
       t.value = number(target["value"]);
@@ -452,7 +463,7 @@ class SpecBuilder {
       }
       if (const YAML::Node fr = node["friction"]) {
         c.friction.law = fr["law"].Scalar();
-        c.friction.mu = number(fr["mu"]);
+        if (fr["mu"]) c.friction.mu = number(fr["mu"]);
         c.friction.where = source_.where(fr, item_path + ".friction");
         if (c.friction.law == "coulomb" && !fr["mu"])
           source_.fail(fr, item_path + ".friction", "missing key 'mu' (required by law: coulomb)");

@@ -18,6 +18,7 @@
 #include "hpcontact/model/body_stress.hpp"
 #include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/model/linear_solve.hpp"
+#include "hpcontact/solve/arc_length.hpp"
 
 namespace hpcontact::model {
 
@@ -226,6 +227,9 @@ public:
         pair.memory->converged_at = solution(x);
       }
   }
+  /// The load vector on the unknowns (what a unit load factor applies).
+  Eigen::VectorXd load_vector() const { return op_.restrict(d_, op_.load); }
+  double displacement_factor() const { return lambda_; }
   bool has_friction() const {
     for (const auto& pair : pairs_)
       if (pair.memory) return true;
@@ -341,6 +345,21 @@ private:
   Tangent tangent_ = Tangent::analytic;
   double lambda_ = 1.0;    ///< factor on the prescribed displacements
   double lambda_f_ = 1.0;  ///< factor on the loads
+};
+
+/// The system on the path of the loads' factor (arc-length), the prescribed displacements held.
+class LoadsOnPath final : public solve::LoadPathSystem {
+public:
+  explicit LoadsOnPath(ContactSystem& s) : s_(s) {}
+  int size() const override { return s_.size(); }
+  void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve::SparseMatrix* K) override {
+    s_.evaluate(x, r, K);
+  }
+  void set_load_factor(double lambda) override { s_.set_factors(s_.displacement_factor(), lambda); }
+  Eigen::VectorXd load_derivative(const Eigen::VectorXd&) override { return -s_.load_vector(); }
+
+private:
+  ContactSystem& s_;
 };
 
 /// Gap of the deformed boundary at local edge parameter t of element q; the deformed point in
@@ -687,11 +706,31 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
               "contact with friction remembers; prescribe the displacements (or use stages)");
 
   NonlinearSolution sol;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(system.size());
+  // The monitored node's displacement dofs, if any.
+  int monitor_dof = -1;
+  if (!ss.monitor_body.empty()) {
+    int b = -1;
+    const Body& body = body_named(d, ss.monitor_body, ss.where, &b);
+    const int v = body.mesh.node_index(ss.monitor_node);
+    HPC_REQUIRE(v >= 0, InputError, ss.where.str(), "monitor.node: no node ", ss.monitor_node,
+                " in body '", ss.monitor_body, "'");
+    monitor_dof = body.dof_offset + 2 * body.dofs.vertex_mode(v);
+  }
+  auto record = [&](double displacements, double loads, int iterations, double arc) {
+    NonlinearSolution::PathPoint p{displacements, loads, Vec2::Zero(), Vec2::Zero(), iterations, arc};
+    const Eigen::VectorXd u = system.solution(x);
+    if (monitor_dof >= 0) p.monitor = Vec2(u(monitor_dof), u(monitor_dof + 1));
+    if (!pairs.empty()) {
+      std::vector<contact::PointState> states;
+      p.resultant = contact_resultant(d, pairs.front(), u, states);
+    }
+    sol.path.push_back(p);
+  };
   struct Factors {
     double displacements = 0, loads = 0;
   };
   Factors converged;  // the factors of the last converged step
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(system.size());
   auto say = [&](const std::string& s) {
     if (progress) progress(s);
   };
@@ -716,6 +755,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
         lambda = next;
         converged = fn;
         system.commit(x);
+        record(fn.displacements, fn.loads, rep.iterations, 0.0);
         ++sol.load_steps;
         std::ostringstream os;
         os << "load step " << sol.load_steps << ": factor " << fn.displacements;
@@ -774,7 +814,44 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   // that friction holds them in the first load step already.
   system.set_factors(0, 0);
   system.commit(x);
-  if (ss.stages.empty()) {
+  if (ss.control == "arc-length") {
+    // Prescribed displacements first (loads at 0), then the arc-length path of the loads.
+    if (d.prescribed.cwiseAbs().maxCoeff() > 0 &&
+        !advance(0.0, 1.0, ss.load_steps, [](double s) { return Factors{s, 0}; }))
+      return failed();
+    system.set_factors(1, 0);
+    LoadsOnPath path(system);
+    solve::ArcLengthOptions ao;
+    ao.steps = ss.load_steps;
+    ao.max_iterations = ss.max_iterations;
+    ao.tolerance = ss.tolerance;
+    ao.linear_solver = solve::LinearSolverKind::lu;
+    ao.reference_norm = system.load_vector().norm();
+    HPC_REQUIRE(ao.reference_norm > 0, InputError, ss.where.str(),
+                "control: arc-length scales the loads, and there are none");
+    double lf = 0;
+    Eigen::VectorXd xa = x;
+    const auto rep = solve::arc_length(path, xa, lf, ao, [&](const Eigen::VectorXd& xs,
+                                                              const solve::ArcLengthStep& st) {
+      x = xs;
+      converged = {1, st.lambda};
+      system.set_factors(1, st.lambda);
+      system.commit(x);
+      ++sol.load_steps;
+      record(1, st.lambda, st.iterations, st.length);
+      std::ostringstream os;
+      os << "arc-length step " << sol.load_steps << ": load factor " << st.lambda << ", "
+         << st.iterations << " iterations, length " << st.length;
+      say(os.str());
+      return true;
+    });
+    sol.newton_iterations += rep.iterations;
+    if (!rep.reached) {
+      sol.message = rep.message;
+      return failed();
+    }
+    lambda = 1;
+  } else if (ss.stages.empty()) {
     if (!advance_to(0.0, first)) return failed();
   } else {
     Factors start;

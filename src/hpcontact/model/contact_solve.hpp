@@ -83,6 +83,16 @@ struct NonlinearSolution {
   double load_factor = 1;   ///< factor on the prescribed displacements reached
   double loads_factor = 1;  ///< factor on the loads reached (= load_factor without stages)
   std::vector<ContactPair> pairs;     ///< the contact pairs solved, for post-processing
+  /// The load path, a point per converged step: load factors, the monitored node's
+  /// displacement (if solver.monitor), the first pair's contact resultant, iterations.
+  struct PathPoint {
+    double displacements = 0, loads = 0;
+    Vec2 monitor = Vec2::Zero();
+    Vec2 resultant = Vec2::Zero();
+    int iterations = 0;
+    double arc_length = 0;  ///< Δl of an arc-length step, 0 under load control
+  };
+  std::vector<PathPoint> path;
   std::vector<ContactResult> contact;  ///< per pair
 };
 

@@ -151,6 +151,10 @@ struct SolverSpec {
   double tolerance = 1e-10;  ///< relative residual norm
   int max_cuts = 5;          ///< halvings of a load step that does not converge
   std::string line_search = "auto";  ///< "auto" (on with friction), "on", "off"
+  std::string control = "load";  ///< "load" (load steps) or "arc-length" (cylindrical, on the loads)
+  /// A node whose displacement the load path records (path.csv): body name and node id.
+  std::string monitor_body;
+  int monitor_node = 0;
   std::optional<TargetResultantSpec> target_resultant;
   /// The load path; empty: one stage to (1, 1).
   std::vector<LoadStageSpec> stages;

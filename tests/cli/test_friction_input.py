@@ -1,0 +1,47 @@
+"""Bad friction and load-path input ends with a message naming the file, the key and the cause
+(exit 1, no summary.json)."""
+import os
+
+import pytest
+
+STICK = os.path.join("examples", "two-bars", "stick.yaml")
+
+
+@pytest.mark.parametrize("settings, message", [
+    (["contact[0].friction.mu=-0.1"], "contact[0].friction.mu"),
+    (["contact[0].friction.penalty=0"], "contact[0].friction.penalty"),
+    (["contact[0].friction.penalty=-1e8"], "contact[0].friction.penalty"),
+    (["contact[0].friction.law=viscous"], "contact[0].friction.law"),
+    (["solver.target_resultant.value=100"], "stages cannot be combined with target_resultant"),
+    (["solver.stages[0].steps=0"], "solver.stages[0].steps"),
+])
+def test_bad_friction_input(hpcontact, root, tmp_path, settings, message):
+    args = ["run", os.path.join(root, STICK), "--out", tmp_path, "-q"]
+    for s in settings:
+        args += ["--set", s]
+    r = hpcontact(*args)
+    assert r.returncode == 1, r.stderr
+    assert message in r.stderr, r.stderr
+    assert "stick.yaml" in r.stderr
+    assert not os.path.exists(tmp_path / "summary.json")
+
+
+def test_coulomb_needs_mu(hpcontact, root, tmp_path):
+    """law: coulomb without mu is refused (mu has no meaningful default)."""
+    case = tmp_path / "no-mu.yaml"
+    text = open(os.path.join(root, STICK)).read().replace(
+        "friction: {law: stick, penalty: 1.0e8}", "friction: {law: coulomb, penalty: 1.0e8}")
+    case.write_text(text)
+    r = hpcontact("run", case, "--out", tmp_path / "out", "-q")
+    assert r.returncode == 1
+    assert "missing key 'mu'" in r.stderr, r.stderr
+
+
+def test_stick_needs_penalty(hpcontact, root, tmp_path):
+    case = tmp_path / "no-penalty.yaml"
+    text = open(os.path.join(root, STICK)).read().replace(
+        "friction: {law: stick, penalty: 1.0e8}", "friction: {law: stick}")
+    case.write_text(text)
+    r = hpcontact("run", case, "--out", tmp_path / "out", "-q")
+    assert r.returncode == 1
+    assert "missing key 'penalty'" in r.stderr, r.stderr

@@ -1,0 +1,151 @@
+"""The frictional two-bar system (seed §5.5, examples/two-bars) by scripts/two_bars_study.py:
+the contact model with full stick reproduces the monolithic reference (strain energy, strains
+along the interface), the Coulomb model keeps |t_T| <= mu p_N at every contact point, and the
+study writes its report; plus unit tests of the relative L2 norm (our reading of seed eq. 5.15)
+and of the Coulomb check."""
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from conftest import load_script
+
+SUBDIVISIONS = 32
+
+
+@pytest.fixture(scope="module")
+def study():
+    return load_script("two_bars_study")
+
+
+@pytest.fixture(scope="module")
+def results(study, exe, tmp_path_factory):
+    """The full examples (p = [15, 5], no override), VTU subdivisions 32; about 1 s."""
+    return study.run_study(exe, str(tmp_path_factory.mktemp("two-bars")), SUBDIVISIONS)
+
+
+def test_stick_energy_matches_monolithic(results):
+    """(U_stick - U_mono) / U_mono < 1e-5 (the issue's requirement; measured 4.13e-6, the seed
+    3.0e-7 on its own dimensions). The penalty spring eps_N is compensated in the monolithic
+    model by the reduced top displacement of seed eq. 5.14; what is left is the tangential
+    penalty's micro slip."""
+    rel = results["energy_rel"]["stick"]
+    assert abs(rel) < 1e-5, f"(U_stick - U_mono) / U_mono = {rel:.3e}"
+
+
+def test_stick_interface_strains_match_monolithic(results):
+    """e_L2 (relative L2 norm, percent) of the strains on the interface y = 0, 0 < x < 8, stick
+    against monolithic, at 32 subdivisions: measured eps_y 0.0028 %, gamma_xy 0.0095 % (the
+    seed: 0.002 % and 0.172 %). Asserted with a margin of about 3x: eps_y < 0.01 %, gamma_xy
+    < 0.03 %, both far inside the issue's bounds (0.1 %, 5 %). The values fall with the sampling
+    density (64: 0.0021 %, 0.0070 %; 256: 0.0016 %, 0.0056 %): the differences gather at the
+    re-entrant corner x = 8, whose end sample carries weight h/2."""
+    l2 = results["l2"]["stick"]
+    e_y, e_xy = l2[("strain_yy", (0.0, 8.0))], l2[("gamma_xy", (0.0, 8.0))]
+    assert e_y < 0.01, f"e_L2(eps_y) = {e_y:.4g} %"
+    assert e_xy < 0.03, f"e_L2(gamma_xy) = {e_xy:.4g} %"
+    # eps_x is the model difference the seed discusses (tangential micro slip): large near the
+    # corner, small away from it (measured 5.5 % on (0, 7.5), 39 % on (7.5, 8))
+    e_x = {iv: l2[("strain_xx", iv)] for iv in ((0.0, 7.5), (7.5, 8.0))}
+    assert e_x[(0.0, 7.5)] < e_x[(7.5, 8.0)], e_x
+
+
+def test_coulomb_bound_at_every_contact_point(results):
+    """Coulomb, mu = 0.3: at every slip point |t_T| <= mu p_N (1 + 1e-9), at every stick point
+    |t_T| < mu p_N; both states occur (measured 5 slip points, ratio 1 + 3e-12; 45 stick points,
+    largest ratio 0.969; stick-slip transitions at x = 7.70 and 7.99)."""
+    c = results["coulomb"]
+    assert c["mu"] == pytest.approx(0.3)
+    assert c["slip_points"] >= 1 and c["stick_points"] >= 1, c
+    assert c["max_slip_ratio"] <= 1 + 1e-9, c["max_slip_ratio"]
+    assert c["max_stick_ratio"] < 1, c["max_stick_ratio"]
+    assert not c["breaches"], c["breaches"]
+    assert c["ok"]
+    assert c["transitions"], "no stick-slip transition reported"
+
+
+def test_report_files(results):
+    """two-bars.md, two-bars.csv and the two plots exist and are not empty; the md states how
+    eq. 5.15 is read, the csv has the e_L2 rows of both contact models."""
+    files = results["files"]
+    for key in ("md", "csv", "strains", "tractions"):
+        assert os.path.getsize(files[key]) > 0, files[key]
+    assert os.path.basename(files["strains"]) == "interface-strains.png"
+    assert os.path.basename(files["tractions"]) == "coulomb-tractions.png"
+    with open(files["md"]) as f:
+        assert "eq. 5.15" in f.read()
+    with open(files["csv"]) as f:
+        rows = f.read().splitlines()
+    assert sum(r.startswith("e_L2_percent,") for r in rows) == 2 * 3 * 3
+
+
+def test_relative_l2_linear_pair(study):
+    """ref = x, other = x + c on (0, 1): e_L2 = 100 c sqrt(3) %. On n uniform intervals the
+    trapezoid rule integrates c^2 exactly and x^2 as 1/3 + h^2/6, so the sampled value is
+    100 c / sqrt(1/3 + h^2/6), within h^2/4 (relative) of the exact one."""
+    c, n = 0.01, 100
+    h = 1.0 / n
+    x = np.linspace(0.0, 1.0, n + 1)
+    e = study.relative_l2(x, x, x + c, 0.0, 1.0)
+    assert e == pytest.approx(100 * c / math.sqrt(1 / 3 + h * h / 6), rel=1e-12)
+    assert e == pytest.approx(100 * c * math.sqrt(3), rel=h * h / 4 * 1.01)
+
+
+def test_relative_l2_interval_between_samples(study):
+    """The same pair on (0.25, 0.75) sampled at x = 0, 0.1, ..., 1 (the ends are not samples,
+    the functions are interpolated there; exact for linear ones): e_L2 = 100 c sqrt(0.5 /
+    int_0.25^0.75 x^2 dx), the trapezoid error in the denominator at most (b - a) h^2 max|f''| /
+    12 = 0.5 0.01 2 / 12 of the integral's 0.1354."""
+    c = 0.02
+    x = np.linspace(0.0, 1.0, 11)
+    e = study.relative_l2(x, x, x + c, 0.25, 0.75)
+    norm = (0.75 ** 3 - 0.25 ** 3) / 3
+    exact = 100 * c * math.sqrt(0.5 / norm)
+    assert e == pytest.approx(exact, rel=0.5 * (0.5 * 0.01 * 2 / 12) / norm * 1.01)
+    with pytest.raises(ValueError):
+        study.relative_l2(x, x, x + c, 0.5, 1.5)
+
+
+def test_coulomb_check_finds_breaches(study, tmp_path):
+    """A slip point 1e-6 above the bound and a stick point on it are both reported; a slip
+    point within 1e-9 is not."""
+    path = tmp_path / "contact.csv"
+    header = ("pair,X,Y,x,y,gap,pressure,pressure_from_stress,tangential_gap,"
+              "tangential_traction,slip,state")
+    rows = [(0.1, 100, -29.0, "stick"), (0.2, 100, 30 * (1 + 1e-6), "slip"),
+            (0.3, 100, 30 * (1 + 1e-10), "slip"), (0.4, 100, -30.0, "stick"),
+            (0.5, 0, 0, "open")]
+    path.write_text(header + "\n" + "".join(f"0,{X},0,{X},0,0,{p},{p},0,{t},0,{s}\n"
+                                            for X, p, t, s in rows))
+    c = study.coulomb_check(str(path), 0.3)
+    assert (c["slip_points"], c["stick_points"], c["open_points"]) == (2, 2, 1)
+    assert [(x, s) for x, s, _ in c["breaches"]] == [(0.2, "slip"), (0.4, "stick")]
+    assert not c["ok"]
+
+
+def test_mismatched_samples_fail_clearly(study):
+    """The interface samples of the two models must coincide."""
+    a = {"x": np.linspace(0, 8, 5), "strain_yy": np.ones(5)}
+    b = {"x": np.linspace(0, 8, 9), "strain_yy": np.ones(9)}
+    with pytest.raises(study.StudyError, match="differ"):
+        study.compare_strains(a, b, "test", fields=("strain_yy",))
+
+
+def test_command_line(exe, root, tmp_path):
+    """The script at a low degree prints where its files are; a failing run exits 1 naming the
+    run and the cause."""
+    script = os.path.join(root, "scripts", "two_bars_study.py")
+    out = tmp_path / "quick"
+    proc = subprocess.run([sys.executable, script, "--hpcontact", exe, "--out", str(out),
+                           "--subdivisions", "8", "--set", "discretization.degree=[6, 2]"],
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    for name in ("two-bars.md", "two-bars.csv", "interface-strains.png", "coulomb-tractions.png"):
+        assert str(out / name) in proc.stdout
+    proc = subprocess.run([sys.executable, script, "--hpcontact", exe, "--out",
+                           str(tmp_path / "bad"), "--set", "discretization.degree=[0, 2]"],
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 1
+    assert "monolithic run failed" in proc.stderr and "degree" in proc.stderr, proc.stderr
