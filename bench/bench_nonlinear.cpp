@@ -17,8 +17,9 @@ using namespace hpcontact;
 
 std::string source(const std::string& path) { return std::string(HPC_SOURCE_DIR) + "/" + path; }
 
-void solve_case(benchmark::State& state, const std::string& path) {
-  const auto spec = io::read_problem(source(path), {});
+void solve_case(benchmark::State& state, const std::string& path,
+                const std::vector<std::string>& overrides = {}) {
+  const auto spec = io::read_problem(source(path), overrides);
   const auto d = model::discretize(spec);
   model::NonlinearSolution sol;
   for (auto _ : state) {
@@ -56,16 +57,7 @@ const int registered = [] {
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
   benchmark::RegisterBenchmark("BM_ArcLength/tests/cli/data/shallow-arch.yaml", [](benchmark::State& s) {
-    const auto spec = io::read_problem(source("tests/cli/data/shallow-arch.yaml"), {"solver.control=arc-length"});
-    const auto d = model::discretize(spec);
-    model::NonlinearSolution sol;
-    for (auto _ : s) {
-      sol = model::solve_contact(spec, d);
-      if (!sol.converged) s.SkipWithError(sol.message.c_str());
-    }
-    s.counters["dofs"] = d.n_free;
-    s.counters["load_steps"] = sol.load_steps;
-    s.counters["newton_iterations"] = sol.newton_iterations;
+    solve_case(s, "tests/cli/data/shallow-arch.yaml", {"solver.control=arc-length"});
   })->Unit(benchmark::kMillisecond)->UseRealTime();
   using K = solve::LinearSolverKind;
   const std::vector<std::tuple<std::string, std::string, K>> steps = {
