@@ -26,22 +26,14 @@ def test_bad_friction_input(hpcontact, root, tmp_path, settings, message):
     assert not os.path.exists(tmp_path / "summary.json")
 
 
-def test_coulomb_needs_mu(hpcontact, root, tmp_path):
-    """law: coulomb without mu is refused (mu has no meaningful default)."""
-    case = tmp_path / "no-mu.yaml"
-    text = open(os.path.join(root, STICK)).read().replace(
-        "friction: {law: stick, penalty: 1.0e8}", "friction: {law: coulomb, penalty: 1.0e8}")
-    case.write_text(text)
+@pytest.mark.parametrize("friction, message", [
+    ("{law: coulomb, penalty: 1.0e8}", "missing key 'mu'"),  # mu has no meaningful default
+    ("{law: stick}", "missing key 'penalty'"),
+])
+def test_friction_missing_key(hpcontact, root, tmp_path, friction, message):
+    case = tmp_path / "case.yaml"
+    text = open(os.path.join(root, STICK)).read()
+    case.write_text(text.replace("friction: {law: stick, penalty: 1.0e8}", "friction: " + friction))
     r = hpcontact("run", case, "--out", tmp_path / "out", "-q")
     assert r.returncode == 1
-    assert "missing key 'mu'" in r.stderr, r.stderr
-
-
-def test_stick_needs_penalty(hpcontact, root, tmp_path):
-    case = tmp_path / "no-penalty.yaml"
-    text = open(os.path.join(root, STICK)).read().replace(
-        "friction: {law: stick, penalty: 1.0e8}", "friction: {law: stick}")
-    case.write_text(text)
-    r = hpcontact("run", case, "--out", tmp_path / "out", "-q")
-    assert r.returncode == 1
-    assert "missing key 'penalty'" in r.stderr, r.stderr
+    assert message in r.stderr, r.stderr

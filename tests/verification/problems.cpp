@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "hpcontact/model/contact_solve.hpp"
+
 namespace hpcontact::test_problems {
 
 model::BodySpec body(const std::string& name, double E, double nu) {
@@ -170,6 +172,19 @@ model::ProblemSpec lame_quarter(int n_r, int n_theta) {
   spec.exact.outer_radius = b;
   spec.exact.inner_pressure = 100;
   return spec;
+}
+
+}  // namespace hpcontact::test_problems
+
+namespace hpcontact::test_problems {
+
+double tangent_mismatch(const model::ProblemSpec& spec, const model::Discretization& d,
+                        const model::NonlinearSolution& sol, double* asymmetry) {
+  const Eigen::MatrixXd Ka = model::contact_tangent(spec, d, sol, false);
+  const Eigen::MatrixXd Kd = model::residual_jacobian_by_differences(spec, d, sol);
+  const double scale = Ka.cwiseAbs().maxCoeff();
+  if (asymmetry) *asymmetry = (Ka - Ka.transpose()).cwiseAbs().maxCoeff() / scale;
+  return (Ka - Kd).cwiseAbs().maxCoeff() / scale;
 }
 
 }  // namespace hpcontact::test_problems

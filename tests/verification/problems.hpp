@@ -34,3 +34,19 @@ namespace hpcontact::test_problems {
 model::ProblemSpec lame_quarter(int n_r, int n_theta);
 
 }  // namespace hpcontact::test_problems
+
+namespace hpcontact::model {
+struct Discretization;
+struct NonlinearSolution;
+}  // namespace hpcontact::model
+
+namespace hpcontact::test_problems {
+
+/// max |K_analytic − K_differences| / max |K_analytic| of the nonlinear system at a converged
+/// solution, K_differences the plain central differences of the residual
+/// (model::residual_jacobian_by_differences); `asymmetry` (if not null) gets
+/// max |K − Kᵀ| / max |K| of the analytic tangent.
+double tangent_mismatch(const model::ProblemSpec& spec, const model::Discretization& d,
+                        const model::NonlinearSolution& sol, double* asymmetry = nullptr);
+
+}  // namespace hpcontact::test_problems

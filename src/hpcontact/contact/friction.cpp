@@ -9,15 +9,19 @@ Tangential return_map(const FrictionLaw& law, double g_t, double slip_n, double 
   Tangential r;
   const double trial = law.eps_t * (g_t - slip_n);
   const double bound = law.mu * p_n;
-  if (law.kind == FrictionLaw::Kind::stick || std::abs(trial) <= bound) {
+  // Stick inside the cone; a zero trial sticks even at p_N = 0 (a point that just touches is
+  // held by ε_T, not left without tangential stiffness).
+  if (law.kind == FrictionLaw::Kind::stick || trial == 0 || std::abs(trial) < (1 - 1e-9) * bound) {
     r.traction = trial;
     r.slip = slip_n;
     r.state = StickSlip::stick;
+    r.dt_dgt = law.eps_t;
     return r;
   }
   r.traction = std::copysign(bound, trial);
   r.slip = g_t - r.traction / law.eps_t;
   r.state = StickSlip::slip;
+  r.dt_dp = std::copysign(law.mu, trial);
   return r;
 }
 

@@ -36,15 +36,20 @@ struct FrictionHistory {
 enum class StickSlip { open, stick, slip };
 
 /// The tangential traction t_T (along τ, acting on the other side; the point's body receives
-/// −t_T τ) and the slip after the return mapping.
+/// −t_T τ), the slip after the return mapping, and the derivatives of t_T that the consistent
+/// tangent needs: ∂t_T/∂u = dt_dgt ∂g_T/∂u + dt_dp ∂p_N/∂u.
 struct Tangential {
   double traction = 0;
   double slip = 0;  ///< updated accumulated slip
   StickSlip state = StickSlip::open;
+  double dt_dgt = 0;  ///< ε_T in stick, 0 in slip
+  double dt_dp = 0;   ///< μ sign(t_T) in slip, 0 in stick
 };
 
-/// Trial t_T = ε_T (g_T − g_s,n); stick if |t_T| ≤ μ p_N (always with Kind::stick), otherwise
-/// slip: t_T = μ p_N sign(trial), g_s = g_T − t_T / ε_T.
+/// Trial t_T = ε_T (g_T − g_s,n); stick if |t_T| < μ p_N or t_T = 0 (always with Kind::stick), otherwise
+/// slip: t_T = μ p_N sign(trial), g_s = g_T − t_T / ε_T. A trial on the cone (to a relative
+/// 1e-9) counts as slip, so that a converged state evaluated again after its slips were
+/// committed maps to the same states (its slipping points lie exactly on the cone then).
 Tangential return_map(const FrictionLaw& law, double g_t, double slip_n, double p_n);
 
 }  // namespace hpcontact::contact

@@ -5,6 +5,18 @@
 
 namespace hpcontact::contact {
 
+Tangential add_friction(PointState& ps, const FrictionLaw& law, const FrictionHistory& h,
+                        const Vec2& anchor) {
+  ps.tau = h.tau;
+  ps.g_t = (ps.x - anchor).dot(h.tau);
+  const Tangential tr = return_map(law, ps.g_t, h.slip, ps.pressure);
+  ps.t_t = tr.traction;
+  ps.slip = tr.slip;
+  ps.stick_slip = tr.state;
+  ps.traction -= tr.traction * h.tau;
+  return tr;
+}
+
 void penalty_contact(const std::vector<ContactPoint>& points, const Obstacle& obstacle,
                      double eps_n, const Eigen::VectorXd& u, Eigen::VectorXd& force,
                      std::vector<Eigen::Triplet<double>>* tangent, int offset,
@@ -34,16 +46,8 @@ void penalty_contact(const std::vector<ContactPoint>& points, const Obstacle& ob
     // g = 0 counts as active: the force is zero there but the tangent takes the side of
     // contact, so a body that touches its support without load (a zero initial gap) is held.
     Tangential tr;
-    const FrictionHistory* h = friction.active() ? &(*friction.history)[i] : nullptr;
-    if (g <= 0 && h && h->anchored) {
-      ps.tau = h->tau;
-      ps.g_t = (x - (h->anchor + obstacle.offset())).dot(h->tau);
-      tr = return_map(*friction.law, ps.g_t, h->slip, ps.pressure);
-      ps.t_t = tr.traction;
-      ps.slip = tr.slip;
-      ps.stick_slip = tr.state;
-      ps.traction -= tr.traction * h->tau;
-    }
+    if (const FrictionHistory* h = friction.at(i, g))
+      tr = add_friction(ps, *friction.law, *h, h->anchor + obstacle.offset());
     if (states) (*states)[i] = ps;
     if (g > 0) continue;
     const Vec2 f = cp.weight * ps.traction;
@@ -52,11 +56,9 @@ void penalty_contact(const std::vector<ContactPoint>& points, const Obstacle& ob
       force(2 * cp.modes[k] + 1) += cp.N(k) * f.y();
     }
     if (!tangent) continue;
-    Mat2 C = cp.weight * eps_n * (n * n.transpose() + g * dn);
-    if (tr.state == StickSlip::stick)
-      C += cp.weight * friction.law->eps_t * h->tau * h->tau.transpose();
-    else if (tr.state == StickSlip::slip)
-      C -= cp.weight * friction.law->mu * std::copysign(1.0, tr.traction) * eps_n * h->tau * n.transpose();
+    // Friction: w τ ∂t_T/∂xᵀ with ∂g_T/∂x = τ, ∂p_N/∂x = −ε_N n (τ = 0 when open).
+    const Mat2 C = cp.weight * (eps_n * (n * n.transpose() + g * dn) +
+                                ps.tau * (tr.dt_dgt * ps.tau - tr.dt_dp * eps_n * n).transpose());
     for (int a = 0; a < m; ++a)
       for (int b = 0; b < m; ++b) {
         const double nn = cp.N(a) * cp.N(b);

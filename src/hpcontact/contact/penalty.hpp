@@ -37,7 +37,19 @@ struct FrictionInput {
   const FrictionLaw* law = nullptr;
   const std::vector<FrictionHistory>* history = nullptr;
   bool active() const { return law && law->active() && history; }
+  /// The history of point i when it carries friction: anchored and in contact (g ≤ 0).
+  const FrictionHistory* at(size_t i, double gap) const {
+    if (!active() || gap > 0) return nullptr;
+    const FrictionHistory& h = (*history)[i];
+    return h.anchored ? &h : nullptr;
+  }
 };
+
+/// The tangential part of an anchored point in contact whose anchor is now at `anchor`: g_T
+/// along the frozen tangent, the return mapping, and the state's fields (τ, g_T, t_T, slip,
+/// stick/slip, the traction less t_T τ).
+Tangential add_friction(PointState& ps, const FrictionLaw& law, const FrictionHistory& h,
+                        const Vec2& anchor);
 
 /// Penalty contribution of all points against an obstacle.
 ///

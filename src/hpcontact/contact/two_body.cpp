@@ -32,48 +32,16 @@ void two_body_contact(const std::vector<ContactPoint>& points, const Eigen::Vect
     ps.foot_edge = foot.edge;
     ps.foot_t = foot.t;
     ps.foot = foot.x;
-    const FrictionHistory* h = friction.active() ? &(*friction.history)[i] : nullptr;
+    const FrictionHistory* h = friction.at(i, g);
     Tangential tr;
     BoundaryPoint at;  // the anchor, deformed
-    if (g <= 0 && h && h->anchored) {
+    if (h) {
       master.evaluate(h->edge, h->t, at);
-      ps.tau = h->tau;
-      ps.g_t = (xs - at.x).dot(h->tau);
-      tr = return_map(*friction.law, ps.g_t, h->slip, p);
-      ps.t_t = tr.traction;
-      ps.slip = tr.slip;
-      ps.stick_slip = tr.state;
-      ps.traction -= tr.traction * h->tau;
+      tr = add_friction(ps, *friction.law, *h, at.x);
     }
     if (states) (*states)[i] = ps;
     if (g > 0) continue;
     const double w = weight_factor * cp.weight;
-    if (tr.state != StickSlip::open) {
-      // G_T on the slave's modes and the anchor's modes of the master: forces −w t_T G_T.
-      for (int k = 0; k < ms; ++k)
-        for (int c = 0; c < 2; ++c) force_s(2 * cp.modes[k] + c) -= w * tr.traction * cp.N(k) * h->tau(c);
-      for (size_t k = 0; k < at.modes.size(); ++k)
-        for (int c = 0; c < 2; ++c) force_m(2 * at.modes[k] + c) += w * tr.traction * at.N(k) * h->tau(c);
-      if (tangent) {
-        // (global dof, value) of G_T and, in slip, of G_n.
-        std::vector<std::pair<int, double>> GT, Gn;
-        for (int k = 0; k < ms; ++k)
-          for (int c = 0; c < 2; ++c) {
-            GT.emplace_back(offset_s + 2 * cp.modes[k] + c, cp.N(k) * h->tau(c));
-            Gn.emplace_back(offset_s + 2 * cp.modes[k] + c, cp.N(k) * n(c));
-          }
-        for (size_t k = 0; k < at.modes.size(); ++k)
-          for (int c = 0; c < 2; ++c) GT.emplace_back(offset_m + 2 * at.modes[k] + c, -at.N(k) * h->tau(c));
-        for (size_t k = 0; k < foot.modes.size(); ++k)
-          for (int c = 0; c < 2; ++c) Gn.emplace_back(offset_m + 2 * foot.modes[k] + c, -foot.N(k) * n(c));
-        const bool stick = tr.state == StickSlip::stick;
-        const double f = stick ? w * friction.law->eps_t
-                               : -w * friction.law->mu * std::copysign(1.0, tr.traction) * eps_n;
-        for (const auto& [r, vr] : GT)
-          for (const auto& [c, vc] : stick ? GT : Gn)
-            if (vr * vc != 0.0) tangent->emplace_back(r, c, f * vr * vc);
-      }
-    }
     const int mm = static_cast<int>(foot.modes.size());
     // local dofs: body s's modes first (2 components each), then body m's
     const int L = 2 * (ms + mm);
@@ -97,16 +65,38 @@ void two_body_contact(const std::vector<ContactPoint>& points, const Eigen::Vect
     for (int k = 0; k < mm; ++k)
       for (int c = 0; c < 2; ++c)
         force_m(2 * foot.modes[k] + c) += w * p * Gn(2 * (ms + k) + c);
+    auto global = [&](int j) {
+      const int k = j / 2, c = j % 2;
+      return k < ms ? offset_s + 2 * cp.modes[k] + c : offset_m + 2 * foot.modes[k - ms] + c;
+    };
+    if (h) {
+      // Friction: G_T = ∂g_T/∂u on the slave's modes and the anchor's modes of the master (not
+      // the foot's); forces −w t_T G_T; tangent w G_T (dt_dgt G_T − dt_dp ε_N G_n)ᵀ.
+      std::vector<std::pair<int, double>> GT;
+      for (int k = 0; k < ms; ++k)
+        for (int c = 0; c < 2; ++c) GT.emplace_back(offset_s + 2 * cp.modes[k] + c, cp.N(k) * h->tau(c));
+      for (size_t k = 0; k < at.modes.size(); ++k)
+        for (int c = 0; c < 2; ++c) GT.emplace_back(offset_m + 2 * at.modes[k] + c, -at.N(k) * h->tau(c));
+      for (int k = 0; k < ms; ++k)
+        for (int c = 0; c < 2; ++c) force_s(2 * cp.modes[k] + c) -= w * tr.traction * cp.N(k) * h->tau(c);
+      for (size_t k = 0; k < at.modes.size(); ++k)
+        for (int c = 0; c < 2; ++c) force_m(2 * at.modes[k] + c) += w * tr.traction * at.N(k) * h->tau(c);
+      if (tangent)
+        for (const auto& [r, vr] : GT) {
+          if (tr.dt_dgt != 0)
+            for (const auto& [c, vc] : GT)
+              if (vr * vc != 0.0) tangent->emplace_back(r, c, w * tr.dt_dgt * vr * vc);
+          if (tr.dt_dp != 0)
+            for (int j = 0; j < L; ++j)
+              if (vr * Gn(j) != 0.0) tangent->emplace_back(r, global(j), -w * tr.dt_dp * eps_n * vr * Gn(j));
+        }
+    }
     if (!tangent) continue;
     const double a = t.squaredNorm(), kappa = master.curvature(foot), cc = a - g * kappa;
     const Eigen::VectorXd H = Gt + g * Dn;
     const Eigen::MatrixXd M =
         -(Dn * H.transpose() / cc + Gt * Dn.transpose() / a + kappa * Gt * H.transpose() / (a * cc));
     const Eigen::MatrixXd K = w * (eps_n * Gn * Gn.transpose() - p * 0.5 * (M + M.transpose()));
-    auto global = [&](int j) {
-      const int k = j / 2, c = j % 2;
-      return k < ms ? offset_s + 2 * cp.modes[k] + c : offset_m + 2 * foot.modes[k - ms] + c;
-    };
     for (int r = 0; r < L; ++r)
       for (int s = 0; s < L; ++s)
         if (K(r, s) != 0.0) tangent->emplace_back(global(r), global(s), K(r, s));

@@ -416,9 +416,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     say(os.str());
   }
   SolvedState st;
-  bool finite_strain = false;
-  for (const auto& b : d.bodies) finite_strain = finite_strain || b.finite_strain();
-  if (spec.contact.empty() && !finite_strain && spec.solver.control == "load") {
+  if (spec.contact.empty() && !d.finite_strain() && spec.solver.control == "load") {
     model::LinearSolveOptions lo;
     lo.condense = spec.discretization.condense;
     lo.solver = solve::linear_solver_kind(spec.solver.linear, spec.solver.where.str() + "linear");

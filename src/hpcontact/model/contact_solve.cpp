@@ -85,12 +85,6 @@ PairForces pair_forces(const Discretization& d, const ContactPair& pair, const E
   return f;
 }
 
-bool has_finite_strain(const Discretization& d) {
-  for (const auto& b : d.bodies)
-    if (b.finite_strain()) return true;
-  return false;
-}
-
 /// The internal forces of the finite-strain bodies at the state u (all dofs), their tangent's
 /// triplets into t if not null. The element values are computed once and kept.
 class FiniteStrainForces {
@@ -181,8 +175,6 @@ void commit_friction(const ContactPair& pair, const PairForces& f) {
   pair.memory->other_points_before = pair.memory->other_points;
   update(pair.memory->points, f.states);
   if (pair.other >= 0) update(pair.memory->other_points, f.other_states);
-  pair.memory->states = f.states;
-  pair.memory->other_states = f.other_states;
 }
 
 /// The nonlinear system over the unknowns of the elastic operator: with static condensation only
@@ -201,7 +193,7 @@ public:
                 Tangent tangent = Tangent::analytic)
       : d_(d),
         pairs_(pairs),
-        op_(assemble_elastic(d, condense && !has_finite_strain(d))),
+        op_(assemble_elastic(d, condense && !d.finite_strain())),
         K_uu_(op_.unknown_block(d)),
         finite_(d),
         tangent_(tangent) {}
@@ -220,12 +212,10 @@ public:
 
   /// After a converged load step at x: the friction histories take its anchors and slips.
   void commit(const Eigen::VectorXd& x) const {
+    if (!has_friction()) return;
     const Eigen::VectorXd u = full(x);
     for (const auto& pair : pairs_)
-      if (pair.memory) {
-        commit_friction(pair, pair_forces(d_, pair, u, nullptr));
-        pair.memory->converged_at = solution(x);
-      }
+      if (pair.memory) commit_friction(pair, pair_forces(d_, pair, u, nullptr));
   }
   /// The load vector on the unknowns (what a unit load factor applies).
   Eigen::VectorXd load_vector() const { return op_.restrict(d_, op_.load); }
@@ -253,8 +243,7 @@ public:
   /// displaced obstacle with no other load, must converge relative to those, not to its own
   /// small increment).
   double force_scale(const Eigen::VectorXd& x) const {
-    Eigen::VectorXd f = op_.K * (lambda_ * d_.prescribed);
-    if (!finite_.empty()) finite_.add(lambda_ * d_.prescribed, f, nullptr, nullptr);
+    const Eigen::VectorXd f = op_.K * (lambda_ * d_.prescribed);
     const Eigen::VectorXd u = full(x);
     Eigen::VectorXd g = op_.K * u;
     if (!finite_.empty()) finite_.add(u, g, nullptr, nullptr);
@@ -413,16 +402,7 @@ double stress_pressure(const Body& body, int q, int le, double t, const Vec2& N,
 /// ∫ traction ds of a pair at the state u, and the states of its points.
 Vec2 contact_resultant(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u,
                        std::vector<contact::PointState>& states) {
-  PairForces f;
-  if (pair.memory && pair.memory->converged_at.size() == u.size() && pair.memory->converged_at == u) {
-    // With friction, the states of the converged step as its Newton iterations saw them: a new
-    // evaluation would see the slips it committed (a point that slipped lies on the cone, where
-    // the return mapping would call it stuck).
-    f.states = pair.memory->states;
-    f.other_states = pair.memory->other_states;
-  } else {
-    f = pair_forces(d, pair, u, nullptr);
-  }
+  PairForces f = pair_forces(d, pair, u, nullptr);
   const Vec2 r = f.resultant(pair);
   states = std::move(f.states);
   return r;
@@ -695,7 +675,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     if (pair.other >= 0) no.linear_solver = solve::LinearSolverKind::lu;
   // The finite-strain tangent is indefinite wherever the body is unstable under compression
   // (and may be on the way to a stable state): solved by LU.
-  if (has_finite_strain(d)) no.linear_solver = solve::LinearSolverKind::lu;
+  if (d.finite_strain()) no.linear_solver = solve::LinearSolverKind::lu;
 
   // The unsymmetric tangent of friction in slip: LU. Stick/slip switches make Newton cycle
   // with a large tangential penalty: the line search is on with friction unless switched off.
@@ -850,7 +830,6 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       sol.message = rep.message;
       return failed();
     }
-    lambda = 1;
   } else if (ss.stages.empty()) {
     if (!advance_to(0.0, first)) return failed();
   } else {
@@ -899,8 +878,8 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     }
   }
   sol.u = system.solution(x);
-  sol.load_factor = ss.stages.empty() ? lambda : converged.displacements;
-  sol.loads_factor = ss.stages.empty() ? lambda : converged.loads;
+  sol.load_factor = converged.displacements;
+  sol.loads_factor = converged.loads;
   sol.converged = true;
   for (const auto& pair : pairs) sol.contact.push_back(contact_result(d, pair, sol.u));
   sol.pairs = std::move(pairs);
@@ -920,7 +899,6 @@ solve::SparseMatrix tangent_at(const ProblemSpec& spec, const Discretization& d,
       auto before = std::make_shared<ContactPair::FrictionMemory>(*pair.memory);
       before->points = before->points_before;
       before->other_points = before->other_points_before;
-      before->converged_at.resize(0);
       pair.memory = before;
     }
   ContactSystem system(d, pairs, spec.discretization.condense, kind);

@@ -37,11 +37,10 @@ struct ContactPair {
   /// load step to load step; shared by copies of the pair.
   struct FrictionMemory {
     std::vector<contact::FrictionHistory> points, other_points;
-    /// The histories the last committed step started from (what its Newton iterations saw).
+    /// The histories the last committed step started from (what its Newton iterations saw),
+    /// for its tangent (contact_tangent): evaluated with the committed slips, slipping points
+    /// lie on the cone, where a difference quotient straddles stick and slip.
     std::vector<contact::FrictionHistory> points_before, other_points_before;
-    /// The states of the last committed step and its displacements (all dofs).
-    std::vector<contact::PointState> states, other_states;
-    Eigen::VectorXd converged_at;
   };
   std::shared_ptr<FrictionMemory> memory;
   Vec2 reference_point = Vec2::Zero();  ///< obstacle point used for the half width

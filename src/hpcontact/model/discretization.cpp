@@ -84,7 +84,8 @@ Body make_body(const ProblemSpec& spec, int b) {
                                                            : material::Plane::strain;
   mat.validate(bs.material.where.str());
 
-  Body body{bs.name, std::move(mesh), std::move(dofs), {}, {}, mat, bs.material.thickness, 0, {}};
+  Body body{bs.name, std::move(mesh), std::move(dofs), {}, {}, mat, bs.material.thickness, 0, {},
+            material::Law::linear, {}, {}};
   if (!bs.regions.empty()) body.element_region.assign(body.mesh.n_quads(), -1);
   for (const auto& region : bs.regions) {
     material::LinearElastic rm = mat;

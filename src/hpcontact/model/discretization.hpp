@@ -64,6 +64,13 @@ struct Discretization {
   std::vector<int> free_index;  ///< per dof: its index among the free ones, or -1 if prescribed
   Eigen::VectorXd prescribed;   ///< per dof: its prescribed value (0 where free)
   Eigen::VectorXd load;         ///< external load per dof (edge loads, nodal forces, body force)
+
+  /// Whether a body is of finite strain (then the problem is nonlinear even without contact).
+  bool finite_strain() const {
+    for (const auto& b : bodies)
+      if (b.finite_strain()) return true;
+    return false;
+  }
 };
 
 /// Builds the discretisation; input errors name the problem file and key (InputError, MeshError).

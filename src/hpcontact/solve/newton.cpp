@@ -17,8 +17,10 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
   LinearSolver solver(options.linear_solver);
   double scale = 0;
   Eigen::VectorXd dx;
+  bool evaluated = false;  // r and K already hold the state x (the line search's full step)
   for (int it = 0;; ++it) {
-    system.evaluate(x, r, &K);
+    if (!evaluated) system.evaluate(x, r, &K);
+    evaluated = false;
     double rn = r.norm();
     // A correction that leaves the admissible states (an element turned inside out under finite
     // strain: no residual there) is halved back towards the last state, up to kBacktracks times.
@@ -62,21 +64,29 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
     dx = solver.solve(-r);
     if (options.line_search) {
       // Backtracking on |R|: the full correction unless it fails to reduce the residual, else
-      // the first of ½, ¼, ... that does (or the best of them). The residual is evaluated
-      // without its tangent, which the next iteration forms anyway.
-      Eigen::VectorXd rt;
+      // the first of ½, ¼, ... that does (or the best of them). The full step is evaluated
+      // with its tangent, kept for the next iteration when it is taken (the usual case); the
+      // shorter ones without.
+      Eigen::VectorXd r_full, rt;
+      SparseMatrix K_full;
       double best = std::numeric_limits<double>::infinity(), alpha = 1, best_alpha = 1;
       for (int k = 0; k < 10; ++k, alpha *= 0.5) {
-        const Eigen::VectorXd xt = x + alpha * dx;
-        system.evaluate(xt, rt, nullptr);
-        const double rtn = rt.norm();
+        if (k == 0) system.evaluate(x + dx, r_full, &K_full);
+        else system.evaluate(x + alpha * dx, rt, nullptr);
+        const double rtn = (k == 0 ? r_full : rt).norm();
         if (rtn < best) {
           best = rtn;
           best_alpha = alpha;
         }
         if (rtn <= (1 - 1e-4 * alpha) * rn) break;
       }
-      if (best_alpha < 1) ++report.line_searches;
+      if (best_alpha < 1) {
+        ++report.line_searches;
+      } else {
+        r.swap(r_full);
+        K.swap(K_full);
+        evaluated = true;
+      }
       dx *= best_alpha;
     }
     x += dx;
