@@ -12,6 +12,7 @@
 #include "hpcontact/io/input_schema.hpp"
 #include "hpcontact/io/problem_reader.hpp"
 #include "hpcontact/model/discretization.hpp"
+#include "hpcontact/model/rigid_motion.hpp"
 
 using namespace hpcontact;
 
@@ -51,6 +52,7 @@ int run_command(const std::string& file, std::string out_dir, const std::vector<
 int check_command(const std::string& file, const std::vector<std::string>& sets) {
   const auto spec = io::read_problem(file, sets);
   const auto d = model::discretize(spec);
+  model::require_held(spec, d);
   std::cout << file << ": case '" << spec.case_name << "', " << d.method << "-version\n";
   for (const auto& b : d.bodies) {
     std::cout << "  body '" << b.name << "': " << b.mesh.n_nodes() << " nodes, " << b.mesh.n_quads()

@@ -57,6 +57,7 @@ BAD_INPUTS = {
     "inverted.yaml": (None, "element 1"),
     "unknown-key.yaml": (None, "colour"),
     "missing-edge.yaml": (None, "edge_sets"),
+    "unconstrained.yaml": (None, "not held against rigid-body motion"),
 }
 
 
@@ -80,6 +81,8 @@ def damaged(root, name):
         return t.replace("1: [1, 2, 4, 3]", "1: [1, 3, 4, 2]")
     if name == "unknown-key.yaml":
         return t.replace("method: p", "method: p\n  colour: red")
+    if name == "unconstrained.yaml":  # the x symmetry constraint dropped: free in x
+        return "\n".join(line for line in t.splitlines() if "edges: [left]" not in line)
     if name == "missing-edge.yaml":
         return t.replace("bottom: [[1, 2]]", "bottom: [[1, 4]]")
     raise KeyError(name)
@@ -158,6 +161,23 @@ def test_newton_failure_is_reported_not_summarised(hpcontact, root, tmp_path):
     assert r.returncode == 1, r.stderr
     assert "load step" in r.stderr and "residual history" in r.stderr and "2 cuts" in r.stderr
     assert not (tmp_path / "summary.json").exists()
+
+
+def test_body_held_only_by_frictionless_contact_is_named(hpcontact, root, tmp_path):
+    """The Hertz cylinder without its symmetry constraint slides freely along the frictionless
+    plane: the tangent is singular (a round-off pivot, not an exact zero), and the message names
+    the body and the motion only contact would have to stop."""
+    with open(os.path.join(root, "examples/hertz/p5.yaml")) as f:
+        text = f.read()
+    text = text.replace("      - {edges: [symmetry], ux: 0}\n", "")
+    text = text.replace(", reference: reference-pressure.csv", "")
+    case = tmp_path / "sliding.yaml"
+    case.write_text(text)
+    r = hpcontact("run", case, "--out", tmp_path / "out", "-q", "--set", "solver.max_cuts=1")
+    assert r.returncode == 1, r.stderr
+    assert "sliding.yaml" in r.stderr and "singular" in r.stderr, r.stderr
+    assert "body 'cylinder' is held only by contact against translation in x" in r.stderr, r.stderr
+    assert not (tmp_path / "out" / "summary.json").exists()
 
 
 def test_pressure_plot(hpcontact, root, tmp_path):

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/model/rigid_motion.hpp"
 #include "hpcontact/post/fields.hpp"
 
 namespace hpcontact::adapt {
@@ -15,6 +16,7 @@ SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progres
   auto s = std::make_shared<Solved>();
   s->spec = spec;
   s->discretization = model::discretize(s->spec);
+  model::require_held(s->spec, s->discretization);
   s->solution = model::solve_contact(s->spec, s->discretization, progress,
                                      previous ? previous->solution.load_factor : 0.0);
   HPC_REQUIRE(s->solution.converged, NumericalError, spec.file, ": the solver stopped: ",

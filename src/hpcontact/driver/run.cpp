@@ -15,6 +15,7 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/linear_solve.hpp"
+#include "hpcontact/model/rigid_motion.hpp"
 #include "hpcontact/post/fields.hpp"
 #include "hpcontact/post/vtu.hpp"
 
@@ -407,6 +408,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
   }
 
   model::Discretization d = model::discretize(spec);
+  model::require_held(spec, d);
   {
     std::ostringstream os;
     int n_el = 0;

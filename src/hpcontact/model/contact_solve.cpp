@@ -18,6 +18,7 @@
 #include "hpcontact/model/body_stress.hpp"
 #include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/model/linear_solve.hpp"
+#include "hpcontact/model/rigid_motion.hpp"
 #include "hpcontact/solve/arc_length.hpp"
 
 namespace hpcontact::model {
@@ -751,10 +752,13 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
         continue;
       }
       in_a_row = 0;
-      const std::string why =
-          rep.status == solve::SolveStatus::not_finite && !system.failure().empty()
-              ? rep.message + " (" + system.failure() + ")"
-              : rep.message;
+      std::string why = rep.message;
+      if (rep.status == solve::SolveStatus::not_finite && !system.failure().empty())
+        why += " (" + system.failure() + ")";
+      if (rep.status == solve::SolveStatus::singular) {
+        const std::string where = explain_singular(d, rep.singular_row);
+        if (!where.empty()) why += " (" + where + ")";
+      }
       if (cuts == ss.max_cuts) {
         std::ostringstream os;
         os << "load step " << sol.load_steps + 1 << " (factor " << fn.displacements;

@@ -13,6 +13,7 @@
 #include "hpcontact/fem/elasticity.hpp"
 #include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/model/expression.hpp"
+#include "hpcontact/model/rigid_motion.hpp"
 
 namespace hpcontact::model {
 
@@ -85,7 +86,7 @@ Body make_body(const ProblemSpec& spec, int b) {
   mat.validate(bs.material.where.str());
 
   Body body{bs.name, std::move(mesh), std::move(dofs), {}, {}, mat, bs.material.thickness, 0, {},
-            material::Law::linear, {}, {}};
+            material::Law::linear, {}, {}, {}};
   if (!bs.regions.empty()) body.element_region.assign(body.mesh.n_quads(), -1);
   for (const auto& region : bs.regions) {
     material::LinearElastic rm = mat;
@@ -315,6 +316,20 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
   }
 }
 
+/// The rigid-body motions each body's constraints leave free.
+void find_free_rigid_motions(Discretization& d) {
+  for (size_t b = 0; b < d.bodies.size(); ++b) {
+    Body& body = d.bodies[b];
+    Vec2 lo = body.mesh.node(0), hi = lo;
+    for (const Vec2& x : body.mesh.nodes()) {
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    body.free_rigid_motions = free_rigid_motions(prescribed_vertices(d, static_cast<int>(b)),
+                                                 (hi - lo).norm());
+  }
+}
+
 }  // namespace
 
 Discretization discretize(const ProblemSpec& spec) {
@@ -350,6 +365,7 @@ Discretization discretize(const ProblemSpec& spec) {
       }
     }
   }
+  find_free_rigid_motions(d);
   // Free numbering: external modes of all bodies first, then internal modes.
   for (int pass = 0; pass < 2; ++pass) {
     for (const Body& body : d.bodies) {

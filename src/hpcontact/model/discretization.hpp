@@ -32,6 +32,8 @@ struct Body {
   /// Elastic constants of the material regions, and per element its region (-1: `material`).
   std::vector<material::LinearElastic> region_materials;
   std::vector<int> element_region;
+  /// Rigid-body motions the constraints leave free (model/rigid_motion.hpp); empty: held.
+  std::vector<std::string> free_rigid_motions;
   /// The elastic constants of element q.
   const material::LinearElastic& material_of(int q) const {
     const int r = element_region.empty() ? -1 : element_region[q];

@@ -3,8 +3,10 @@
 
 #include <chrono>
 
+#include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/elasticity.hpp"
 #include "hpcontact/fem/element_values.hpp"
+#include "hpcontact/model/rigid_motion.hpp"
 
 namespace hpcontact::model {
 
@@ -121,7 +123,12 @@ LinearSolution solve_linear(const Discretization& d, const LinearSolveOptions& o
   sol.assembly_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   const auto t1 = Clock::now();
   solve::LinearSolver solver(options.solver);
-  solver.factorize(K);
+  try {
+    solver.factorize(K);
+  } catch (const NumericalError& e) {
+    const std::string where = explain_singular(d, solver.last_singular_row());
+    throw NumericalError(std::string(e.what()) + (where.empty() ? "" : " (" + where + ")"));
+  }
   sol.u = op.expand(d, solver.solve(f), 1.0);
   op.recover_internal(d, sol.u, 1.0);
   sol.solve_seconds = std::chrono::duration<double>(Clock::now() - t1).count();

@@ -6,14 +6,104 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/UmfPackSupport>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <vector>
+
 #include "hpcontact/core/error.hpp"
 
 namespace hpcontact::solve {
 
+namespace {
+
+/// CHOLMOD's supernodal LLᵀ with access to its pivots: the squared diagonal of L, each with the
+/// row of A it eliminates.
+class CholmodWithPivots : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
+public:
+  /// The row of A whose pivot was not positive when the factorisation stopped, or -1.
+  int failed_row() const {
+    const cholmod_factor* L = m_cholmodFactor;
+    if (!L || L->minor >= L->n) return -1;
+    return static_cast<const int*>(L->Perm)[L->minor];
+  }
+
+  /// Calls f(row of A, pivot) for every column of the factor.
+  template <typename F>
+  void for_each_pivot(F f) const {
+    const cholmod_factor* L = m_cholmodFactor;
+    const auto* x = static_cast<const double*>(L->x);
+    const auto* perm = static_cast<const int*>(L->Perm);
+    if (L->is_super) {
+      const auto* super = static_cast<const int*>(L->super);
+      const auto* pi = static_cast<const int*>(L->pi);
+      const auto* px = static_cast<const int*>(L->px);
+      for (std::size_t k = 0; k < L->nsuper; ++k) {
+        const int ncols = super[k + 1] - super[k], nrows = pi[k + 1] - pi[k];
+        for (int j = 0; j < ncols; ++j) {
+          const double d = x[px[k] + j * (nrows + 1)];
+          f(perm[super[k] + j], L->is_ll ? d * d : d);
+        }
+      }
+    } else {
+      const auto* p = static_cast<const int*>(L->p);
+      for (std::size_t k = 0; k < L->n; ++k) {
+        const double d = x[p[k]];
+        f(perm[k], L->is_ll ? d * d : d);
+      }
+    }
+  }
+};
+
+/// A pivot this small relative to its diagonal entry of A means the row is (to round-off) a
+/// combination of the rows eliminated before it: the matrix is singular. Well-posed stiffness
+/// matrices of the examples give ratios above 1e-6 (the quarter circle at p = 1..12: ≥ 3e-2);
+/// a free rigid-body motion gives round-off, ≤ 1e-13.
+constexpr double singular_pivot_ratio = 1e-11;
+
+struct SmallestPivot {
+  double ratio = std::numeric_limits<double>::infinity();
+  int row = -1;
+  void take(int row_of_a, double pivot, double diagonal) {
+    const double r = diagonal > 0 ? pivot / diagonal : pivot;
+    if (!(r >= ratio)) {  // NaN pivots count as the smallest
+      ratio = r;
+      row = row_of_a;
+    }
+  }
+};
+
+}  // namespace
+
+/// UMFPACK's LU (P R A Q = L U, R a row scaling) with access to the diagonal of U.
+class UmfPackWithPivots : public Eigen::UmfPackLU<SparseMatrix> {
+public:
+  /// Calls f(column of A, |U_kk| / max_i |(R A)_i,col|) for every column of the factor.
+  template <typename F>
+  void for_each_pivot(const SparseMatrix& A, F f) const {
+    const int n = static_cast<int>(A.cols());
+    std::vector<int> Q(n);
+    std::vector<double> D(n), Rs(n);
+    int recip = 0;
+    if (umfpack_di_get_numeric(nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr,
+                               Q.data(), D.data(), &recip, Rs.data(), m_numeric) != UMFPACK_OK)
+      return;
+    for (int k = 0; k < n; ++k) {
+      double column_max = 0;
+      for (SparseMatrix::InnerIterator it(A, Q[k]); it; ++it) {
+        const double r = Rs[it.row()];
+        column_max = std::max(column_max, std::abs(recip ? it.value() * r : it.value() / r));
+      }
+      f(Q[k], column_max > 0 ? std::abs(D[k]) / column_max : 0.0);
+    }
+  }
+};
+
 struct LinearSolver::Impl {
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholmod;
+  CholmodWithPivots cholmod;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
-  Eigen::UmfPackLU<SparseMatrix> lu;
+  UmfPackWithPivots lu;
 };
 
 LinearSolverKind linear_solver_kind(const std::string& name, const std::string& where) {
@@ -32,19 +122,45 @@ LinearSolver& LinearSolver::operator=(LinearSolver&&) noexcept = default;
 
 void LinearSolver::factorize(const SparseMatrix& A) {
   bool ok;
+  SmallestPivot smallest;
+  const Eigen::VectorXd diagonal = A.diagonal();
   if (kind_ == LinearSolverKind::cholmod) {
     impl_->cholmod.compute(A);
     ok = impl_->cholmod.info() == Eigen::Success;
+    if (ok)
+      impl_->cholmod.for_each_pivot(
+          [&](int row, double pivot) { smallest.take(row, pivot, diagonal(row)); });
+    else
+      smallest.row = impl_->cholmod.failed_row();
   } else if (kind_ == LinearSolverKind::ldlt) {
     impl_->ldlt.compute(A);
-    ok = impl_->ldlt.info() == Eigen::Success && (impl_->ldlt.vectorD().array() > 0).all();
+    ok = impl_->ldlt.info() == Eigen::Success;
+    if (ok) {
+      const auto& D = impl_->ldlt.vectorD();
+      const auto& P = impl_->ldlt.permutationPinv();  // column k of the factor eliminates row P(k)
+      for (Eigen::Index k = 0; k < D.size(); ++k) {
+        const int row = P.indices()(k);
+        smallest.take(row, D(k), diagonal(row));
+      }
+    }
   } else {
     impl_->lu.compute(A);
     ok = impl_->lu.info() == Eigen::Success;
+    if (ok)
+      impl_->lu.for_each_pivot(A, [&](int column, double ratio) { smallest.take(column, ratio, 1.0); });
   }
-  HPC_REQUIRE(ok, NumericalError,
-              "the stiffness matrix is singular or not positive definite: a body is not "
-              "constrained against rigid-body motion, or an element is degenerate");
+  last_singular_row_ = -1;
+  if (ok && smallest.ratio > singular_pivot_ratio) return;
+  last_singular_row_ = smallest.row;
+  std::ostringstream os;
+  os << "the stiffness matrix is singular or not positive definite";
+  if (ok)
+    os << " (pivot of equation " << smallest.row << ": " << smallest.ratio
+       << " of its diagonal entry)";
+  else if (smallest.row >= 0)
+    os << " (at equation " << smallest.row << ")";
+  os << ": a body is not constrained against rigid-body motion, or an element is degenerate";
+  throw NumericalError(os.str());
 }
 
 Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {

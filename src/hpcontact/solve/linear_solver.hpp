@@ -26,12 +26,18 @@ public:
   /// Factorises A: for cholmod and ldlt A is symmetric (the lower triangle is used) and must be
   /// positive definite, for lu any nonsingular matrix. Throws NumericalError otherwise, which
   /// for a stiffness matrix means a rigid-body motion is unconstrained.
+  /// Symmetric matrices are also refused when a pivot is below 1e-11 of its diagonal entry (a
+  /// singular matrix whose zero pivot comes out as positive round-off).
   void factorize(const SparseMatrix& A);
+  /// After factorize() refused a matrix: the row of A whose pivot vanished or was negative; -1
+  /// after a success, or when the solver names no row (LU).
+  int last_singular_row() const { return last_singular_row_; }
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 
 private:
   struct Impl;
   LinearSolverKind kind_;
+  int last_singular_row_ = -1;
   std::unique_ptr<Impl> impl_;
 };
 

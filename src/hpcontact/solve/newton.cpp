@@ -58,6 +58,7 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
     } catch (const NumericalError& e) {
       report.status = SolveStatus::singular;
       report.message = e.what();
+      report.singular_row = solver.last_singular_row();
       report.iterations = it;
       return report;
     }

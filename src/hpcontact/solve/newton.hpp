@@ -41,6 +41,7 @@ struct SolveReport {
   int backtracks = 0;  ///< corrections halved because the residual was not finite there
   int line_searches = 0;  ///< corrections shortened by the line search
   std::vector<double> residual_history;  ///< ||R|| before each iteration, and at the end
+  int singular_row = -1;  ///< status singular: the unknown whose pivot vanished, if known
   bool ok() const { return status == SolveStatus::converged; }
 };
 

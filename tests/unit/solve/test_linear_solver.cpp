@@ -153,17 +153,10 @@ SparseMatrix free_chain(const std::vector<double>& k) {
 
 }  // namespace
 
-// BUG (src/hpcontact/solve/linear_solver.cpp, LinearSolver::factorize, lines 27–38): a matrix
-// that is singular in exact arithmetic but whose zero pivot comes out as a tiny *positive*
-// round-off value (~1e-16 relative) is accepted, and solve() then returns displacements of
-// ~1e15. The check only looks at the sign of the pivots (CHOLMOD's info(), LDLT's D > 0), so an
-// unconstrained rigid-body motion is detected only about half the time (23 of 50 random
-// rank-one-deficient 8×8 SPD matrices pass CHOLMOD, 24 of 50 pass LDLT; end to end,
-// examples/lame/thick-cylinder.yaml without its `left` constraint runs "successfully" with exit
-// code 0 at degree 2, 4, 6 and only fails at degree 8). Suggested fix: also require a relative
-// pivot ratio, e.g. min_i D_i / (P A Pᵀ)_ii > 1e-10 — for the constrained quarter-circle problem
-// this ratio is >= 3e-2 for p = 1..12, for the unconstrained one <= 5e-15. Enable when fixed.
-TEST(LinearSolver, DISABLED_RoundOffSingularMatrixIsANumericalError) {
+// A matrix singular in exact arithmetic whose zero pivot comes out as a tiny positive round-off
+// value passes a test of the pivots' signs alone (23 of 50 random rank-one-deficient 8×8 SPD
+// matrices passed CHOLMOD's); factorize() also refuses pivots below 1e-11 of their diagonal entry.
+TEST(LinearSolver, RoundOffSingularMatrixIsANumericalError) {
   const std::vector<std::vector<double>> chains = {{0.1, 0.2, 0.3},
                                                    {1.1, 2.3, 0.7, 0.9, 1.3, 2.9, 0.1}};
   for (const auto& k : chains)
@@ -172,4 +165,27 @@ TEST(LinearSolver, DISABLED_RoundOffSingularMatrixIsANumericalError) {
       EXPECT_THROW(s.factorize(free_chain(k)), NumericalError)
           << kind_name(kind) << ", chain of " << k.size() << " springs";
     }
+}
+
+// The refused pivot names a row of the singular part: a free chain of springs (singular) beside an
+// SPD block; the row reported is one of the chain's.
+TEST(LinearSolver, SingularPivotNamesARowOfTheFreePart) {
+  const std::vector<double> k = {1.1, 2.3, 0.7, 0.9};
+  const SparseMatrix chain = free_chain(k), spd = laplacian_2d(4);
+  const int nc = static_cast<int>(chain.rows()), ns = static_cast<int>(spd.rows());
+  std::vector<Eigen::Triplet<double>> t;
+  for (int c = 0; c < ns; ++c)
+    for (SparseMatrix::InnerIterator it(spd, c); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
+  for (int c = 0; c < nc; ++c)
+    for (SparseMatrix::InnerIterator it(chain, c); it; ++it)
+      t.emplace_back(ns + it.row(), ns + it.col(), it.value());
+  const SparseMatrix A = from_triplets(ns + nc, t);
+  for (auto kind : kinds) {
+    LinearSolver s(kind);
+    EXPECT_THROW(s.factorize(A), NumericalError) << kind_name(kind);
+    EXPECT_GE(s.last_singular_row(), ns) << kind_name(kind);
+    EXPECT_LT(s.last_singular_row(), ns + nc) << kind_name(kind);
+    s.factorize(spd);  // a good matrix afterwards clears it
+    EXPECT_EQ(s.last_singular_row(), -1) << kind_name(kind);
+  }
 }
