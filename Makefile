@@ -3,7 +3,7 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 PYTHON := /usr/bin/python3
 
-.PHONY: deps configure build run test test-all bench clean
+.PHONY: deps configure build run test test-all test-sanitize fuzz bench clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -28,8 +28,29 @@ test: build
 test-all: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
+# The fast tests (unit, verification, fuzz replays) built with AddressSanitizer and UBSan (gcc).
+test-sanitize: deps
+	@cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHPC_BUILD_BENCH=OFF \
+	  "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer" \
+	  > /dev/null
+	@cmake --build build-sanitize -j $(JOBS)
+	@cd build-sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --output-on-failure -j $(JOBS) -LE "slow|cli"
+
+# libFuzzer targets (clang) of the problem and Gmsh readers, FUZZ_SECONDS each (default 60);
+# inputs that fail are kept in fuzz/regressions/ and replayed by `make test`.
+FUZZ_SECONDS ?= 60
+fuzz:
+	@bash scripts/install-deps.sh fuzz
+	@cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+	  -DHPC_FUZZ=ON -DHPC_BUILD_TESTS=OFF -DHPC_BUILD_BENCH=OFF \
+	  "-DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" \
+	  > /dev/null
+	@cmake --build build-fuzz -j $(JOBS)
+	@bash fuzz/run.sh build-fuzz $(FUZZ_SECONDS)
+
 bench: build
 	@bash bench/run.sh
 
 clean:
-	rm -rf $(BUILD_DIR) results
+	rm -rf $(BUILD_DIR) build-sanitize build-fuzz results

@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages hpcontact needs, if any is missing (apt-get; root or sudo).
+#   install-deps.sh         what the build, `make run` and `make test` need
+#   install-deps.sh fuzz    and clang's libFuzzer for `make fuzz`
 set -euo pipefail
 
 packages=(
@@ -7,7 +9,12 @@ packages=(
   libeigen3-dev libsuitesparse-dev libyaml-cpp-dev libcli11-dev libmuparser-dev
   nlohmann-json3-dev libgtest-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib python3-pytest python3-yaml
+  gmsh
 )
+
+if [ "${1:-}" = fuzz ]; then
+  packages+=(clang libclang-rt-14-dev libomp-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

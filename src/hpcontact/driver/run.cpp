@@ -54,8 +54,28 @@ void prepare_output_folder(const std::string& out_dir) {
   std::error_code ec;
   fs::create_directories(out_dir, ec);
   HPC_REQUIRE(!ec, IoError, out_dir, ": cannot create the output folder: ", ec.message());
-  fs::remove(fs::path(out_dir) / "summary.json", ec);
-  HPC_REQUIRE(!ec, IoError, out_dir, ": cannot remove the previous summary.json: ", ec.message());
+  // The files an earlier run wrote here go, so that nothing in the folder can be mistaken for
+  // this run's results. Other files, and folders holding anything else, are left alone.
+  auto remove_ours = [&](const fs::path& dir) {
+    for (const char* name : {"summary.json", "contact.csv", "pressure.csv", "path.csv",
+                             "solution.vtu", "input.yaml", "mesh.yaml"}) {
+      fs::remove(dir / name, ec);
+      HPC_REQUIRE(!ec, IoError, dir.string(), ": cannot remove the previous ", name, ": ",
+                  ec.message());
+    }
+  };
+  remove_ours(out_dir);
+  for (const char* sub : {"last-good", "rp", "hp"}) {
+    const fs::path dir = fs::path(out_dir) / sub;
+    if (!fs::is_directory(dir, ec)) continue;
+    remove_ours(dir);
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {  // rp/pressure-3.csv, ...
+      const std::string name = entry.path().filename().string();
+      if (name.rfind("pressure-", 0) == 0 && entry.path().extension() == ".csv")
+        fs::remove(entry.path(), ec);
+    }
+    if (fs::is_empty(dir, ec)) fs::remove(dir, ec);
+  }
 }
 
 namespace {
@@ -421,7 +441,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
   if (spec.contact.empty() && !d.finite_strain() && spec.solver.control == "load") {
     model::LinearSolveOptions lo;
     lo.condense = spec.discretization.condense;
-    lo.solver = solve::linear_solver_kind(spec.solver.linear, spec.solver.where.str() + "linear");
+    lo.solver = solve::linear_solver_kind(spec.solver.linear, spec.solver.where.str() + ".linear");
     const auto sol = model::solve_linear(d, lo);
     std::ostringstream os;
     os << "solved: system of " << sol.n_system << " unknowns, assembly " << sol.assembly_seconds

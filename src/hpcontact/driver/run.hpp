@@ -24,8 +24,9 @@ struct RunResult {
   Eigen::VectorXd u;  ///< all dofs
 };
 
-/// Creates the output folder and removes a summary.json left by an earlier run, so that the
-/// folder of a run that then fails holds no summary that could pass for its result. IoError.
+/// Creates the output folder and removes the files an earlier run left there (summary.json,
+/// contact.csv, ..., last-good/, rp/, hp/), so that the folder of a run that then fails holds
+/// nothing that could pass for its result. Files the program does not write are kept. IoError.
 void prepare_output_folder(const std::string& out_dir);
 
 /// Runs the problem (calling prepare_output_folder first when out_dir is set). Input and mesh errors propagate as exceptions before anything is written;

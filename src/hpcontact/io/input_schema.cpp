@@ -40,11 +40,44 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Name of the body, unique in the file."},
       {.path = "bodies[].material", .type = T::section, .required = true,
        .doc = "Material law of the body."},
-      {.path = "bodies[].nodes", .type = T::node_table, .required = true, .unit = "length",
-       .doc = "Mesh nodes by user id; the ids need not be contiguous.", .min_items = 1},
-      {.path = "bodies[].elements", .type = T::element_table, .required = true,
-       .doc = "Quadrilaterals by user id: four distinct existing node ids, counter-clockwise.",
+      {.path = "bodies[].nodes", .type = T::node_table, .unit = "length",
+       .doc = "Mesh nodes by user id; the ids need not be contiguous. Give nodes and elements, or "
+              "gmsh.", .min_items = 1},
+      {.path = "bodies[].elements", .type = T::element_table,
+       .doc = "Quadrilaterals by user id: four distinct existing node ids, counter-clockwise. Give "
+              "nodes and elements, or gmsh.",
        .min_items = 1},
+      {.path = "bodies[].gmsh", .type = T::section,
+       .doc = "The mesh from a Gmsh file instead of nodes and elements (MSH 4.1 ASCII: gmsh "
+              "-format msh41; quadrilaterals of order 1 or 2: Mesh.RecombineAll = 1, -order 2). "
+              "Expanded when read into nodes (the corner nodes, ids = gmsh node tags), elements "
+              "(ids = gmsh element tags, turned counter-clockwise where needed), curves (the arcs "
+              "below) and edge_sets (one per 1D physical group, named as the group, holding its "
+              "lines that are edges of the body); the effective input lists these instead of this "
+              "key. curves and edge_sets may be given as well; a hand-given curve replaces a "
+              "recovered arc, an edge set may not share a group's name."},
+      {.path = "bodies[].gmsh.file", .type = T::string, .required = true,
+       .doc = "Path of the .msh file, relative to the problem file's folder."},
+      {.path = "bodies[].gmsh.surface", .type = T::string,
+       .doc = "Name of a 2D physical group: only its quadrilaterals form the body (one file can "
+              "hold several bodies); absent: every quadrilateral of the file."},
+      {.path = "bodies[].gmsh.arcs", .type = T::section_list,
+       .doc = "Circular arcs named by 1D physical groups: every edge of the group becomes an exact "
+              "arc (for first-order meshes, whose edges carry no midside node)."},
+      {.path = "bodies[].gmsh.arc_tolerance", .type = T::number, .default_yaml = "1e-8",
+       .doc = "Second-order meshes: an edge whose midside node lies off the straight line between "
+              "its ends by more than this fraction of the body size (bounding-box diagonal) "
+              "becomes the circular arc through its three nodes; arcs of neighbouring edges on one "
+              "circle are fitted to one circle through all their nodes.",
+       .lower = greater_than(0)},
+      {.path = "bodies[].gmsh.arcs[].edges", .type = T::string, .required = true,
+       .doc = "Name of a 1D physical group of the file."},
+      {.path = "bodies[].gmsh.arcs[].center", .type = T::point, .required = true,
+       .unit = "length", .doc = "Centre of the circle, [x, y]."},
+      {.path = "bodies[].gmsh.arcs[].radius", .type = T::number, .required = true,
+       .unit = "length",
+       .doc = "Radius of the circle; the group's nodes must lie on it (to 1e-6 of it).",
+       .lower = greater_than(0)},
       {.path = "bodies[].curves", .type = T::section_list,
        .doc = "Exact geometry of mesh edges; edges not listed are straight."},
       {.path = "bodies[].degree", .type = T::degree,

@@ -1,5 +1,5 @@
-// Problem file -> YAML tree -> overrides -> schema check with defaults -> cross-checked
-// ProblemSpec.
+// Problem file -> YAML tree -> overrides -> gmsh meshes expanded -> schema check with defaults ->
+// cross-checked ProblemSpec.
 #include "hpcontact/io/problem_reader.hpp"
 
 #include <yaml-cpp/yaml.h>
@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/io/gmsh_import.hpp"
 #include "hpcontact/io/overrides.hpp"
 #include "hpcontact/io/schema_check.hpp"
 #include "hpcontact/io/yaml_source.hpp"
@@ -86,6 +87,11 @@ class SpecBuilder {
     b.name = node["name"].Scalar();
     b.where = source_.where(node, path);
     b.material = material(node["material"], path + ".material");
+    for (const char* key : {"nodes", "elements"})
+      if (!node[key])
+        source_.fail(node, path,
+                     std::string("missing required key '") + key +
+                         "' (a body needs nodes and elements, or gmsh)");
     read_mesh(node, path, b);
     if (node["curves"]) read_curves(node["curves"], path + ".curves", b);
     if (node["degree"]) b.degree = degree(node["degree"]);
@@ -565,10 +571,12 @@ class SpecBuilder {
 };
 
 std::string effective_yaml(const YAML::Node& root, const std::string& file_label,
-                           const std::vector<std::string>& overrides) {
+                           const std::vector<std::string>& overrides,
+                           const std::vector<std::string>& gmsh_notes) {
   std::string text = "# Effective input of " + file_label + ", defaults filled in";
   text += overrides.empty() ? ".\n" : ", with:\n";
   for (const std::string& o : overrides) text += "#   --set " + o + "\n";
+  for (const std::string& note : gmsh_notes) text += "#   " + one_line(note, 400) + "\n";
   YAML::Emitter out;
   out << root;
   return text + out.c_str() + "\n";
@@ -609,8 +617,10 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
                      quoted_value(root) + ")");
   try {
     for (const std::string& o : overrides) apply_override(root, o, source);
+    const std::vector<std::string> gmsh_notes = expand_gmsh_meshes(root, source);
     check_and_fill_defaults(root, source);
-    return {SpecBuilder(source).problem(root), effective_yaml(root, file_label, overrides)};
+    return {SpecBuilder(source).problem(root),
+            effective_yaml(root, file_label, overrides, gmsh_notes)};
   } catch (const YAML::Exception& e) {
     // The checks above should leave yaml-cpp nothing to object to; if it does, keep the promise
     // that bad input surfaces as a one-line InputError.

@@ -20,11 +20,15 @@ struct ReadResult {
   std::string effective_yaml;
 };
 
-/// Parses problem-file text. `file_label` names the file in messages (and becomes spec.file).
+/// Parses problem-file text. `file_label` names the file in messages (and becomes spec.file);
+/// a body's gmsh.file is found relative to its folder (to the current directory if it has none).
 /// `overrides` are "key.path=value" strings (--set), applied in order to the YAML tree before
-/// validation; see apply_override() in overrides.hpp. Every key is checked against
-/// input_schema(), then cross references (node ids, edges, edge set names) are checked.
-/// Throws InputError, one line: "<file>:<line>:<col>: <key.path>: <what is wrong> (got <value>)".
+/// validation; see apply_override() in overrides.hpp. Then every bodies[].gmsh section is
+/// replaced by the mesh it names (expand_gmsh_meshes() in gmsh_import.hpp), every key is checked
+/// against input_schema(), and cross references (node ids, edges, edge set names) are checked.
+/// Throws InputError, one line: "<file>:<line>:<col>: <key.path>: <what is wrong> (got <value>)"
+/// (or "<mesh.msh>:<line>: <what>" for an error in a gmsh file); IoError if a gmsh file cannot
+/// be read.
 ReadResult parse_problem_full(const std::string& yaml_text, const std::string& file_label,
                               const std::vector<std::string>& overrides = {});
 

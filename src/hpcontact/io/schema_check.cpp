@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "hpcontact/io/input_schema.hpp"
 
@@ -53,7 +54,6 @@ class SchemaChecker {
     }
   }
 
- private:
   void check_value(const YAML::Node& node, const KeySpec& key, const std::string& path) {
     switch (key.type) {
       case T::section:
@@ -130,6 +130,7 @@ class SchemaChecker {
     }
   }
 
+ private:
   std::string key_name(const YAML::Node& key, const std::string& parent_path) {
     if (!key.IsScalar() || key.Scalar().empty())
       source_.fail(key, parent_path, "keys must be names (got " + shown_value(key) + ")");
@@ -263,6 +264,13 @@ class SchemaChecker {
 
 void check_and_fill_defaults(YAML::Node& root, YamlSource& source) {
   SchemaChecker(source).check_section(root, "", "");
+}
+
+void check_and_fill_defaults(YAML::Node node, const std::string& pattern, const std::string& path,
+                             YamlSource& source) {
+  const KeySpec* key = find_key_spec(pattern);
+  if (!key) throw std::logic_error("check_and_fill_defaults: no schema key " + pattern);
+  SchemaChecker(source).check_value(node, *key, path);
 }
 
 }  // namespace hpcontact::io

@@ -15,4 +15,11 @@ namespace hpcontact::io {
 /// Precondition: `root` is a map.
 void check_and_fill_defaults(YAML::Node& root, YamlSource& source);
 
+/// As check_and_fill_defaults() for one key and what lies below it: `node` is the value at the
+/// concrete key path `path`, declared by the schema pattern `pattern` ("bodies[].gmsh").
+/// Used to check a section that the reader consumes before the whole tree is checked.
+/// Precondition: `pattern` is declared in input_schema().
+void check_and_fill_defaults(YAML::Node node, const std::string& pattern,
+                             const std::string& path, YamlSource& source);
+
 }  // namespace hpcontact::io

@@ -1,6 +1,7 @@
 // Source references, value rendering and scalar conversions for problem-file YAML nodes.
 #include "hpcontact/io/yaml_source.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -39,6 +40,11 @@ model::SourceRef YamlSource::where(const YAML::Node& node, const std::string& pa
     ref.origin = "from --set";
   } else if (any_lies_below(path, default_paths_)) {
     ref.origin = "default";
+  } else if (const auto it = std::find_if(
+                 generated_paths_.begin(), generated_paths_.end(),
+                 [&](const auto& generated) { return lies_below(path, generated.first); });
+             it != generated_paths_.end()) {
+    ref.origin = it->second;
   } else if (node.IsDefined() && !node.Mark().is_null()) {
     ref.line = node.Mark().line + 1;
     ref.column = node.Mark().column + 1;

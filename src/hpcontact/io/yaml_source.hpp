@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "hpcontact/model/problem_spec.hpp"
@@ -14,7 +15,8 @@
 namespace hpcontact::io {
 
 /// The file label of a YAML tree plus the key paths whose nodes are not from the file (a --set
-/// override or a filled-in default), whose YAML marks therefore mean nothing.
+/// override, a filled-in default or a mesh made from a gmsh file), whose YAML marks therefore
+/// mean nothing.
 class YamlSource {
  public:
   explicit YamlSource(std::string file) : file_(std::move(file)) {}
@@ -25,6 +27,11 @@ class YamlSource {
   void mark_override(const std::string& path) { override_paths_.push_back(path); }
   /// The node at `path` and everything below it is a filled-in default.
   void mark_default(const std::string& path) { default_paths_.push_back(path); }
+  /// The node at `path` and everything below it was made by the reader; `origin` says from
+  /// what ("from mesh.msh"), in messages as "(from mesh.msh)".
+  void mark_generated(const std::string& path, const std::string& origin) {
+    generated_paths_.emplace_back(path, origin);
+  }
 
   /// File, 1-based line and column (from the node's mark, unless the node is not from the file)
   /// and the key path.
@@ -38,6 +45,7 @@ class YamlSource {
   std::string file_;
   std::vector<std::string> override_paths_;
   std::vector<std::string> default_paths_;
+  std::vector<std::pair<std::string, std::string>> generated_paths_;  // path, origin
 };
 
 /// "a.b" from "a" and "b"; "b" when the parent path is empty (the top level).

@@ -658,7 +658,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   auto pairs = make_contact_pairs(spec, d);
   for (const auto& pair : pairs)
     HPC_REQUIRE(pair.other < 0 || ss.tangent == "analytic", InputError, ss.where.str(),
-                "tangent: finite-difference is implemented for rigid obstacles only; contact "
+                ".tangent: finite-difference is implemented for rigid obstacles only; contact "
                 "between two bodies needs tangent: analytic");
   ContactSystem system(d, pairs, spec.discretization.condense,
                        ss.tangent == "finite-difference" ? ContactSystem::Tangent::seed_difference
@@ -666,7 +666,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   solve::NewtonOptions no;
   no.max_iterations = ss.max_iterations;
   no.tolerance = ss.tolerance;
-  no.linear_solver = solve::linear_solver_kind(ss.linear, ss.where.str() + "linear");
+  no.linear_solver = solve::linear_solver_kind(ss.linear, ss.where.str() + ".linear");
   // A finite-difference column that straddles a point's contact switch is inconsistent with
   // its neighbours: the symmetric part can be indefinite, so it is solved by LU.
   if (ss.tangent == "finite-difference") no.linear_solver = solve::LinearSolverKind::lu;
@@ -683,7 +683,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   if (system.has_friction()) no.linear_solver = solve::LinearSolverKind::lu;
   no.line_search = ss.line_search == "on" || (ss.line_search == "auto" && system.has_friction());
   HPC_REQUIRE(!system.has_friction() || !ss.target_resultant, InputError, ss.where.str(),
-              "target_resultant: force control goes back and forth along the load path, which a "
+              ".target_resultant: force control goes back and forth along the load path, which a "
               "contact with friction remembers; prescribe the displacements (or use stages)");
 
   NonlinearSolution sol;
@@ -694,7 +694,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     int b = -1;
     const Body& body = body_named(d, ss.monitor_body, ss.where, &b);
     const int v = body.mesh.node_index(ss.monitor_node);
-    HPC_REQUIRE(v >= 0, InputError, ss.where.str(), "monitor.node: no node ", ss.monitor_node,
+    HPC_REQUIRE(v >= 0, InputError, ss.where.str(), ".monitor.node: no node ", ss.monitor_node,
                 " in body '", ss.monitor_body, "'");
     monitor_dof = body.dof_offset + 2 * body.dofs.vertex_mode(v);
   }
@@ -812,7 +812,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     ao.linear_solver = solve::LinearSolverKind::lu;
     ao.reference_norm = system.load_vector().norm();
     HPC_REQUIRE(ao.reference_norm > 0, InputError, ss.where.str(),
-                "control: arc-length scales the loads, and there are none");
+                ".control: arc-length scales the loads, and there are none");
     double lf = 0;
     Eigen::VectorXd xa = x;
     const auto rep = solve::arc_length(path, xa, lf, ao, [&](const Eigen::VectorXd& xs,
@@ -852,14 +852,14 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   if (ss.target_resultant) {
     const auto& tr = *ss.target_resultant;
     HPC_REQUIRE(!pairs.empty(), InputError, ss.where.str(),
-                "target_resultant: needs a contact pair to measure the resultant");
+                ".target_resultant: needs a contact pair to measure the resultant");
     std::vector<contact::PointState> states;
     auto measured = [&]() {
       return std::abs(contact_resultant(d, pairs.front(), system.full(x), states)(tr.component));
     };
     double l0 = lambda, f0 = measured() - tr.value;
     HPC_REQUIRE(f0 + tr.value > 0, InputError, ss.where.str(),
-                "target_resultant: the prescribed displacements produce no contact force, so they "
+                ".target_resultant: the prescribed displacements produce no contact force, so they "
                 "cannot be scaled to the target");
     double l1 = l0 * tr.value / (f0 + tr.value);
     for (int it = 0; it < 50; ++it) {

@@ -77,6 +77,9 @@ Body make_body(const ProblemSpec& spec, int b) {
     opt.degrees.push_back(p);
   }
   fem::DofMap dofs(mesh, opt);
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    HPC_REQUIRE(dofs.vertex_mode(v) >= 0, InputError, bs.where.str(), ".nodes: node ",
+                mesh.node_id(v), " is a corner of no element (remove it or use it in an element)");
 
   material::LinearElastic mat;
   mat.youngs_modulus = bs.material.youngs_modulus;

@@ -68,10 +68,13 @@ std::vector<std::string> free_rigid_motions(const std::vector<PointConstraint>& 
 std::vector<PointConstraint> prescribed_vertices(const Discretization& d, int b) {
   const Body& body = d.bodies[b];
   std::vector<PointConstraint> out;
-  for (int v = 0; v < body.mesh.n_nodes(); ++v)
+  for (int v = 0; v < body.mesh.n_nodes(); ++v) {
+    const int mode = body.dofs.vertex_mode(v);
+    if (mode < 0) continue;  // a node of no element
     for (int comp = 0; comp < 2; ++comp)
-      if (d.free_index[body.dof_offset + 2 * body.dofs.vertex_mode(v) + comp] < 0)
+      if (d.free_index[body.dof_offset + 2 * mode + comp] < 0)
         out.push_back({body.mesh.node(v), comp});
+  }
   return out;
 }
 

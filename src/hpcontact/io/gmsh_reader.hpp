@@ -1,0 +1,75 @@
+// Reading a Gmsh MSH 4.1 ASCII file: nodes, quadrilaterals, line elements and their physical
+// groups.
+#pragma once
+
+#include <array>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hpcontact::io {
+
+/// A physical group of the file: its dimension, tag and name (the tag in decimal when the file
+/// gives it no name in $PhysicalNames).
+struct GmshPhysicalGroup {
+  int dim = 0;
+  int tag = 0;
+  std::string name;
+};
+
+/// A quadrilateral: gmsh type 3 (4 nodes), 16 (8 nodes) or 10 (9 nodes).
+struct GmshQuad {
+  int tag = 0;
+  int type = 3;
+  std::array<int, 4> corners{};  ///< node tags in the file's order
+  /// Second order: midside[k] is the node tag on the edge corners[k] -> corners[(k + 1) % 4];
+  /// 0 for a first-order quad. The 9-node quad's centre node is not kept.
+  std::array<int, 4> midside{};
+  std::vector<std::string> groups;  ///< names of the 2D physical groups of its entity
+  int line = 0;                     ///< 1-based line in the file
+};
+
+/// A line element: gmsh type 1 (2 nodes) or 8 (3 nodes).
+struct GmshLine {
+  int tag = 0;
+  std::array<int, 2> ends{};        ///< node tags
+  int midside = 0;                  ///< node tag of the middle node; 0 for a 2-node line
+  std::vector<std::string> groups;  ///< names of the 1D physical groups of its entity
+  int line = 0;
+};
+
+/// A 2D element that is not a first- or second-order quadrilateral (a triangle, a cubic quad).
+struct GmshOtherFace {
+  int tag = 0;
+  int type = 0;
+  std::vector<std::string> groups;
+  int line = 0;
+};
+
+/// The parts of a .msh file hpcontact uses. Elements keep the file's order; points, volumes and
+/// unknown sections ($PartitionedEntities, $NodeData, ...) are skipped.
+struct GmshMesh {
+  std::string file;                            ///< the label messages name
+  std::map<int, std::array<double, 2>> nodes;  ///< node tag -> (x, y)
+  std::vector<GmshQuad> quads;
+  std::vector<GmshLine> lines;
+  std::vector<GmshOtherFace> other_faces;
+  std::vector<GmshPhysicalGroup> groups;  ///< every physical group of $PhysicalNames and $Entities
+};
+
+/// "triangle (gmsh type 2)", "element type 99" for an unknown type.
+std::string gmsh_type_name(int type);
+
+/// Parses the text of a .msh file (MSH 4.1, ASCII). `file_label` names the file in messages.
+/// Checks: version and ASCII, section ends, counts, positive tags that fit an int, unique node
+/// and element tags, every node of a kept element defined, z = 0 (to 1e-9 of the coordinates'
+/// magnitude), the node count of every known element type. Throws InputError, one line:
+/// "<file>:<line>: <what was expected> (got '<text>')".
+GmshMesh parse_gmsh(std::string_view text, const std::string& file_label);
+
+/// Reads and parses the .msh file at `path` (the label in messages is `path` as given). Throws
+/// IoError if it cannot be read or is not a regular file, InputError as parse_gmsh().
+GmshMesh read_gmsh(const std::string& path);
+
+}  // namespace hpcontact::io
