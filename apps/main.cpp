@@ -1,16 +1,27 @@
 // The hpcontact command line: parse -> read problem -> run (discretise, solve, post, write).
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/driver/run.hpp"
+#include "hpcontact/driver/study.hpp"
 #include "hpcontact/io/input_schema.hpp"
 #include "hpcontact/io/problem_reader.hpp"
+#include "hpcontact/io/study_reader.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
 
@@ -18,23 +29,54 @@ using namespace hpcontact;
 
 namespace {
 
+/// --log-json: one JSON object per line on stdout, {"time_s", "kind", ...}: kind "start", then
+/// "iteration" (a Newton iteration), "load_step" or "message" (with "message": the text line
+/// the plain log would print), then "done" or "error".
+class JsonLog {
+ public:
+  void event(const std::string& kind, nlohmann::json fields = nlohmann::json::object()) const {
+    fields["kind"] = kind;
+    fields["time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    std::cout << fields.dump() << std::endl;
+  }
+  void progress(const std::string& line) const {
+    const auto text = line.substr(line.find_first_not_of(' '));
+    const char* kind = text.rfind("iteration ", 0) == 0   ? "iteration"
+                       : text.rfind("load step ", 0) == 0 ? "load_step"
+                                                          : "message";
+    event(kind, {{"message", text}});
+  }
+
+ private:
+  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+};
+
 /// Exit codes: 0 success, 1 the problem could not be solved (bad input, mesh, numerics, I/O),
 /// 2 the command line itself is wrong.
 constexpr int kFailed = 1;
 
 int run_command(const std::string& file, std::string out_dir, const std::vector<std::string>& sets,
-                bool quiet) {
+                bool quiet, const JsonLog* log) {
   if (out_dir.empty()) out_dir = "results/" + std::filesystem::path(file).stem().string();
   driver::prepare_output_folder(out_dir);  // before reading: bad input must not leave an old summary
   const auto read = io::read_problem_full(file, sets);
   driver::RunOptions options;
   options.out_dir = out_dir;
   options.effective_input = read.effective_yaml;
-  if (!quiet) options.progress = [](const std::string& line) { std::cout << "  " << line << '\n'; };
-  if (!quiet) std::cout << "hpcontact: " << file << " (" << read.spec.case_name << ")\n";
+  if (log) {
+    options.progress = [log](const std::string& line) { log->progress(line); };
+    log->event("start", {{"case", read.spec.case_name}, {"file", file}, {"out", out_dir}});
+  } else if (!quiet) {
+    options.progress = [](const std::string& line) { std::cout << "  " << line << '\n'; };
+    std::cout << "hpcontact: " << file << " (" << read.spec.case_name << ")\n";
+  }
   const auto result = driver::run_problem(read.spec, options);
   const auto& s = result.summary;
-  if (!quiet) {
+  if (log) {
+    log->event("done", {{"converged", true}, {"dofs", s.dofs}, {"strain_energy", s.strain_energy},
+                        {"wall_time_s", s.wall_time_s},
+                        {"summary", (std::filesystem::path(out_dir) / "summary.json").string()}});
+  } else if (!quiet) {
     std::cout << "  dofs " << s.dofs << ", strain energy " << s.strain_energy;
     if (s.error) {
       std::cout << ", energy error " << s.error->energy_rel_percent << " %";
@@ -72,6 +114,53 @@ int check_command(const std::string& file, const std::vector<std::string>& sets)
   return 0;
 }
 
+/// The executable itself, for the study's runs.
+std::string this_program(const char* argv0) {
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::filesystem::absolute(argv0).string() : self.string();
+}
+
+int study_command(const std::string& file, std::string out_dir, int jobs, bool quiet,
+                  const char* argv0) {
+  const auto study = io::read_study(file);
+  if (out_dir.empty()) out_dir = "results/" + std::filesystem::path(file).stem().string();
+  driver::StudyOptions options;
+  options.program = this_program(argv0);
+  options.out_dir = out_dir;
+  options.jobs = jobs > 0 ? jobs : std::max(1u, std::thread::hardware_concurrency());
+  const bool bar = !quiet && isatty(STDOUT_FILENO);
+  const auto t0 = std::chrono::steady_clock::now();
+  int failed = 0;
+  if (!quiet)
+    std::cout << "hpcontact: study " << file << " ('" << study.name << "'): " << study.runs.size()
+              << " runs, " << options.jobs << " at a time, into " << out_dir << "/\n";
+  options.finished = [&](const driver::StudyRowResult& row, int done, int total) {
+    failed += !row.converged();
+    if (quiet) return;
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::ostringstream line;
+    line << (row.converged() ? "ok     " : "FAILED ") << row.run.label << " (" << std::setprecision(3)
+         << row.seconds << " s)";
+    if (!row.converged()) line << ": " << row.message;
+    if (bar) {
+      const int width = 30, filled = width * done / total;
+      std::cout << "\r\033[K" << line.str() << "\n[" << std::string(filled, '#')
+                << std::string(width - filled, '.') << "] " << done << "/" << total << ", "
+                << failed << " failed, " << std::setprecision(3) << t << " s" << std::flush;
+      if (done == total) std::cout << '\n';
+    } else {
+      std::cout << "  [" << done << "/" << total << "] " << line.str() << '\n';
+    }
+  };
+  const auto rows = driver::run_study(study, options);
+  if (!quiet)
+    std::cout << "  " << rows.size() - failed << " of " << rows.size() << " runs converged; table in "
+              << out_dir << "/study.csv, summaries in " << out_dir << "/study.json, runs in "
+              << out_dir << "/runs/\n";
+  return failed == 0 ? 0 : kFailed;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -89,10 +178,24 @@ int main(int argc, char** argv) {
   run->add_option("--out,-o", out_dir, "output folder (default results/<case file name>)");
   run->add_option("--set", sets, "override an input value: dotted.key=value (repeatable)");
   run->add_flag("--quiet,-q", quiet, "print nothing but errors");
+  bool log_json = false;
+  run->add_flag("--log-json", log_json,
+                "progress as JSON lines on stdout (kind: start, iteration, load_step, message, "
+                "done, error)");
 
   auto* check = app.add_subcommand("check", "validate a problem file and describe it, without solving");
   check->add_option("case", file, "problem file (YAML)")->required()->check(CLI::ExistingFile);
   check->add_option("--set", sets, "override an input value: dotted.key=value (repeatable)");
+
+  std::string study_file;
+  int jobs = 0;
+  auto* study = app.add_subcommand(
+      "study", "run every case of a study file (rows or a sweep), in parallel, into one table");
+  study->add_option("study", study_file, "study file (YAML)")->required()->check(CLI::ExistingFile);
+  study->add_option("--out,-o", out_dir, "output folder (default results/<study file name>)");
+  study->add_option("--jobs,-j", jobs, "runs at a time (default: the machine's cores)")
+      ->check(CLI::NonNegativeNumber);
+  study->add_flag("--quiet,-q", quiet, "print nothing but errors");
 
   try {
     app.parse(argc, argv);
@@ -106,8 +209,17 @@ int main(int argc, char** argv) {
     return 0;
   }
   try {
-    if (*run) return run_command(file, out_dir, sets, quiet);
+    if (*run) {
+      const JsonLog log;
+      try {
+        return run_command(file, out_dir, sets, quiet, log_json ? &log : nullptr);
+      } catch (const std::exception& e) {
+        if (log_json) log.event("error", {{"message", e.what()}});
+        throw;
+      }
+    }
     if (*check) return check_command(file, sets);
+    if (*study) return study_command(study_file, out_dir, jobs, quiet, argv[0]);
     std::cerr << "hpcontact: no sub-command given\n\n" << app.help();
     return 2;
   } catch (const Error& e) {

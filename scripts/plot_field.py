@@ -3,12 +3,15 @@
 element outlines: a quick look without ParaView.
 
 usage: plot_field.py RESULTS_DIR/solution.vtu [--field von_mises] [--scale 0] [--out FILE.png]
-       [--xlim A B] [--ylim A B]
+       [--xlim A B] [--ylim A B] [--vmax V]
 
 --field: a point field of the file (von_mises, sigma_xx, sigma_yy, sigma_xy, sigma_zz,
 principal_1, principal_2, strain_xx, strain_yy, gamma_xy). --scale: magnification of the
 displacement (0: automatic, the largest displacement drawn as 5 % of the model size; 1: true
-scale). Writes FILE.png (default: von_mises.png next to the .vtu, named after the field).
+scale). --vmax: top of the colour scale; by default the largest value, unless it exceeds ten
+times the 99th percentile (a stress singularity, e.g. at an element corner whose blending map
+degenerates): then the 99.5th percentile, and the title gives the maximum and where it is.
+Writes FILE.png (default: von_mises.png next to the .vtu, named after the field).
 """
 import argparse
 import os
@@ -39,6 +42,7 @@ def main(argv=None):
     ap.add_argument("--out")
     ap.add_argument("--xlim", type=float, nargs=2)
     ap.add_argument("--ylim", type=float, nargs=2)
+    ap.add_argument("--vmax", type=float)
     args = ap.parse_args(argv)
     text = open(args.vtu).read()
     m = re.search(r"<Points>\s*<DataArray[^>]*>(.*?)</DataArray>", text, re.S)
@@ -56,7 +60,13 @@ def main(argv=None):
     tri = mtri.Triangulation(x[:, 0], x[:, 1],
                              np.vstack([cells[:, [0, 1, 2]], cells[:, [0, 2, 3]]]))
     fig, ax = plt.subplots(figsize=(6.4, 5.2))
-    pc = ax.tripcolor(tri, values, shading="gouraud", cmap="viridis")
+    finite = values[np.isfinite(values)]
+    vmax, clipped = args.vmax, ""
+    if vmax is None and finite.size and finite.max() > 10 * max(np.percentile(finite, 99), 1e-300):
+        vmax = np.percentile(finite, 99.5)
+        at = X[np.nanargmax(np.where(np.isfinite(values), values, -np.inf))]
+        clipped = f"\ncolours clipped at {vmax:.4g}; max {finite.max():.4g} at ({at[0]:.4g}, {at[1]:.4g})"
+    pc = ax.tripcolor(tri, values, shading="gouraud", cmap="viridis", vmax=vmax)
     fig.colorbar(pc, ax=ax, shrink=0.85, label=args.field)
     # Element outlines: the sub-cell edges that only one sub-cell of their element has.
     count, ends = Counter(), {}
@@ -75,7 +85,7 @@ def main(argv=None):
         ax.set_xlim(*args.xlim)
     if args.ylim:
         ax.set_ylim(*args.ylim)
-    ax.set_title(f"{args.field}, displacement x {scale:.3g}", fontsize=10)
+    ax.set_title(f"{args.field}, displacement x {scale:.3g}{clipped}", fontsize=10)
     fig.tight_layout()
     out = args.out or os.path.join(os.path.dirname(args.vtu), args.field + ".png")
     fig.savefig(out, dpi=100, bbox_inches="tight")

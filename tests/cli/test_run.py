@@ -220,3 +220,24 @@ def test_earlier_outputs_are_removed_and_other_files_kept(hpcontact, root, tmp_p
     assert r.returncode == 1
     assert sorted(p.name for p in tmp_path.iterdir()) == ["last-good", "notes.txt"]
     assert [p.name for p in (tmp_path / "last-good").iterdir()] == ["notes.txt"]
+
+
+def test_log_json_is_one_event_per_line(hpcontact, root, tmp_path):
+    """--log-json: every stdout line is a JSON object; a contact run reports its Newton
+    iterations and load steps, and ends with done (or error, for a failed run)."""
+    import json
+    case = os.path.join(root, "examples/hertz/p5.yaml")
+    r = hpcontact("run", case, "--out", tmp_path, "--log-json")
+    assert r.returncode == 0, r.stderr
+    events = [json.loads(line) for line in r.stdout.splitlines()]
+    kinds = [e["kind"] for e in events]
+    assert kinds[0] == "start" and kinds[-1] == "done"
+    assert "iteration" in kinds and "load_step" in kinds
+    assert events[-1]["converged"] is True and events[-1]["dofs"] == 220
+    times = [e["time_s"] for e in events]
+    assert times == sorted(times)
+    r = hpcontact("run", case, "--out", tmp_path / "bad", "--log-json",
+                  "--set", "solver.max_iterations=1", "--set", "solver.max_cuts=0")
+    assert r.returncode == 1
+    last = json.loads(r.stdout.splitlines()[-1])
+    assert last["kind"] == "error" and "p5.yaml" in last["message"]

@@ -628,6 +628,8 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
   }
 }
 
+std::string read_input_file(const std::string& path) { return read_text_file(path); }
+
 ReadResult read_problem_full(const std::string& path, const std::vector<std::string>& overrides) {
   return parse_problem_full(read_text_file(path), path, overrides);
 }

@@ -38,6 +38,10 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
 ReadResult read_problem_full(const std::string& path,
                              const std::vector<std::string>& overrides = {});
 
+/// The whole text of an input file; IoError naming the path and the OS reason if it cannot be
+/// read (a folder, a missing file).
+std::string read_input_file(const std::string& path);
+
 /// parse_problem_full() without the effective input.
 model::ProblemSpec parse_problem(const std::string& yaml_text, const std::string& file_label,
                                  const std::vector<std::string>& overrides = {});

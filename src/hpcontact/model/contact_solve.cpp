@@ -4,6 +4,7 @@
 #include "hpcontact/model/contact_solve.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <limits>
@@ -201,6 +202,8 @@ public:
 
   /// Why the last evaluation failed (an inverted element), empty if it did not.
   const std::string& failure() const { return failure_; }
+  /// Contact points with a pressure at the state last evaluated (both sides of two-body pairs).
+  int points_in_contact() const { return points_in_contact_; }
 
   /// The factors on the prescribed displacements (and obstacle displacements) and on the loads.
   void set_factors(double displacements, double loads) {
@@ -289,9 +292,11 @@ private:
       return;
     }
     if (states) states->resize(pairs_.size());
+    points_in_contact_ = 0;
     for (size_t k = 0; k < pairs_.size(); ++k) {
       const ContactPair& pair = pairs_[k];
       PairForces f = pair_forces(d_, pair, u, t, frozen ? &(*frozen)[k] : nullptr);
+      for (const auto& s : f.states) points_in_contact_ += s.pressure > 0;
       R.segment(d_.bodies[pair.body].dof_offset, f.body.size()) -= f.body;
       if (pair.other >= 0) R.segment(d_.bodies[pair.other].dof_offset, f.other.size()) -= f.other;
       if (states) (*states)[k] = std::move(f.states);
@@ -328,6 +333,7 @@ private:
 
   const Discretization& d_;
   const std::vector<ContactPair>& pairs_;
+  mutable int points_in_contact_ = 0;
   ElasticOperator op_;
   solve::SparseMatrix K_uu_;  ///< the linear bodies' tangent on the unknowns, constant
   FiniteStrainForces finite_;
@@ -729,7 +735,18 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       system.set_factors(fn.displacements, fn.loads);
       no.reference_norm = system.force_scale(x);
       Eigen::VectorXd trial = x;
-      const auto rep = solve::newton(system, trial, no);
+      const auto step_start = std::chrono::steady_clock::now();
+      solve::IterationCallback each;
+      if (progress)
+        each = [&](int it, double rn, double dxn) {
+          std::ostringstream os;
+          os << "  iteration " << it << ": |R| " << rn << ", |dx| " << dxn;
+          if (!pairs.empty()) os << ", " << system.points_in_contact() << " points in contact";
+          os << ", " << std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count()
+             << " s";
+          say(os.str());
+        };
+      const auto rep = solve::newton(system, trial, no, each);
       sol.newton_iterations += rep.iterations;
       if (rep.ok()) {
         x = trial;
@@ -759,7 +776,11 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
         const std::string where = explain_singular(d, rep.singular_row);
         if (!where.empty()) why += " (" + where + ")";
       }
-      if (cuts == ss.max_cuts) {
+      // A tangent made singular by a body that only contact holds (its constraints leave a
+      // rigid motion free) stays singular on a shorter step: no cuts then.
+      bool structural = false;
+      for (const Body& body : d.bodies) structural = structural || !body.free_rigid_motions.empty();
+      if (cuts == ss.max_cuts || (rep.status == solve::SolveStatus::singular && structural)) {
         std::ostringstream os;
         os << "load step " << sol.load_steps + 1 << " (factor " << fn.displacements;
         if (fn.loads != fn.displacements) os << ", loads " << fn.loads;

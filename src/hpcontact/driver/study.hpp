@@ -1,0 +1,43 @@
+// Running a study: every run of a study file as its own `hpcontact run` process, several at a
+// time, and one table of their summaries.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "hpcontact/io/study_reader.hpp"
+
+namespace hpcontact::driver {
+
+struct StudyRowResult {
+  io::StudyRun run;
+  std::string run_dir;  ///< the run's output folder (summary.json, log.txt, ...)
+  int exit_code = -1;   ///< of `hpcontact run`; < 0: killed by a signal (its number, negated)
+  double seconds = 0;   ///< wall time of the process
+  std::string message;  ///< a failed run: the last line it printed
+  nlohmann::json summary;  ///< summary.json of a run that converged; null otherwise
+  bool converged() const { return exit_code == 0 && summary.is_object(); }
+};
+
+struct StudyOptions {
+  std::string program;  ///< the hpcontact executable each run is started with
+  std::string out_dir;  ///< OUT: OUT/runs/NN-label/ per run, OUT/study.csv, OUT/study.json
+  int jobs = 1;         ///< runs at a time
+  /// Called (from one thread at a time) when a run finishes: the row, how many are done.
+  std::function<void(const StudyRowResult&, int done, int total)> finished;
+};
+
+/// Runs every row (`program run CASE --out OUT/runs/NN-label -q --set ...`, its output in the
+/// folder's log.txt) and writes OUT/study.csv and OUT/study.json. A run that fails is a row with
+/// its message, not an exception. IoError if OUT cannot be written or a process not started.
+std::vector<StudyRowResult> run_study(const io::StudySpec& study, const StudyOptions& options);
+
+/// The table's columns for these rows: label, case, converged, dofs, wall time, energy,
+/// iterations, the contact and error measures any row has, the study's columns, seed_* values.
+std::vector<std::string> study_columns(const io::StudySpec& study,
+                                       const std::vector<StudyRowResult>& rows);
+
+}  // namespace hpcontact::driver

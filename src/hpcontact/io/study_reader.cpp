@@ -1,0 +1,188 @@
+// Study files: validated into a flat list of runs (label, case, overrides, published values).
+#include "hpcontact/io/study_reader.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <set>
+
+#include "hpcontact/core/error.hpp"
+#include "hpcontact/io/problem_reader.hpp"
+#include "hpcontact/io/yaml_source.hpp"
+
+namespace hpcontact::io {
+
+namespace {
+
+class StudyBuilder {
+ public:
+  explicit StudyBuilder(const std::string& file) : source_(file) {
+    folder_ = std::filesystem::path(file).parent_path();
+  }
+
+  StudySpec build(const YAML::Node& root) {
+    StudySpec s;
+    s.file = source_.file();
+    allow(root, "", {"study", "title", "case", "set", "sweep", "runs", "columns"});
+    s.name = text(root["study"], "study", true);
+    s.title = text(root["title"], "title", false);
+    const std::string common_case = root["case"] ? case_path(root["case"], "case") : "";
+    const std::vector<std::string> common_sets = strings(root["set"], "set");
+    if (const YAML::Node sweep = root["sweep"]) add_sweep(sweep, common_case, common_sets, s);
+    if (const YAML::Node runs = root["runs"]) {
+      require(runs.IsSequence(), runs, "runs", "must be a list of runs");
+      for (std::size_t i = 0; i < runs.size(); ++i) {
+        const std::string path = join_index("runs", i);
+        const YAML::Node r = runs[i];
+        require(r.IsMap(), r, path, "must be a map with label, case, set, seed");
+        allow(r, path, {"label", "case", "set", "seed"});
+        StudyRun run;
+        run.label = text(r["label"], path + ".label", true);
+        if (r["case"]) run.case_file = case_path(r["case"], path + ".case");
+        else run.case_file = common_case;
+        require(!run.case_file.empty(), r, path, "needs a case (or a case for the whole study)");
+        run.sets = common_sets;
+        for (const auto& set : strings(r["set"], path + ".set")) run.sets.push_back(set);
+        if (const YAML::Node seed = r["seed"]) {
+          require(seed.IsMap(), seed, path + ".seed", "must be a map of name: number");
+          for (auto it = seed.begin(); it != seed.end(); ++it) {
+            const std::string key = join_key(path + ".seed", it->first.Scalar());
+            const auto v = to_number(it->second);
+            require(v.has_value(), it->second, key,
+                    "must be a number (got " + quoted_value(it->second) + ")");
+            run.seed.emplace_back(it->first.Scalar(), *v);
+          }
+        }
+        s.runs.push_back(std::move(run));
+      }
+    }
+    s.columns = strings(root["columns"], "columns");
+    require(!s.runs.empty(), root, "", "a study needs runs or a sweep (got neither)");
+    std::set<std::string> labels;
+    for (std::size_t i = 0; i < s.runs.size(); ++i)
+      if (!labels.insert(s.runs[i].label).second)
+        throw InputError(source_.file() + ": run label '" + s.runs[i].label +
+                         "' is used twice (labels name the runs' folders and rows)");
+    return s;
+  }
+
+ private:
+  void require(bool ok, const YAML::Node& node, const std::string& path, const std::string& what) {
+    if (!ok) source_.fail(node, path.empty() ? "(top level)" : path, what);
+  }
+
+  void allow(const YAML::Node& map, const std::string& path, std::set<std::string> keys) {
+    for (auto it = map.begin(); it != map.end(); ++it) {
+      const std::string key = it->first.Scalar();
+      if (keys.count(key)) continue;
+      std::string expected;
+      for (const auto& k : keys) expected += (expected.empty() ? "" : ", ") + k;
+      source_.fail(it->first, join_key(path, key), "unknown key (expected one of: " + expected + ")");
+    }
+  }
+
+  std::string text(const YAML::Node& node, const std::string& path, bool required) {
+    if (!node) {
+      require(!required, node, path, "missing required key");
+      return "";
+    }
+    require(node.IsScalar() && !node.Scalar().empty(), node, path,
+            "must be a non-empty string (got " + shown_value(node) + ")");
+    return node.Scalar();
+  }
+
+  std::vector<std::string> strings(const YAML::Node& node, const std::string& path) {
+    std::vector<std::string> out;
+    if (!node) return out;
+    require(node.IsSequence(), node, path, "must be a list of strings (got " + shown_value(node) + ")");
+    for (std::size_t i = 0; i < node.size(); ++i) out.push_back(text(node[i], join_index(path, i), true));
+    return out;
+  }
+
+  /// A case path relative to the study file's folder; it must exist.
+  std::string case_path(const YAML::Node& node, const std::string& path) {
+    const std::filesystem::path p = folder_ / text(node, path, true);
+    std::error_code ec;
+    require(std::filesystem::is_regular_file(p, ec), node, path,
+            "no such problem file (got '" + p.string() + "')");
+    return p.string();
+  }
+
+  /// The value as --set takes it: a scalar as written, a list in flow style.
+  static std::string value_text(const YAML::Node& v) {
+    if (v.IsScalar()) return v.Scalar();
+    YAML::Emitter e;
+    e << YAML::Flow << v;
+    return e.c_str();
+  }
+
+  void add_sweep(const YAML::Node& sweep, const std::string& case_file,
+                 const std::vector<std::string>& common_sets, StudySpec& s) {
+    require(sweep.IsMap() && sweep.size() > 0, sweep, "sweep", "must be a map key.path: [values]");
+    require(!case_file.empty(), sweep, "sweep", "needs the study's case");
+    std::vector<std::pair<std::string, std::vector<std::string>>> axes;
+    for (auto it = sweep.begin(); it != sweep.end(); ++it) {
+      const std::string key = it->first.Scalar();
+      const std::string path = join_key("sweep", key);
+      require(it->second.IsSequence() && it->second.size() > 0, it->second, path,
+              "must be a non-empty list of values (got " + shown_value(it->second) + ")");
+      std::vector<std::string> values;
+      for (std::size_t i = 0; i < it->second.size(); ++i) values.push_back(value_text(it->second[i]));
+      axes.emplace_back(key, std::move(values));
+    }
+    std::size_t combinations = 1;
+    for (const auto& [key, values] : axes) {
+      combinations *= values.size();
+      require(combinations <= 10000, sweep, "sweep", "more than 10000 combinations");
+    }
+    for (std::size_t c = 0; c < combinations; ++c) {
+      StudyRun run;
+      run.case_file = case_file;
+      run.sets = common_sets;
+      std::vector<std::size_t> digit(axes.size());  // the last key varies fastest
+      std::size_t rest = c;
+      for (std::size_t a = axes.size(); a-- > 0;) {
+        digit[a] = rest % axes[a].second.size();
+        rest /= axes[a].second.size();
+      }
+      std::vector<std::string> parts;
+      for (std::size_t a = 0; a < axes.size(); ++a) {
+        const auto& [key, values] = axes[a];
+        const std::string& v = values[digit[a]];
+        const std::size_t dot = key.find_last_of('.');
+        parts.push_back((dot == std::string::npos ? key : key.substr(dot + 1)) + "=" + v);
+        run.sets.push_back(key + "=" + v);
+      }
+      for (const auto& part : parts) run.label += (run.label.empty() ? "" : ", ") + part;
+      s.runs.push_back(std::move(run));
+    }
+  }
+
+  YamlSource source_;
+  std::filesystem::path folder_;
+};
+
+}  // namespace
+
+StudySpec parse_study(const std::string& text, const std::string& file_label) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file_label + ":" + std::to_string(e.mark.line + 1) + ":" +
+                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + one_line(e.msg, 200));
+  }
+  if (!root.IsDefined() || root.IsNull()) throw InputError(file_label + ": empty study file");
+  if (!root.IsMap())
+    throw InputError(file_label + ": must be a YAML map (study:, runs: or sweep:, ...) (got " +
+                     quoted_value(root) + ")");
+  try {
+    return StudyBuilder(file_label).build(root);
+  } catch (const YAML::Exception& e) {
+    throw InputError(file_label + ": " + one_line(e.what(), 200));
+  }
+}
+
+StudySpec read_study(const std::string& path) { return parse_study(read_input_file(path), path); }
+
+}  // namespace hpcontact::io
