@@ -22,6 +22,7 @@
 #include "hpcontact/io/input_schema.hpp"
 #include "hpcontact/io/problem_reader.hpp"
 #include "hpcontact/io/study_reader.hpp"
+#include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
 
@@ -111,6 +112,23 @@ int check_command(const std::string& file, const std::vector<std::string>& sets)
   }
   std::cout << "  free dofs " << d.n_free << " (" << d.n_free_external
             << " after condensing internal modes)\n";
+  // Contact pairs are built as a run builds them (obstacle seen by the edges, penalty, friction).
+  const auto pairs = model::make_contact_pairs(spec, d);
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const auto& pair = pairs[k];
+    std::cout << "  contact[" << k << "]: body '" << d.bodies[pair.body].name << "', "
+              << pair.edges.size() << " edges, " << pair.points.size() << " Gauss points, against ";
+    if (pair.other >= 0)
+      std::cout << "body '" << d.bodies[pair.other].name << "' (" << pair.other_points.size()
+                << " Gauss points)";
+    else
+      std::cout << "a rigid " << (spec.contact[k].obstacle.kind == model::ObstacleKind::plane ? "plane" : "circle");
+    std::cout << ", penalty " << pair.penalty
+              << (spec.contact[k].friction.law.empty() || spec.contact[k].friction.law == "none"
+                      ? ""
+                      : ", friction " + spec.contact[k].friction.law)
+              << '\n';
+  }
   return 0;
 }
 

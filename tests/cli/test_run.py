@@ -261,3 +261,19 @@ def test_same_input_gives_bit_identical_results(hpcontact, root, tmp_path, case)
         summaries.append(json.dumps(s, sort_keys=True))
     assert summaries[0] == summaries[1]
     assert (outs[0] / "contact.csv").read_bytes() == (outs[1] / "contact.csv").read_bytes()
+
+
+def test_check_builds_the_contact_pairs(hpcontact, root, tmp_path):
+    """check describes each contact pair, and refuses one a run would refuse (here a plane whose
+    normal points away from the body), without solving."""
+    case = os.path.join(root, "examples/hertz/p5.yaml")
+    r = hpcontact("check", case)
+    assert r.returncode == 0, r.stderr
+    assert "contact[0]: body 'cylinder', 2 edges, 100 Gauss points, against a rigid plane" in r.stdout
+    with open(case) as f:
+        text = f.read().replace("normal: [0, 1]", "normal: [0, -1]")
+    bad = tmp_path / "wrong-normal.yaml"
+    bad.write_text(text)
+    r = hpcontact("check", bad)
+    assert r.returncode == 1
+    assert "wrong-normal.yaml" in r.stderr and "contact[0].obstacle" in r.stderr

@@ -659,7 +659,8 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
 }
 
 NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d,
-                                const ProgressFn& progress, double initial_factor) {
+                                const ProgressFn& progress, double initial_factor,
+                                const StepFn& on_step) {
   const SolverSpec& ss = spec.solver;
   auto pairs = make_contact_pairs(spec, d);
   for (const auto& pair : pairs)
@@ -713,6 +714,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       p.resultant = contact_resultant(d, pairs.front(), u, states);
     }
     sol.path.push_back(p);
+    if (on_step) on_step(u, p);
   };
   struct Factors {
     double displacements = 0, loads = 0;
@@ -892,7 +894,14 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
          << tr.value << ")";
       say(os.str());
       if (std::abs(f1) <= tr.tolerance * tr.value) break;
-      const double l2 = l1 - f1 * (l1 - l0) / (f1 - f0);
+      // The resultant grows like a power of the factor as the contact zone widens (Hertz:
+      // a little faster than linearly): the secant on log F over log λ, which is exact for a
+      // power law, when both points have a force; else the secant on F over λ.
+      const double F0 = f0 + tr.value, F1 = f1 + tr.value;
+      const double k = std::log(F1 / F0) / std::log(l1 / l0);
+      const double l2 = F0 > 0 && F1 > 0 && l0 > 0 && l1 > 0 && std::isfinite(k) && k > 0.2 && k < 5
+                            ? l1 * std::pow(tr.value / F1, 1 / k)
+                            : l1 - f1 * (l1 - l0) / (f1 - f0);
       l0 = l1;
       f0 = f1;
       l1 = l2;

@@ -123,13 +123,16 @@ private:
 };
 
 using ProgressFn = std::function<void(const std::string&)>;
+/// Called after every converged load step with all dofs u and the path point just recorded.
+using StepFn = std::function<void(const Eigen::VectorXd& u, const NonlinearSolution::PathPoint&)>;
 
 /// Solves the (nonlinear) contact problem with load steps and Newton's method; with
 /// solver.target_resultant, finds the load factor by the secant method.
 /// `initial_factor` > 0 starts the force control there instead of at 1 (a guess close to the
 /// answer, e.g. the previous mesh's factor in an adaptive loop, saves secant iterations).
 NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d,
-                                const ProgressFn& progress = {}, double initial_factor = 0);
+                                const ProgressFn& progress = {}, double initial_factor = 0,
+                                const StepFn& on_step = {});
 
 /// The Newton tangent of the contact problem at a solution, on the unknowns of its solve:
 /// analytic, or the seed's central finite differences (eq. 3.36). The residual there into
