@@ -240,6 +240,9 @@ int main(int argc, char** argv) {
     if (*study) return study_command(study_file, out_dir, jobs, quiet, argv[0]);
     std::cerr << "hpcontact: no sub-command given\n\n" << app.help();
     return 2;
+  } catch (const CommandLineError& e) {
+    std::cerr << "hpcontact: error: " << e.what() << "\n\n" << (*run ? run : check)->help();
+    return 2;
   } catch (const Error& e) {
     std::cerr << "hpcontact: error: " << e.what() << '\n';
     return kFailed;

@@ -8,8 +8,8 @@ import subprocess
 
 def run_case(hpcontact, case, out_dir, sets=(), vtu=False):
     """Runs `hpcontact run CASE --out OUT_DIR -q` with `--set` overrides (and output.vtu=false
-    unless vtu). Returns (summary.json as a dict, None), or (None, the program's last message
-    without its "hpcontact: error: " prefix) when the run fails or leaves no summary."""
+    unless vtu). Returns (summary.json as a dict, None), or (None, the program's error line
+    (else its last line) without its "hpcontact: error: " prefix) when the run fails or leaves no summary."""
     cmd = [str(hpcontact), "run", str(case), "--out", str(out_dir), "-q"]
     for s in list(sets) + ([] if vtu else ["output.vtu=false"]):
         cmd += ["--set", s]
@@ -17,7 +17,9 @@ def run_case(hpcontact, case, out_dir, sets=(), vtu=False):
     summary_path = os.path.join(out_dir, "summary.json")
     if proc.returncode != 0 or not os.path.isfile(summary_path):
         lines = (proc.stderr or proc.stdout or "").strip().splitlines()
-        msg = lines[-1] if lines else f"exit status {proc.returncode}, no message"
+        # The error line; a command-line mistake (exit 2) follows it with the usage.
+        errors = [line for line in lines if line.startswith("hpcontact: error: ")]
+        msg = (errors or lines or [f"exit status {proc.returncode}, no message"])[-1]
         return None, msg.replace("hpcontact: error: ", "")
     with open(summary_path) as f:
         return json.load(f), None

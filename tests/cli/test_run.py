@@ -112,12 +112,20 @@ def test_cli_mistakes_exit_2(hpcontact, root, tmp_path):
         assert "hpcontact" in r.stderr and "Usage" in r.stderr
 
 
-def test_bad_set_override_is_an_input_error(hpcontact, root, tmp_path):
-    """A --set naming a key that does not exist is refused with the key in the message."""
-    r = hpcontact("run", os.path.join(root, LAME), "--out", tmp_path, "--set",
-                  "discretization.colour=3")
-    assert r.returncode == 1
-    assert "discretization.colour" in r.stderr
+@pytest.mark.parametrize("override,fragment", [
+    ("discretization.colour=3", "discretization.colour"),     # no such key
+    ("bodies[3].material.E=1", "bodies[3]"),                  # no such list element
+    ("bodies[0].material.E=stiff", "bodies[0].material.E"),   # wrong type
+    ("bodies[0].material.nu=0.7", "bodies[0].material.nu"),   # out of range
+    ("discretization.degree", "key.path=value"),              # malformed
+])
+def test_bad_set_override_is_a_command_line_error(hpcontact, root, tmp_path, override, fragment):
+    """A --set with a key that does not exist or a bad value is a mistake on the command line:
+    one line naming it, the usage, exit code 2, and no summary."""
+    r = hpcontact("run", os.path.join(root, LAME), "--out", tmp_path, "--set", override)
+    assert r.returncode == 2, r.stderr
+    assert fragment in r.stderr.splitlines()[0] and "Usage" in r.stderr
+    assert not (tmp_path / "summary.json").exists()
 
 
 def test_docs_input_md_is_current(hpcontact, root):
@@ -195,13 +203,13 @@ def test_pressure_plot(hpcontact, root, tmp_path):
 def test_failed_run_leaves_no_earlier_summary(hpcontact, root, tmp_path):
     """A run that fails in a folder where an earlier run succeeded removes the old summary.json,
     for bad input and for a solver failure alike."""
-    for bad in (["--set", "bodies[0].material.nu=0.5"],
-                ["--set", "solver.max_iterations=1", "--set", "solver.max_cuts=0"]):
+    for bad, code in ((["--set", "bodies[0].material.nu=0.5"], 2),
+                      (["--set", "solver.max_iterations=1", "--set", "solver.max_cuts=0"], 1)):
         ok = hpcontact("run", os.path.join(root, "examples/hertz/p5.yaml"), "--out", tmp_path, "-q")
         assert ok.returncode == 0 and (tmp_path / "summary.json").exists()
         r = hpcontact("run", os.path.join(root, "examples/hertz/p5.yaml"), "--out", tmp_path, "-q",
                       *bad)
-        assert r.returncode == 1, r.stderr
+        assert r.returncode == code, r.stderr
         assert not (tmp_path / "summary.json").exists(), bad
         assert not (tmp_path / "contact.csv").exists() and not (tmp_path / "solution.vtu").exists()
 
@@ -217,7 +225,7 @@ def test_earlier_outputs_are_removed_and_other_files_kept(hpcontact, root, tmp_p
     (tmp_path / "last-good" / "notes.txt").parent.mkdir(exist_ok=True)
     (tmp_path / "last-good" / "notes.txt").write_text("mine too")
     r = hpcontact("run", case, "--out", tmp_path, "-q", "--set", "bodies[0].material.nu=0.5")
-    assert r.returncode == 1
+    assert r.returncode == 2
     assert sorted(p.name for p in tmp_path.iterdir()) == ["last-good", "notes.txt"]
     assert [p.name for p in (tmp_path / "last-good").iterdir()] == ["notes.txt"]
 

@@ -20,6 +20,13 @@ public:
   using Error::Error;
 };
 
+/// Bad input that came from the command line (a --set override: a key path that does not exist,
+/// a value of the wrong type or range): the program exits with status 2 and its usage.
+class CommandLineError : public InputError {
+public:
+  using InputError::InputError;
+};
+
 /// A mesh that cannot be used: inverted or degenerate element, inconsistent topology.
 class MeshError : public Error {
 public:

@@ -40,13 +40,17 @@ std::string folder_name(int index, const std::string& label) {
   return os.str();
 }
 
-/// The last non-empty line of a text file ("" if none).
+/// The run's error line (the last "hpcontact: error: ..." line, without that prefix), else the
+/// last non-empty line of its log ("" if none).
 std::string last_line(const fs::path& file) {
+  const std::string prefix = "hpcontact: error: ";
   std::ifstream in(file);
-  std::string line, last;
-  while (std::getline(in, line))
+  std::string line, last, error;
+  while (std::getline(in, line)) {
     if (!line.empty()) last = line;
-  return last;
+    if (line.rfind(prefix, 0) == 0) error = line.substr(prefix.size());
+  }
+  return error.empty() ? last : error;
 }
 
 /// Starts `argv` with stdout and stderr into `log`; waits for it. Returns the exit code, or
@@ -220,7 +224,6 @@ std::vector<StudyRowResult> run_study(const io::StudySpec& study, const StudyOpt
         }
         if (!row.converged()) {
           row.message = last_line(log);
-          if (row.message.rfind("hpcontact: error: ", 0) == 0) row.message.erase(0, 18);
           if (row.exit_code < 0) row.message = "killed by signal " + std::to_string(-row.exit_code) +
                                                (row.message.empty() ? "" : " after: " + row.message);
           if (row.message.empty()) row.message = "exit code " + std::to_string(row.exit_code);

@@ -59,18 +59,18 @@ void apply_override(YAML::Node& root, const std::string& override_text, YamlSour
   const std::string label = source.file() + ": --set " + override_text + ": ";
   const std::size_t equals = override_text.find('=');
   if (equals == std::string::npos)
-    throw InputError(label + "must be key.path=value, e.g. discretization.degree=8");
+    throw CommandLineError(label + "must be key.path=value, e.g. discretization.degree=8");
   const std::string path_text = override_text.substr(0, equals);
   const std::optional<std::vector<PathStep>> steps = parse_path(path_text);
   if (!steps)
-    throw InputError(label + "malformed key path '" + path_text +
+    throw CommandLineError(label + "malformed key path '" + path_text +
                      "' (expected keys joined by '.' with [i] list indices, e.g. "
                      "bodies[0].material.E)");
   YAML::Node value;
   try {
     value = YAML::Load(override_text.substr(equals + 1));
   } catch (const YAML::ParserException& e) {
-    throw InputError(label + "value is not valid YAML: " + one_line(e.msg, 200));
+    throw CommandLineError(label + "value is not valid YAML: " + one_line(e.msg, 200));
   }
 
   YAML::Node current = root;  // reset() below re-points `current`; assignment would overwrite
@@ -80,9 +80,9 @@ void apply_override(YAML::Node& root, const std::string& override_text, YamlSour
     const bool last = s + 1 == steps->size();
     if (step.is_index()) {
       if (!current.IsSequence())
-        throw InputError(label + path + " is not a list (got " + shown_value(current) + ")");
+        throw CommandLineError(label + path + " is not a list (got " + shown_value(current) + ")");
       if (step.index >= current.size())
-        throw InputError(label + join_index(path, step.index) + ": no such list element (" + path +
+        throw CommandLineError(label + join_index(path, step.index) + ": no such list element (" + path +
                          " has " + std::to_string(current.size()) + ")");
       path = join_index(path, step.index);
       if (last) {
@@ -94,7 +94,7 @@ void apply_override(YAML::Node& root, const std::string& override_text, YamlSour
       current.reset(next);
     } else {
       if (!current.IsMap())
-        throw InputError(label + (path.empty() ? "the file" : path) + " is not a map (got " +
+        throw CommandLineError(label + (path.empty() ? "the file" : path) + " is not a map (got " +
                          shown_value(current) + ")");
       path = join_key(path, step.key);
       if (last) {

@@ -54,7 +54,9 @@ model::SourceRef YamlSource::where(const YAML::Node& node, const std::string& pa
 
 void YamlSource::fail(const YAML::Node& node, const std::string& path,
                       const std::string& what) const {
-  throw InputError(where(node, path).str() + ": " + what);
+  const model::SourceRef ref = where(node, path);
+  if (any_lies_below(path, override_paths_)) throw CommandLineError(ref.str() + ": " + what);
+  throw InputError(ref.str() + ": " + what);
 }
 
 std::string join_key(const std::string& parent, const std::string& key) {
