@@ -8,7 +8,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev libsuitesparse-dev libyaml-cpp-dev libcli11-dev libmuparser-dev
   nlohmann-json3-dev libgtest-dev libbenchmark-dev
-  python3 python3-numpy python3-matplotlib python3-pytest python3-yaml
+  python3 python3-dev python3-numpy python3-matplotlib python3-pytest python3-yaml pybind11-dev
   gmsh
 )
 

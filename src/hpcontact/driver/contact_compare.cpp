@@ -129,23 +129,39 @@ nlohmann::json PressureComparison::measure(const model::Discretization& d,
   // itself carries (oscillating while Γ* lies inside an element, clean once a node sits on it).
   j["penalty_traction"] = errors([&](double x) { return at(x).second; });
   if (reference_) j["reference"] = reference_name_;
-  if (!csv_path.empty()) {
-    std::ostringstream csv;
-    csv.precision(12);
-    csv << "x,pressure_from_stress,pressure_penalty,hertz,shtayerman\n";
-    std::vector<double> xs;
-    for (int i = 0; i <= 1000; ++i) xs.push_back(1.5 * b * i / 1000);
-    for (double z : zone_ends)
-      if (z > 0 && z < 1.5 * b) xs.push_back(z);
-    std::sort(xs.begin(), xs.end());
-    for (const double x : xs) {
-      const auto bp = probe(x);
-      csv << x << ',' << (bp ? bp->from_stress : 0.0) << ',' << (bp ? bp->penalty : 0.0) << ','
-          << hertz_.pressure(x) << ',' << shtayerman_.pressure(x) << '\n';
-    }
-    post::write_text_file(csv_path, csv.str());
-  }
+  if (!csv_path.empty()) post::write_text_file(csv_path, pressure_csv(curve(d, pair, u, zone_ends)));
   return j;
+}
+
+PressureCurve PressureComparison::curve(const model::Discretization& d,
+                                        const model::ContactPair& pair, const Eigen::VectorXd& u,
+                                        const std::vector<double>& zone_ends) const {
+  const model::BoundaryPressureProbe probe(d, pair, u);
+  const double b = hertz_.half_width();
+  PressureCurve c;
+  for (int i = 0; i <= 1000; ++i) c.x.push_back(1.5 * b * i / 1000);
+  for (double z : zone_ends)
+    if (z > 0 && z < 1.5 * b) c.x.push_back(z);
+  std::sort(c.x.begin(), c.x.end());
+  for (const double x : c.x) {
+    const auto bp = probe(x);
+    c.from_stress.push_back(bp ? bp->from_stress : 0.0);
+    c.penalty.push_back(bp ? bp->penalty : 0.0);
+    c.hertz.push_back(hertz_.pressure(x));
+    c.shtayerman.push_back(shtayerman_.pressure(x));
+    if (reference_) c.reference.push_back((*reference_)(x));
+  }
+  return c;
+}
+
+std::string pressure_csv(const PressureCurve& c) {
+  std::ostringstream csv;
+  csv.precision(12);
+  csv << "x,pressure_from_stress,pressure_penalty,hertz,shtayerman\n";
+  for (size_t i = 0; i < c.x.size(); ++i)
+    csv << c.x[i] << ',' << c.from_stress[i] << ',' << c.penalty[i] << ',' << c.hertz[i] << ','
+        << c.shtayerman[i] << '\n';
+  return csv.str();
 }
 
 }  // namespace hpcontact::driver

@@ -21,6 +21,19 @@ struct ReferenceCurve {
   double operator()(double s) const;
 };
 
+/// The curves of pressure.csv: a pair's pressure and the closed forms along the obstacle.
+struct PressureCurve {
+  std::vector<double> x;            ///< coordinate along the obstacle, ascending
+  std::vector<double> from_stress;  ///< -n·σ·n (0 where no contact edge reaches x)
+  std::vector<double> penalty;      ///< eps_N <-g_N>
+  std::vector<double> hertz, shtayerman;
+  std::vector<double> reference;    ///< the reference curve; empty when the input names none
+};
+
+/// The curve as CSV text: x,pressure_from_stress,pressure_penalty,hertz,shtayerman (the
+/// reference is not written: it is an input), 12 significant digits.
+std::string pressure_csv(const PressureCurve& curve);
+
 /// The contact pressure of a pair against Hertz, Shtayerman (for the exact circle) and, if the
 /// input names one, a reference curve (CASES.md §1). Built once per run: the closed forms and
 /// the reference file are set up when constructed, each solve is then measured with measure().
@@ -36,11 +49,16 @@ public:
   /// (b_Hertz), Shtayerman (b_Shtayerman) and the reference (b_Hertz); keys as in RESULTS.md
   /// plus the half widths. If csv_path is not empty, writes the curves on 1001 points of
   /// [0, 1.5 b_Hertz] and on the ends of the contact zone `zone_ends` (coordinates along the
-  /// obstacle) there (x, pressure_from_stress, pressure_penalty, hertz, shtayerman), so that a
-  /// curve read back as a reference keeps its kink.
+  /// obstacle) there (pressure_csv(curve(...))), so that a curve read back as a reference
+  /// keeps its kink.
   nlohmann::json measure(const model::Discretization& d, const model::ContactPair& pair,
                          const Eigen::VectorXd& u, const std::vector<double>& zone_ends,
                          const std::string& csv_path) const;
+
+  /// The pair's pressure on 1001 points of [0, 1.5 b_Hertz] and on the zone ends inside it,
+  /// with Hertz, Shtayerman and the reference there.
+  PressureCurve curve(const model::Discretization& d, const model::ContactPair& pair,
+                      const Eigen::VectorXd& u, const std::vector<double>& zone_ends) const;
 
 private:
   analytic::Hertz hertz_;

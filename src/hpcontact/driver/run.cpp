@@ -112,6 +112,13 @@ private:
   std::optional<PressureComparison> comparison_;
 };
 
+/// The ends of the first pair's contact zone as coordinates along its obstacle.
+std::vector<double> zone_ends(const SolvedState& st) {
+  std::vector<double> ends;
+  for (const auto& g : st.contact.front().gamma_star) ends.push_back(st.pairs.front().coordinate(g));
+  return ends;
+}
+
 /// The contact figures of a state for summary.json; with a comparison also the pressure errors,
 /// and the pressure curve into csv_path if not empty.
 nlohmann::json contact_json(const SolvedState& st, const PressureComparison* comparison,
@@ -160,55 +167,40 @@ nlohmann::json contact_json(const SolvedState& st, const PressureComparison* com
     fj["stick_slip_transitions"] = points_json(transitions);
     cj["friction"] = fj;
   }
-  if (comparison) {
-    std::vector<double> zone_ends;
-    for (const auto& g : c.gamma_star) zone_ends.push_back(st.pairs.front().coordinate(g));
-    cj.update(comparison->measure(*st.d, st.pairs.front(), st.u, zone_ends, csv_path));
-  }
+  if (comparison)
+    cj.update(comparison->measure(*st.d, st.pairs.front(), st.u, zone_ends(st), csv_path));
   return cj;
 }
 
-/// Fills the summary of a solved state and writes its files (except summary.json) into out_dir
-/// (nothing if empty).
+/// Fills the summary and the interface curves of a solved state and writes its files (except
+/// summary.json) into out_dir (nothing if empty).
 void post_process(const model::ProblemSpec& spec, const SolvedState& st, const std::string& out_dir,
-                  const RunOptions& options, LazyComparison& comparison, post::Summary& s) {
+                  const RunOptions& options, LazyComparison& comparison, RunResult& r) {
   namespace fs = std::filesystem;
   auto say = [&](const std::string& line) {
     if (options.progress) options.progress(line);
   };
   const auto& disc = *st.d;
+  post::Summary& s = r.summary;
   s.case_name = spec.case_name;
   if (s.method.empty()) s.method = disc.method;
   s.dofs = disc.n_free;
   s.strain_energy = post::strain_energy(disc, st.u);
   s.error = exact_error(spec, disc, st.u, s.strain_energy);
-  if (!st.contact.empty())
-    s.extra["contact"] = contact_json(st, comparison(st),
-                                      out_dir.empty() ? "" : (fs::path(out_dir) / "pressure.csv").string());
+  if (!st.contact.empty()) {
+    const PressureComparison* cmp = comparison(st);
+    s.extra["contact"] = contact_json(st, cmp, "");
+    r.contact = contact_table(st.contact, st.pairs);
+    if (cmp) r.pressure_curve = cmp->curve(disc, st.pairs.front(), st.u, zone_ends(st));
+  }
   if (out_dir.empty()) return;
   const fs::path out(out_dir);
   if (!options.effective_input.empty())
     post::write_text_file((out / "input.yaml").string(), options.effective_input);
-  if (!st.contact.empty()) {
-    // The interface curve: one row per contact Gauss point.
-    std::ostringstream csv;
-    csv << std::setprecision(12)
-        << "pair,X,Y,x,y,gap,pressure,pressure_from_stress,tangential_gap,tangential_traction,"
-           "slip,state\n";
-    for (size_t k = 0; k < st.contact.size(); ++k)
-      for (size_t i = 0; i < st.contact[k].states.size(); ++i) {
-        const auto& p = st.contact[k].states[i];
-        const auto& X = st.pairs[k].points[i].X;
-        const char* state = p.gap > 0 ? "open"
-                            : p.stick_slip == contact::StickSlip::stick ? "stick"
-                            : p.stick_slip == contact::StickSlip::slip  ? "slip"
-                                                                       : "contact";
-        csv << k << ',' << X.x() << ',' << X.y() << ',' << p.x.x() << ',' << p.x.y() << ','
-            << p.gap << ',' << p.pressure << ',' << st.contact[k].stress_pressure[i] << ','
-            << p.g_t << ',' << p.t_t << ',' << p.slip << ',' << state << '\n';
-      }
-    post::write_text_file((out / "contact.csv").string(), csv.str());
-  }
+  if (!st.contact.empty())
+    post::write_text_file((out / "contact.csv").string(), contact_csv(r.contact));
+  if (r.pressure_curve)
+    post::write_text_file((out / "pressure.csv").string(), pressure_csv(*r.pressure_curve));
   if (spec.output.vtu) {
     post::write_vtu((out / "solution.vtu").string(), disc, st.u, spec.output.vtu_subdivisions);
     say("wrote " + (out / "solution.vtu").string());
@@ -322,7 +314,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
   };
 
   if (!options.out_dir.empty()) prepare_output_folder(options.out_dir);
-  RunResult result{{}, {}, {}};
+  RunResult result;
   post::Summary& s = result.summary;
   LazyComparison comparison(spec);
   auto write_summary = [&](const std::string& out_dir) {
@@ -413,7 +405,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     if (!out_dir.empty()) fs::create_directories(out_dir);
     SolvedState st{&last->discretization, last->solution.u, last->solution.contact,
                    last->solution.pairs};
-    post_process(last->spec, st, out_dir, options, comparison, s);
+    post_process(last->spec, st, out_dir, options, comparison, result);
     if (!out_dir.empty())
       post::write_text_file((fs::path(out_dir) / "mesh.yaml").string(), mesh_yaml(last->spec));
     s.converged = converged;
@@ -470,7 +462,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
         const std::string good = (fs::path(options.out_dir) / "last-good").string();
         fs::create_directories(good);
         const SolvedState last{&d, sol.u, sol.contact, sol.pairs};
-        post_process(spec, last, good, options, comparison, s);
+        post_process(spec, last, good, options, comparison, result);
         write_path(spec, sol, good);
         s.converged = false;
         s.extra["message"] = sol.message;
@@ -493,7 +485,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
   }
   result.discretization = std::move(d);
   st.d = &result.discretization;
-  post_process(spec, st, options.out_dir, options, comparison, s);
+  post_process(spec, st, options.out_dir, options, comparison, result);
   s.converged = true;
   result.u = st.u;
   write_summary(options.out_dir);

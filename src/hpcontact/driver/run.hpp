@@ -2,10 +2,13 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <Eigen/Dense>
 
+#include "hpcontact/driver/contact_compare.hpp"
+#include "hpcontact/driver/contact_table.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "hpcontact/model/problem_spec.hpp"
 #include "hpcontact/post/summary.hpp"
@@ -22,6 +25,9 @@ struct RunResult {
   post::Summary summary;
   model::Discretization discretization;
   Eigen::VectorXd u;  ///< all dofs
+  ContactTable contact;  ///< the rows of contact.csv; empty without contact
+  /// The curves of pressure.csv, when the first contact pair has a `compare` section.
+  std::optional<PressureCurve> pressure_curve;
 };
 
 /// Creates the output folder and removes the files an earlier run left there (summary.json,

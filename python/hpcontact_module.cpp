@@ -1,0 +1,383 @@
+// The Python module `hpcontact`: read or compose a problem, run it, and read its results as
+// numpy arrays. A thin layer over the library (io, driver, post): no numerics of its own.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "hpcontact/core/error.hpp"
+#include "hpcontact/driver/run.hpp"
+#include "hpcontact/io/problem_reader.hpp"
+#include "hpcontact/model/discretization.hpp"
+#include "hpcontact/model/rigid_motion.hpp"
+#include "hpcontact/post/fields.hpp"
+#include "hpcontact/post/point_location.hpp"
+#include "hpcontact/post/summary.hpp"
+
+namespace py = pybind11;
+using namespace hpcontact;
+
+namespace {
+
+/// nlohmann::json -> dict, list, str, int, float, bool or None.
+py::object to_python(const nlohmann::json& j) {
+  switch (j.type()) {
+    case nlohmann::json::value_t::object: {
+      py::dict d;
+      for (auto it = j.begin(); it != j.end(); ++it) d[py::str(it.key())] = to_python(it.value());
+      return d;
+    }
+    case nlohmann::json::value_t::array: {
+      py::list l;
+      for (const auto& v : j) l.append(to_python(v));
+      return l;
+    }
+    case nlohmann::json::value_t::string: return py::str(j.get<std::string>());
+    case nlohmann::json::value_t::boolean: return py::bool_(j.get<bool>());
+    case nlohmann::json::value_t::number_integer: return py::int_(j.get<std::int64_t>());
+    case nlohmann::json::value_t::number_unsigned: return py::int_(j.get<std::uint64_t>());
+    case nlohmann::json::value_t::number_float: return py::float_(j.get<double>());
+    default: return py::none();
+  }
+}
+
+template <class T>
+py::array_t<T> to_numpy(const std::vector<T>& v) {
+  py::array_t<T> a(static_cast<py::ssize_t>(v.size()));
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+/// The `set=` argument: None, one "key.path=value" string, a sequence of them, or a mapping
+/// {key.path: value} (values written as YAML: True -> true, others by str()).
+std::vector<std::string> overrides_from(const py::object& set) {
+  std::vector<std::string> out;
+  if (set.is_none()) return out;
+  if (py::isinstance<py::str>(set)) return {set.cast<std::string>()};
+  if (py::isinstance<py::dict>(set)) {
+    for (const auto& [key, value] : set.cast<py::dict>()) {
+      const std::string v = py::isinstance<py::bool_>(value)
+                                ? (value.cast<bool>() ? "true" : "false")
+                                : py::str(value).cast<std::string>();
+      out.push_back(py::str(key).cast<std::string>() + "=" + v);
+    }
+    return out;
+  }
+  for (const auto& item : set) {
+    if (!py::isinstance<py::str>(item))
+      throw py::type_error("set: expected 'key.path=value' strings, got " +
+                           py::repr(item).cast<std::string>());
+    out.push_back(item.cast<std::string>());
+  }
+  return out;
+}
+
+/// A str or os.PathLike argument as a string.
+std::string fspath(const py::object& path) {
+  return py::module_::import("os").attr("fspath")(path).cast<std::string>();
+}
+
+/// A validated problem and the effective input it was read from.
+struct Problem {
+  io::ReadResult read;
+};
+
+/// A finished run: the library's result, held on the heap because the locator refers into it.
+struct Result {
+  std::shared_ptr<const driver::RunResult> run;
+  std::optional<std::string> out;
+  mutable std::unique_ptr<post::PointLocator> locator;  ///< built at the first point query
+
+  const post::PointLocator& points() const {
+    if (!locator) locator = std::make_unique<post::PointLocator>(run->discretization);
+    return *locator;
+  }
+};
+
+py::dict describe(const Problem& p) {
+  const auto& spec = p.read.spec;
+  const auto d = model::discretize(spec);
+  model::require_held(spec, d);
+  py::list bodies;
+  for (const auto& b : d.bodies) {
+    py::dict bd;
+    bd["name"] = b.name;
+    bd["nodes"] = b.mesh.n_nodes();
+    bd["elements"] = b.mesh.n_quads();
+    bd["edges"] = b.mesh.n_edges();
+    bodies.append(bd);
+  }
+  py::dict out;
+  out["case"] = spec.case_name;
+  out["method"] = d.method;
+  out["bodies"] = bodies;
+  out["dofs"] = d.n_free;
+  out["dofs_condensed"] = d.n_free_external;
+  return out;
+}
+
+Result run(const Problem& p, const py::object& out_arg, bool quiet) {
+  std::optional<std::string> out;
+  if (!out_arg.is_none()) out = fspath(out_arg);
+  driver::RunOptions options;
+  if (out) {
+    options.out_dir = *out;
+    options.effective_input = p.read.effective_yaml;
+  }
+  // Progress lines go to sys.stdout; the callback also lets Ctrl-C stop a long run.
+  options.progress = [quiet](const std::string& line) {
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    if (!quiet) py::print("  " + line, py::arg("flush") = true);
+  };
+  std::shared_ptr<driver::RunResult> r;
+  {
+    py::gil_scoped_release release;
+    r = std::make_shared<driver::RunResult>(driver::run_problem(p.read.spec, options));
+  }
+  // run_problem throws when the solve does not converge; this guards the promise regardless.
+  if (!r->summary.converged)
+    throw NumericalError(p.read.spec.file + ": the run did not converge");
+  return Result{std::move(r), out, nullptr};
+}
+
+/// Locates every row of an (n, 2) array (or one point of shape (2,)) and evaluates `columns`
+/// values per point with `eval`; the first point outside raises ValueError.
+template <class Eval>
+py::array_t<double> at_points(const Result& res, const py::array_t<double, py::array::c_style |
+                                                                            py::array::forcecast>& points,
+                              const std::optional<std::string>& body_name, int columns, Eval eval) {
+  const bool single = points.ndim() == 1;
+  if (!(single && points.shape(0) == 2) && !(points.ndim() == 2 && points.shape(1) == 2))
+    throw py::value_error("points: expected an array of shape (n, 2) or (2,)");
+  const auto& d = res.run->discretization;
+  int body = -1;
+  if (body_name) {
+    for (int b = 0; b < static_cast<int>(d.bodies.size()); ++b)
+      if (d.bodies[b].name == *body_name) body = b;
+    if (body < 0) {
+      std::string names;
+      for (const auto& b : d.bodies) names += (names.empty() ? "'" : ", '") + b.name + "'";
+      throw py::value_error("body: no body '" + *body_name + "' (the bodies are " + names + ")");
+    }
+  }
+  const py::ssize_t n = single ? 1 : points.shape(0);
+  py::array_t<double> values(std::vector<py::ssize_t>{n, columns});
+  auto v = values.mutable_unchecked<2>();
+  const double* xy = points.data();
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const Vec2 X(xy[2 * i], xy[2 * i + 1]);
+    const auto loc = res.points().locate(X, body);
+    if (!loc) {
+      std::ostringstream os;
+      os.precision(10);
+      os << "point " << i << " (" << X.x() << ", " << X.y() << ") lies outside "
+         << (body_name ? "body '" + *body_name + "'" : std::string("every body"));
+      throw py::value_error(os.str());
+    }
+    const auto pr = post::evaluate(d.bodies[loc->body], loc->element, loc->xi, loc->eta, res.run->u);
+    const auto row = eval(pr);
+    for (int c = 0; c < columns; ++c) v(i, c) = row[c];
+  }
+  if (single) return values.reshape(std::vector<py::ssize_t>{columns});
+  return values;
+}
+
+py::dict contact_table(const Result& res) {
+  const auto& t = res.run->contact;
+  py::dict out;
+  out["pair"] = to_numpy(t.pair);
+  out["X"] = to_numpy(t.X);
+  out["Y"] = to_numpy(t.Y);
+  out["x"] = to_numpy(t.x);
+  out["y"] = to_numpy(t.y);
+  out["gap"] = to_numpy(t.gap);
+  out["pressure"] = to_numpy(t.pressure);
+  out["pressure_from_stress"] = to_numpy(t.pressure_from_stress);
+  out["tangential_gap"] = to_numpy(t.tangential_gap);
+  out["tangential_traction"] = to_numpy(t.tangential_traction);
+  out["slip"] = to_numpy(t.slip);
+  out["state"] = py::module_::import("numpy").attr("array")(py::cast(t.state), "U7");
+  return out;
+}
+
+py::object pressure_curve(const Result& res) {
+  const auto& c = res.run->pressure_curve;
+  if (!c) return py::none();
+  py::dict out;
+  out["x"] = to_numpy(c->x);
+  out["pressure_from_stress"] = to_numpy(c->from_stress);
+  out["pressure_penalty"] = to_numpy(c->penalty);
+  out["hertz"] = to_numpy(c->hertz);
+  out["shtayerman"] = to_numpy(c->shtayerman);
+  if (!c->reference.empty()) out["reference"] = to_numpy(c->reference);
+  return out;
+}
+
+constexpr const char* kModuleDoc = R"(hpcontact: 2D contact problems with high-order finite elements.
+
+Read or compose a problem, run it, and read the results as numpy arrays::
+
+    import hpcontact
+    problem = hpcontact.Problem.from_file("examples/hertz/p5.yaml",
+                                          set=["discretization.degree=6"])
+    result = problem.run()                 # or run(out="results/p6") to write the usual files
+    result.summary["contact"]["p_max"]     # summary.json as a dict
+    result.displacement([[0.0, 5.0]])      # (n, 2) at undeformed points
+    result.contact()["pressure"]           # contact.csv's columns
+    result.pressure_curve()["hertz"]       # pressure.csv's columns (with a compare section)
+
+Errors: hpcontact.InputError (also a ValueError) for bad input, hpcontact.SolverError (also a
+RuntimeError) when the solution fails, hpcontact.Error, their base, for anything else the
+program reports (a file that cannot be written, a bad mesh). The message is the program's.)";
+
+}  // namespace
+
+PYBIND11_MODULE(hpcontact, m) {
+  m.doc() = kModuleDoc;
+  m.attr("__version__") = HPC_VERSION;
+
+  // The exceptions: Error for everything the library reports, InputError and SolverError also
+  // the built-in exception a Python user would expect.
+  static py::handle error = PyErr_NewExceptionWithDoc(
+      "hpcontact.Error", "An error hpcontact reports; str(e) is its one-line message.",
+      PyExc_Exception, nullptr);
+  const py::tuple input_bases = py::make_tuple(error, py::handle(PyExc_ValueError));
+  static py::handle input_error = PyErr_NewExceptionWithDoc(
+      "hpcontact.InputError",
+      "Bad input: a key, value or reference of a problem; the message names the file, line and key.",
+      input_bases.ptr(), nullptr);
+  const py::tuple solver_bases = py::make_tuple(error, py::handle(PyExc_RuntimeError));
+  static py::handle solver_error = PyErr_NewExceptionWithDoc(
+      "hpcontact.SolverError",
+      "The solution failed: no convergence (Newton, load steps, force control, an adaptive loop) "
+      "or a numerical breakdown; the message names the load step and the cause.",
+      solver_bases.ptr(), nullptr);
+  m.attr("Error") = error;
+  m.attr("InputError") = input_error;
+  m.attr("SolverError") = solver_error;
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InputError& e) {
+      PyErr_SetString(input_error.ptr(), e.what());
+    } catch (const NumericalError& e) {
+      PyErr_SetString(solver_error.ptr(), e.what());
+    } catch (const AdaptError& e) {
+      PyErr_SetString(solver_error.ptr(), e.what());
+    } catch (const Error& e) {
+      PyErr_SetString(error.ptr(), e.what());
+    }
+  });
+
+  py::class_<Problem>(m, "Problem", R"(A validated problem: the problem file read, the overrides applied.
+
+Build one with Problem.from_file() or Problem.from_yaml(); it does not change afterwards (read
+it again with other overrides to vary it).)")
+      .def_static(
+          "from_file",
+          [](const py::object& path, const py::object& set) {
+            return Problem{io::read_problem_full(fspath(path), overrides_from(set))};
+          },
+          py::arg("path"), py::arg("set") = py::none(),
+          R"(Reads a YAML problem file (path: str or os.PathLike).
+
+set: overrides as for `hpcontact run --set`: a list of "key.path=value" strings
+(e.g. ["discretization.degree=6", "bodies[0].material.E=1e5"]) or a dict {"key.path": value}.
+Raises InputError (the message names the file, line and key) or Error (file not readable).)")
+      .def_static(
+          "from_yaml",
+          [](const std::string& text, const std::string& label, const py::object& set) {
+            return Problem{io::parse_problem_full(text, label, overrides_from(set))};
+          },
+          py::arg("text"), py::arg("label") = "<string>", py::arg("set") = py::none(),
+          R"(Builds a problem from YAML text (e.g. one a script composes).
+
+label: the name messages give the text; files the problem names (a gmsh mesh, a reference
+curve) are found relative to its folder. set: overrides, as for from_file().)")
+      .def_property_readonly(
+          "case", [](const Problem& p) { return p.read.spec.case_name; }, "The case name.")
+      .def_property_readonly(
+          "file", [](const Problem& p) { return p.read.spec.file; },
+          "The file (or label) the problem was read from.")
+      .def_property_readonly(
+          "input", [](const Problem& p) { return p.read.effective_yaml; },
+          "The effective input: the problem with overrides and defaults, as YAML (input.yaml).")
+      .def("describe", &describe,
+           R"(Discretises the problem without solving it (like `hpcontact check`): a dict with the
+case, the method ("p" or "h"), the bodies (name, nodes, elements, edges), "dofs" (free unknowns)
+and "dofs_condensed" (after condensing internal modes). For an adaptive run, of the first mesh.)")
+      .def_property_readonly(
+          "dofs", [](const Problem& p) { return describe(p)["dofs"].cast<int>(); },
+          "Free unknowns of the (first) discretisation, as summary.json's \"dofs\".")
+      .def("run", &run, py::arg("out") = py::none(), py::arg("quiet") = true,
+           R"(Solves the problem and returns a Result.
+
+out: None writes nothing; a folder (str or os.PathLike) gets the files of `hpcontact run --out` (summary.json,
+contact.csv, pressure.csv, solution.vtu, input.yaml); files of an earlier run there are removed
+first. quiet=False prints the progress lines. Raises SolverError when the solution does not
+converge (with out, the last converged step is kept in out/last-good/), InputError for input
+found wrong only now (a reference curve), Error otherwise. Ctrl-C stops the run between steps.)")
+      .def("__repr__", [](const Problem& p) {
+        return "<hpcontact.Problem '" + p.read.spec.case_name + "' from " + p.read.spec.file + ">";
+      });
+
+  py::class_<Result>(m, "Result", "A converged run: its summary, fields at points and interface curves.")
+      .def_property_readonly(
+          "summary", [](const Result& r) { return to_python(post::to_json(r.run->summary)); },
+          "summary.json's content as a dict (also when nothing was written).")
+      .def_property_readonly(
+          "out", [](const Result& r) { return r.out; }, "The output folder, or None.")
+      .def(
+          "displacement",
+          [](const Result& r, const py::array_t<double, py::array::c_style | py::array::forcecast>& points,
+             const std::optional<std::string>& body) {
+            return at_points(r, points, body, 2, [](const post::PointResult& pr) {
+              return std::array<double, 2>{pr.u.x(), pr.u.y()};
+            });
+          },
+          py::arg("points"), py::arg("body") = py::none(),
+          R"(Displacements (ux, uy) at points of the undeformed bodies.
+
+points: array of shape (n, 2) (or one point, shape (2,)); returns shape (n, 2) (or (2,)). A
+point on an edge shared by two elements or bodies takes the first (bodies in input order);
+body="name" searches that body only. Raises ValueError naming the first point outside.)")
+      .def(
+          "stress",
+          [](const Result& r, const py::array_t<double, py::array::c_style | py::array::forcecast>& points,
+             const std::optional<std::string>& body) {
+            return at_points(r, points, body, 4, [](const post::PointResult& pr) {
+              return std::array<double, 4>{pr.stress(0), pr.stress(1), pr.stress(2), pr.stress_zz};
+            });
+          },
+          py::arg("points"), py::arg("body") = py::none(),
+          R"(Stresses (sxx, syy, sxy, szz) at points of the undeformed bodies.
+
+Cauchy stresses under finite strain; szz is the out-of-plane stress (nu (sxx + syy) in linear
+plane strain, 0 in plane stress).
+points and body as for displacement(); returns shape (n, 4) (or (4,)).)")
+      .def("contact", &contact_table,
+           R"(The interface curve: contact.csv's columns as numpy arrays, one entry per contact
+Gauss point of every pair (the "pair" column says which): pair, X, Y (undeformed), x, y
+(deformed), gap, pressure (penalty), pressure_from_stress, tangential_gap,
+tangential_traction, slip (zero without friction) and state (str array: "open", "contact",
+"stick", "slip"). Arrays of length 0 when the problem has no contact.)")
+      .def("pressure_curve", &pressure_curve,
+           R"(pressure.csv's columns as numpy arrays, when the first contact pair has a compare
+section (None otherwise): x (along the obstacle, on 1001 points of [0, 1.5 b] and the zone ends),
+pressure_from_stress, pressure_penalty, hertz, shtayerman and, if the input names one,
+reference. b and p0 are summary["contact"]["hertz_half_width"] and ["hertz_peak_pressure"].)")
+      .def("__repr__", [](const Result& r) {
+        const auto& s = r.run->summary;
+        std::ostringstream os;
+        os << "<hpcontact.Result '" << s.case_name << "': " << s.method << "-version, " << s.dofs
+           << " dofs, strain energy " << s.strain_energy << ">";
+        return os.str();
+      });
+}
