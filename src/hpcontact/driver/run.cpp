@@ -17,6 +17,7 @@
 #include "hpcontact/model/linear_solve.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
 #include "hpcontact/post/fields.hpp"
+#include "hpcontact/post/contact_vtu.hpp"
 #include "hpcontact/post/vtu.hpp"
 
 namespace hpcontact::driver {
@@ -58,22 +59,27 @@ void prepare_output_folder(const std::string& out_dir) {
   // this run's results. Other files, and folders holding anything else, are left alone.
   auto remove_ours = [&](const fs::path& dir) {
     for (const char* name : {"summary.json", "contact.csv", "pressure.csv", "path.csv",
-                             "solution.vtu", "input.yaml", "mesh.yaml"}) {
+                             "solution.vtu", "contact.vtu", "solution.pvd", "contact.pvd",
+                             "input.yaml", "mesh.yaml"}) {
       fs::remove(dir / name, ec);
       HPC_REQUIRE(!ec, IoError, dir.string(), ": cannot remove the previous ", name, ": ",
                   ec.message());
     }
   };
   remove_ours(out_dir);
-  for (const char* sub : {"last-good", "rp", "hp"}) {
+  for (const char* sub : {"last-good", "rp", "hp", "steps"}) {
     const fs::path dir = fs::path(out_dir) / sub;
     if (!fs::is_directory(dir, ec)) continue;
     remove_ours(dir);
-    for (const auto& entry : fs::directory_iterator(dir, ec)) {  // rp/pressure-3.csv, ...
+    std::vector<fs::path> numbered;  // rp/pressure-3.csv, steps/step-0001.vtu, ...
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
       const std::string name = entry.path().filename().string();
-      if (name.rfind("pressure-", 0) == 0 && entry.path().extension() == ".csv")
-        fs::remove(entry.path(), ec);
+      for (const char* prefix : {"pressure-", "step-", "contact-"})
+        if (name.rfind(prefix, 0) == 0 &&
+            (entry.path().extension() == ".csv" || entry.path().extension() == ".vtu"))
+          numbered.push_back(entry.path());
     }
+    for (const auto& p : numbered) fs::remove(p, ec);
     if (fs::is_empty(dir, ec)) fs::remove(dir, ec);
   }
 }
@@ -204,6 +210,7 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
   if (spec.output.vtu) {
     post::write_vtu((out / "solution.vtu").string(), disc, st.u, spec.output.vtu_subdivisions);
     say("wrote " + (out / "solution.vtu").string());
+    if (!st.contact.empty()) post::write_contact_vtu((out / "contact.vtu").string(), st.pairs, st.contact);
   }
 }
 
@@ -447,7 +454,38 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     s.extra["solve_time_s"] = sol.solve_seconds;
     s.extra["assembly_time_s"] = sol.assembly_seconds;
   } else {
-    auto sol = model::solve_contact(spec, d, options.progress);
+    // output.steps: every converged load step as steps/step-NNNN.vtu (and contact-NNNN.vtu),
+    // collected in solution.pvd (contact.pvd) at time = the step's number (the row of path.csv).
+    std::vector<std::string> step_files, contact_files;
+    std::vector<double> step_times;
+    model::StepFn on_step;
+    if (spec.output.steps && spec.output.vtu && !options.out_dir.empty()) {
+      fs::create_directories(fs::path(options.out_dir) / "steps");
+      on_step = [&](const Eigen::VectorXd& u, const model::NonlinearSolution::PathPoint&,
+                    const std::vector<model::ContactPair>& pairs) {
+        std::ostringstream name;
+        name << std::setw(4) << std::setfill('0') << step_files.size() + 1 << ".vtu";
+        step_files.push_back("steps/step-" + name.str());
+        step_times.push_back(static_cast<double>(step_files.size()));
+        post::write_vtu((fs::path(options.out_dir) / step_files.back()).string(), d, u,
+                        spec.output.vtu_subdivisions);
+        if (pairs.empty()) return;
+        std::vector<model::ContactResult> results;
+        for (const auto& pair : pairs) results.push_back(model::evaluate_contact(d, pair, u));
+        contact_files.push_back("steps/contact-" + name.str());
+        post::write_contact_vtu((fs::path(options.out_dir) / contact_files.back()).string(), pairs,
+                                results);
+      };
+    }
+    auto sol = model::solve_contact(spec, d, options.progress, 0, on_step);
+    if (!step_files.empty()) {
+      post::write_pvd((fs::path(options.out_dir) / "solution.pvd").string(), step_files, step_times);
+      if (!contact_files.empty())
+        post::write_pvd((fs::path(options.out_dir) / "contact.pvd").string(), contact_files,
+                        step_times);
+      say("wrote " + std::to_string(step_files.size()) + " load steps: " +
+          (fs::path(options.out_dir) / "solution.pvd").string());
+    }
     s.newton_iterations = sol.newton_iterations;
     s.load_steps = sol.load_steps;
     s.extra["load_factor"] = sol.load_factor;

@@ -31,7 +31,7 @@ struct RunResult {
 };
 
 /// Creates the output folder and removes the files an earlier run left there (summary.json,
-/// contact.csv, ..., last-good/, rp/, hp/), so that the folder of a run that then fails holds
+/// contact.csv, ..., last-good/, rp/, hp/, steps/), so that the folder of a run that then fails holds
 /// nothing that could pass for its result. Files the program does not write are kept. IoError.
 void prepare_output_folder(const std::string& out_dir);
 

@@ -398,7 +398,16 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "output", .type = T::section, .default_yaml = "{}",
        .doc = "What is written next to the results."},
       {.path = "output.vtu", .type = T::boolean, .default_yaml = "true",
-       .doc = "Write the solution as a VTK unstructured grid (.vtu)."},
+       .doc = "Write the solution as VTK unstructured grids for ParaView: solution.vtu (the "
+              "bodies: displacement, strains, stresses, von Mises, principal stresses, element "
+              "degree) and, with contact, contact.vtu (the contact Gauss points of each pair as a "
+              "line: traction, gap, pressure, pressure from the stresses, tangential traction, "
+              "slip, state)."},
+      {.path = "output.steps", .type = T::boolean, .default_yaml = "false",
+       .doc = "Nonlinear runs: also write the bodies (and the contact points) of every converged "
+              "load step, steps/step-NNNN.vtu (steps/contact-NNNN.vtu), and solution.pvd "
+              "(contact.pvd) that ParaView plays as a time series, time = the step's load "
+              "factor (force control: the step number, as the factor goes back and forth)."},
       {.path = "output.vtu_subdivisions", .type = T::integer, .default_yaml = "0",
        .doc = "Sub-cells per element edge in the .vtu file; 0: automatic from the degree.",
        .lower = at_least(0)},

@@ -558,6 +558,7 @@ class SpecBuilder {
   OutputSpec output(const YAML::Node& node) {
     OutputSpec o;
     o.vtu = boolean(node["vtu"]);
+    o.steps = boolean(node["steps"]);
     o.vtu_subdivisions = integer(node["vtu_subdivisions"]);
     o.effective_input = boolean(node["effective_input"]);
     o.where = source_.where(node, "output");

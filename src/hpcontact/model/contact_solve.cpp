@@ -473,6 +473,11 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
 
 }  // namespace
 
+ContactResult evaluate_contact(const Discretization& d, const ContactPair& pair,
+                               const Eigen::VectorXd& u) {
+  return contact_result(d, pair, u);
+}
+
 BoundaryPressureProbe::BoundaryPressureProbe(const Discretization& d, const ContactPair& pair,
                                              const Eigen::VectorXd& u)
     : d_(d), pair_(pair), u_(u), coord_(pair.edges.size()) {
@@ -714,7 +719,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       p.resultant = contact_resultant(d, pairs.front(), u, states);
     }
     sol.path.push_back(p);
-    if (on_step) on_step(u, p);
+    if (on_step) on_step(u, p, pairs);
   };
   struct Factors {
     double displacements = 0, loads = 0;

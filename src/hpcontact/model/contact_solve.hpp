@@ -123,8 +123,15 @@ private:
 };
 
 using ProgressFn = std::function<void(const std::string&)>;
-/// Called after every converged load step with all dofs u and the path point just recorded.
-using StepFn = std::function<void(const Eigen::VectorXd& u, const NonlinearSolution::PathPoint&)>;
+/// Called after every converged load step with all dofs u, the path point just recorded and the
+/// contact pairs (for evaluate_contact).
+using StepFn = std::function<void(const Eigen::VectorXd& u, const NonlinearSolution::PathPoint&,
+                                  const std::vector<ContactPair>& pairs)>;
+
+/// The contact state of a pair at the dofs u: its points' states, pressures from the stresses,
+/// resultant, Γ*, half width.
+ContactResult evaluate_contact(const Discretization& d, const ContactPair& pair,
+                               const Eigen::VectorXd& u);
 
 /// Solves the (nonlinear) contact problem with load steps and Newton's method; with
 /// solver.target_resultant, finds the load factor by the secant method.

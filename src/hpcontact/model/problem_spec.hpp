@@ -217,6 +217,7 @@ struct ExactSpec {
 
 struct OutputSpec {
   bool vtu = true;
+  bool steps = false;        ///< a .vtu per converged load step and a .pvd of them
   int vtu_subdivisions = 0;  ///< 0: automatic from the degree
   bool effective_input = true;
   SourceRef where;
