@@ -285,3 +285,16 @@ def test_check_builds_the_contact_pairs(hpcontact, root, tmp_path):
     r = hpcontact("check", bad)
     assert r.returncode == 1
     assert "wrong-normal.yaml" in r.stderr and "contact[0].obstacle" in r.stderr
+
+
+def test_help_on_every_sub_command_and_version(hpcontact):
+    """--help of the program and of each sub-command names its options; --version the version."""
+    r = hpcontact("--help")
+    assert r.returncode == 0 and all(c in r.stdout for c in ("run", "check", "study"))
+    for sub, options in (("run", ["--out", "--set", "--quiet", "--log-json"]),
+                         ("check", ["--set"]), ("study", ["--out", "--jobs", "--quiet"])):
+        r = hpcontact(sub, "--help")
+        assert r.returncode == 0, (sub, r.stderr)
+        assert all(o in r.stdout for o in options), (sub, r.stdout)
+    r = hpcontact("--version")
+    assert r.returncode == 0 and r.stdout.startswith("hpcontact ")
