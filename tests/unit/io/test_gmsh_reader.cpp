@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "edit_text.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/io/gmsh_import.hpp"
 #include "hpcontact/io/gmsh_reader.hpp"
@@ -74,14 +75,7 @@ $Elements
 $EndElements
 )";
 
-/// `text` with the one occurrence of `from` replaced by `to`.
-std::string with(std::string text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "test text lacks '" << from << "'";
-  EXPECT_EQ(text.find(from, at + 1), std::string::npos) << "'" << from << "' is not unique";
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using hpcontact::test::with;
 
 /// The message of the InputError that parsing (and importing, with `options`) `text` throws,
 /// checked to be one line holding every fragment.

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "edit_text.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/io/problem_reader.hpp"
 
@@ -42,14 +43,7 @@ bodies:
       - {edges: [top], pressure: 10}
 )";
 
-/// `text` with the one occurrence of `from` replaced by `to`.
-std::string with(std::string text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "test text lacks '" << from << "'";
-  EXPECT_EQ(text.find(from, at + 1), std::string::npos) << "'" << from << "' is not unique";
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using hpcontact::test::with;
 
 /// The InputError message of parsing `text`, checked to be one line holding every fragment.
 std::string input_error(const std::string& text, const std::vector<std::string>& fragments,
