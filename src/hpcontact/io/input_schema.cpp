@@ -30,7 +30,8 @@ const std::vector<KeySpec>& input_schema() {
   // clang-format off
   static const std::vector<KeySpec> table{
       {.path = "case", .type = T::string, .required = true,
-       .doc = "Short name of the case; names the output files."},
+       .doc = "Short name of the case, repeated in summary.json and in messages (the output "
+              "folder is named after the problem file, unless --out says otherwise)."},
       {.path = "description", .type = T::string, .doc = "Free text describing the case."},
       {.path = "bodies", .type = T::section_list, .required = true,
        .doc = "The elastic bodies, each with its own mesh, material, constraints and loads.",
@@ -316,8 +317,9 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Force on the whole cylinder per unit thickness (F; the quarter model carries F/2).",
        .lower = greater_than(0)},
       {.path = "contact[].compare.reference", .type = T::string,
-       .doc = "CSV with columns x and pressure (a contact.csv of an overkill run, its "
-              "pressure_from_stress column), relative to this file; absent: none."},
+       .doc = "CSV with columns x (undeformed, along the obstacle) and pressure_from_stress: "
+              "the pressure.csv of an overkill run of the same model, relative to this file; "
+              "absent: none."},
 
       {.path = "contact[].obstacle.type", .type = T::choice, .required = true,
        .doc = "plane: a straight line; circle: a disc (or a hole with inside); body: another "
