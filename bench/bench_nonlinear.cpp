@@ -51,7 +51,8 @@ const int registered = [] {
   for (const char* path :
        {"examples/axle-ring/ring2-p4.yaml", "examples/axle-ring/ring12-p4.yaml",
         "examples/axle-ring/ring16-p5.yaml", "examples/two-bars/stick.yaml",
-        "examples/two-bars/coulomb.yaml", "tests/cli/data/shallow-arch.yaml"})
+        "examples/two-bars/coulomb.yaml", "tests/cli/data/shallow-arch.yaml",
+        "examples/ring-foundation/ring.yaml"})
     benchmark::RegisterBenchmark((std::string("BM_Nonlinear/") + path).c_str(),
                                  [p = std::string(path)](benchmark::State& s) { solve_case(s, p); })
         ->Unit(benchmark::kMillisecond)

@@ -257,12 +257,13 @@ def nonlinear_section(runs):
            "(no files): load steps, Newton iterations, and the time per load step. The axle in the",
            "ring (Neo-Hooke, 20 nominal steps), the two bars (press, then push in 4 steps; stick and",
            "Coulomb), the snap-through of the shallow arch (tests/cli/data) under load control and",
-           "with the arc-length method.", "",
+           "with the arc-length method, the composite ring on the foundation (arc-length).", "",
            "| case | dofs | load steps | Newton iterations | time | per step | spread |",
            "|---|---:|---:|---:|---:|---:|---:|"]
     cases = ["examples/axle-ring/ring2-p4.yaml", "examples/axle-ring/ring12-p4.yaml",
              "examples/axle-ring/ring16-p5.yaml", "examples/two-bars/stick.yaml",
-             "examples/two-bars/coulomb.yaml", "tests/cli/data/shallow-arch.yaml"]
+             "examples/two-bars/coulomb.yaml", "tests/cli/data/shallow-arch.yaml",
+             "examples/ring-foundation/ring.yaml"]
     rows = [(f"BM_Nonlinear/{c}", c) for c in cases]
     rows.append(("BM_ArcLength/tests/cli/data/shallow-arch.yaml", "shallow arch, arc-length"))
     for name, label in rows:
