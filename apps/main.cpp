@@ -124,9 +124,7 @@ int check_command(const std::string& file, const std::vector<std::string>& sets)
     else
       std::cout << "a rigid " << (spec.contact[k].obstacle.kind == model::ObstacleKind::plane ? "plane" : "circle");
     std::cout << ", penalty " << pair.penalty
-              << (spec.contact[k].friction.law.empty() || spec.contact[k].friction.law == "none"
-                      ? ""
-                      : ", friction " + spec.contact[k].friction.law)
+              << (spec.contact[k].friction.law == "none" ? "" : ", friction " + spec.contact[k].friction.law)
               << '\n';
   }
   return 0;

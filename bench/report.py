@@ -181,9 +181,14 @@ def solve_section(runs):
     if e15 and full15:
         ratios.append(f"| p = 15, full solve: share of 4 element stiffnesses (one thread) | "
                       f"{100 * 4 * e15['real_time'] / full15['real_time']:.0f} % |")
-    if ratios:
-        out += ["", "Ratios within this run:", "", "| ratio | value |", "|---|---:|"] + ratios
-    return out
+    return out + ratios_table(ratios)
+
+
+def ratios_table(ratios):
+    """The rows "| ratio | value |" under their heading, or nothing."""
+    if not ratios:
+        return []
+    return ["", "Ratios within this run:", "", "| ratio | value |", "|---|---:|"] + ratios
 
 
 def contact_section(runs):
@@ -226,9 +231,7 @@ def contact_section(runs):
         if tf and ta:
             ratios.append(f"| p = {p}: one FD tangent / one analytic tangent | "
                           f"{fmt_ratio(tf['real_time'], ta['real_time'])} |")
-    if ratios:
-        out += ["", "Ratios within this run:", "", "| ratio | value |", "|---|---:|"] + ratios
-    return out
+    return out + ratios_table(ratios)
 
 
 def adapt_section(runs):

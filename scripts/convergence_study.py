@@ -67,7 +67,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 from energy_extrapolation import (ExtrapolationError, extrapolate_energy, fit_beta,  # noqa: E402
                                   relative_energy_error)
-from hpc_run import csv_number, run_case  # noqa: E402
+from hpc_run import StudyError, check_labelled, csv_number, run_case  # noqa: E402
 
 HERTZ_MESH = os.path.join(ROOT, "scripts", "hertz_mesh.py")
 METHODS = ("h", "p", "rp", "hp")
@@ -86,10 +86,6 @@ CSV_COLUMNS = ["method", "mesh", "p", "dofs", "strain_energy", "energy_rel_perce
                "half_width", "in_fit", "reference_energy", "reference_energy_extrapolated",
                "reference_energy_pmax", "run_dir", "message"]
 MARKERS = {"h": "s", "p": "o", "rp": "^", "hp": "D"}
-
-
-class StudyError(Exception):
-    pass
 
 
 # --------------------------------------------------------------------------- study file
@@ -160,19 +156,9 @@ def load_study(path, quick):
     curves = data.get("curves")
     if not isinstance(curves, list) or not curves:
         raise StudyError(where("'curves' must be a non-empty list"))
-    labels = set()
+    check_labelled(curves, "curves", CURVE_KEYS, "each curve is a mapping", where)
     for i, c in enumerate(curves):
         at = lambda s: where(f"curves[{i}]: {s}")  # noqa: E731
-        if not isinstance(c, dict):
-            raise StudyError(at("each curve is a mapping"))
-        unknown = set(c) - CURVE_KEYS
-        if unknown:
-            raise StudyError(at(f"unknown key(s) {', '.join(sorted(unknown))}"))
-        if not isinstance(c.get("label"), str) or not c["label"]:
-            raise StudyError(at("'label' (a string) is required"))
-        if c["label"] in labels:
-            raise StudyError(at(f"label '{c['label']}' is used twice"))
-        labels.add(c["label"])
         if c.get("method") not in METHODS:
             raise StudyError(at(f"'method' must be one of {', '.join(METHODS)}"))
         seed = c.setdefault("seed", {})

@@ -1,9 +1,34 @@
 """What the study and plot scripts share: running `hpcontact run` on a case, and reading and
-writing the numbers it leaves behind. Standard library only."""
+writing the numbers it leaves behind. Standard library only, but for read_vtu (numpy)."""
 import csv
 import json
 import os
 import subprocess
+import xml.etree.ElementTree as ET
+
+
+class StudyError(Exception):
+    """A study file or a study's results that cannot be used; the message names the file."""
+
+
+def check_labelled(entries, key, allowed, mapping_hint, where):
+    """The entries of a study file's list `key` (runs, curves): each a mapping with keys among
+    `allowed` and a non-empty label used once. `where(text)` prefixes the file's name;
+    StudyError "<file>: <key>[i]: ..." otherwise."""
+    labels = set()
+    for i, entry in enumerate(entries):
+        def at(text, i=i):
+            return where(f"{key}[{i}]: {text}")
+        if not isinstance(entry, dict):
+            raise StudyError(at(mapping_hint))
+        unknown = set(entry) - allowed
+        if unknown:
+            raise StudyError(at(f"unknown key(s) {', '.join(sorted(unknown))}"))
+        if not isinstance(entry.get("label"), str) or not entry["label"]:
+            raise StudyError(at("'label' (a string) is required"))
+        if entry["label"] in labels:
+            raise StudyError(at(f"label '{entry['label']}' is used twice"))
+        labels.add(entry["label"])
 
 
 def run_case(hpcontact, case, out_dir, sets=(), vtu=False):
@@ -48,3 +73,37 @@ def read_columns(path):
                     value = v
                 cols.setdefault(k, []).append(value)
     return cols
+
+
+def read_vtu(path):
+    """An ASCII VTU file as hpcontact writes it (solution.vtu, contact.vtu): the point
+    coordinates (n x 2, reference configuration), the cells as arrays of point indices, the point
+    arrays {name: values} (vectors n x components) and the cell arrays {name: values}.
+    ValueError naming the file if it is not such a file."""
+    import numpy as np
+
+    def numbers(data_array, dtype=float):
+        return np.array((data_array.text or "").split(), dtype=dtype)
+
+    try:
+        piece = ET.parse(path).getroot().find("UnstructuredGrid/Piece")
+    except ET.ParseError as e:
+        raise ValueError(f"{path}: not an XML file ({e})")
+    if piece is None or piece.find("Points/DataArray") is None or piece.find("Cells") is None:
+        raise ValueError(f"{path}: no UnstructuredGrid/Piece with points and cells")
+    points = numbers(piece.find("Points/DataArray")).reshape(-1, 3)[:, :2]
+    cells_xml = {a.get("Name"): a for a in piece.find("Cells")}
+    connectivity = numbers(cells_xml["connectivity"], np.int64)
+    offsets = numbers(cells_xml["offsets"], np.int64)
+    cells = np.split(connectivity, offsets[:-1])
+
+    def arrays(section):
+        out = {}
+        for a in piece.find(section) if piece.find(section) is not None else []:
+            values = numbers(a)
+            k = int(a.get("NumberOfComponents", "1"))
+            out[a.get("Name")] = values.reshape(-1, k) if k > 1 else values
+        return out
+
+    return points, cells, arrays("PointData"), arrays("CellData")
+

@@ -15,7 +15,6 @@ Writes FILE.png (default: von_mises.png next to the .vtu, named after the field)
 """
 import argparse
 import os
-import re
 import sys
 from collections import Counter
 
@@ -26,12 +25,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.tri as mtri  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def array(text, name, path):
-    m = re.search(r'<DataArray[^>]*Name="%s"[^>]*>(.*?)</DataArray>' % re.escape(name), text, re.S)
-    if not m:
-        sys.exit(f"{path}: no DataArray '{name}'")
-    return np.array(m.group(1).split(), dtype=float)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from hpc_run import read_vtu  # noqa: E402
 
 
 def main(argv=None):
@@ -44,14 +39,19 @@ def main(argv=None):
     ap.add_argument("--ylim", type=float, nargs=2)
     ap.add_argument("--vmax", type=float)
     args = ap.parse_args(argv)
-    text = open(args.vtu).read()
-    m = re.search(r"<Points>\s*<DataArray[^>]*>(.*?)</DataArray>", text, re.S)
-    X = np.array(m.group(1).split(), dtype=float).reshape(-1, 3)[:, :2]
-    u = array(text, "displacement", args.vtu).reshape(-1, 3)[:, :2]
-    cells = array(text, "connectivity", args.vtu).astype(int).reshape(-1, 4)
-    element = array(text, "element", args.vtu).astype(int)
-    body = array(text, "body", args.vtu).astype(int)
-    values = array(text, args.field, args.vtu)
+    try:
+        X, cell_list, point_data, cell_data = read_vtu(args.vtu)
+    except (OSError, ValueError) as e:
+        sys.exit(str(e))
+    for name, data in ((args.field, point_data), ("displacement", point_data),
+                       ("element", cell_data), ("body", cell_data)):
+        if name not in data:
+            sys.exit(f"{args.vtu}: no DataArray '{name}'")
+    u = point_data["displacement"][:, :2]
+    cells = np.array(cell_list, dtype=int).reshape(-1, 4)
+    element = cell_data["element"].astype(int)
+    body = cell_data["body"].astype(int)
+    values = point_data[args.field]
 
     size = np.linalg.norm(X.max(axis=0) - X.min(axis=0))
     umax = np.abs(u).max()

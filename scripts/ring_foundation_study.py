@@ -12,7 +12,6 @@ contact zone ends [mm]) and DIR/path.png. Exit status 1 if the run fails.
 import argparse
 import csv
 import os
-import re
 import subprocess
 import sys
 
@@ -23,17 +22,11 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+from hpc_run import read_vtu  # noqa: E402
+
 CASE = os.path.join(ROOT, "examples", "ring-foundation", "ring.yaml")
 HALF_LOAD = 1035.0  # N on the half model (the case's traction resultant)
-
-
-def vtu_arrays(path):
-    text = open(path).read()
-    points = re.search(r"<Points>\s*<DataArray[^>]*>(.*?)</DataArray>", text, re.S).group(1)
-    out = {"X": np.array(points.split(), dtype=float).reshape(-1, 3)[:, :2]}
-    for m in re.finditer(r'<DataArray[^>]*Name="(\w+)"[^>]*>(.*?)</DataArray>', text, re.S):
-        out[m.group(1)] = np.array(m.group(2).split(), dtype=float)
-    return out
 
 
 def zone_ends(x, gap):
@@ -63,9 +56,9 @@ def main(argv=None):
         steps = list(csv.DictReader(f))
     rows = []
     for k, step in enumerate(steps, start=1):
-        c = vtu_arrays(os.path.join(run_dir, "steps", f"contact-{k:04d}.vtu"))
-        order = np.argsort(c["X"][:, 0])
-        x, gap = c["X"][order, 0], c["gap"][order]
+        X, _, c, _ = read_vtu(os.path.join(run_dir, "steps", f"contact-{k:04d}.vtu"))
+        order = np.argsort(X[:, 0])
+        x, gap = X[order, 0], c["gap"][order]
         ends = zone_ends(x, gap)
         rows.append({"load_N": 2 * HALF_LOAD * float(step["load_factor"]),
                      "top_displacement_mm": -float(step["monitor_uy"]),

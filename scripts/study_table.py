@@ -36,7 +36,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from hpc_run import csv_number, read_columns, run_case  # noqa: E402
+from hpc_run import StudyError, check_labelled, csv_number, read_columns, run_case  # noqa: E402
 RUN_KEYS = {"label", "case", "set", "seed"}
 SEED_KEYS = {"dofs", "time_s", "vs_hertz", "vs_shtayerman"}
 CONTACT_KEYS = ["e_seed_hertz_percent", "e_seed_shtayerman_percent", "e_seed_reference_percent",
@@ -47,10 +47,6 @@ PENALTY_KEYS = ["e_seed_hertz_percent", "e_seed_shtayerman_percent", "e_L2_refer
 CSV_COLUMNS = (["label", "case", "run_dir", "converged", "dofs", "wall_time_s", "rp_iterations"]
                + CONTACT_KEYS + ["penalty_" + k for k in PENALTY_KEYS]
                + ["seed_dofs", "seed_time_s", "seed_vs_hertz", "seed_vs_shtayerman"])
-
-
-class StudyError(Exception):
-    pass
 
 
 def load_study(path):
@@ -82,20 +78,11 @@ def load_study(path):
     if not isinstance(runs, list) or not runs:
         raise StudyError(where("'runs' must be a non-empty list"))
     folder = os.path.dirname(os.path.abspath(path))
-    labels = set()
+    check_labelled(runs, "runs", RUN_KEYS, "each run is a mapping with label, case, set, seed", where)
     for i, run in enumerate(runs):
         at = lambda s: where(f"runs[{i}]: {s}")  # noqa: E731
-        if not isinstance(run, dict):
-            raise StudyError(at("each run is a mapping with label, case, set, seed"))
-        unknown = set(run) - RUN_KEYS
-        if unknown:
-            raise StudyError(at(f"unknown key(s) {', '.join(sorted(unknown))}"))
-        for key in ("label", "case"):
-            if not isinstance(run.get(key), str) or not run[key]:
-                raise StudyError(at(f"'{key}' (a string) is required"))
-        if run["label"] in labels:
-            raise StudyError(at(f"label '{run['label']}' is used twice"))
-        labels.add(run["label"])
+        if not isinstance(run.get("case"), str) or not run["case"]:
+            raise StudyError(at("'case' (a string) is required"))
         run["case_path"] = os.path.normpath(os.path.join(folder, run["case"]))
         if not os.path.isfile(run["case_path"]):
             raise StudyError(at(f"case file {run['case_path']} does not exist"))

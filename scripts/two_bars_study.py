@@ -46,7 +46,6 @@ import math
 import os
 import pathlib
 import sys
-import xml.etree.ElementTree as ET
 
 import matplotlib
 import numpy as np
@@ -58,7 +57,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 SCRIPTS = pathlib.Path(__file__).resolve().parent
 ROOT = SCRIPTS.parent
 sys.path.insert(0, str(SCRIPTS))
-from hpc_run import csv_number, read_columns, run_case  # noqa: E402
+import hpc_run  # noqa: E402
+from hpc_run import StudyError, csv_number, read_columns, run_case  # noqa: E402
 
 EXAMPLES = ROOT / "examples" / "two-bars"
 # case -> (name of the body that holds the upper bar, element id of the upper bar)
@@ -80,10 +80,6 @@ EQ_515_NOTE = ("The seed's eq. 5.15 is garbled in print (its denominator lacks t
                "solution.vtu along y = 0 of the upper bar.")
 
 
-class StudyError(Exception):
-    """A run failed or its output cannot be compared."""
-
-
 def interval_label(interval):
     """(lo, hi) as the text '(lo, hi)'."""
     return f"({interval[0]:g}, {interval[1]:g})"
@@ -93,33 +89,12 @@ def interval_label(interval):
 # solution.vtu
 
 
-def _numbers(data_array, dtype=float):
-    """The values of an ASCII <DataArray> as a flat array."""
-    return np.array((data_array.text or "").split(), dtype=dtype)
-
-
 def read_vtu(path):
-    """An ASCII VTU file as written by hpcontact (src/hpcontact/post/vtu.cpp): the point
-    coordinates (n x 2, reference configuration), the cells as lists of point indices, the point
-    arrays {name: values} (vectors n x components) and the cell arrays {name: values}."""
-    piece = ET.parse(path).getroot().find("UnstructuredGrid/Piece")
-    if piece is None:
-        raise StudyError(f"{path}: no UnstructuredGrid/Piece")
-    points = _numbers(piece.find("Points/DataArray")).reshape(-1, 3)[:, :2]
-    cells_xml = {a.get("Name"): a for a in piece.find("Cells")}
-    connectivity = _numbers(cells_xml["connectivity"], np.int64)
-    offsets = _numbers(cells_xml["offsets"], np.int64)
-    cells = np.split(connectivity, offsets[:-1])
-
-    def arrays(section):
-        out = {}
-        for a in piece.find(section) if piece.find(section) is not None else []:
-            values = _numbers(a)
-            k = int(a.get("NumberOfComponents", "1"))
-            out[a.get("Name")] = values.reshape(-1, k) if k > 1 else values
-        return out
-
-    return points, cells, arrays("PointData"), arrays("CellData")
+    """hpc_run.read_vtu, its errors as StudyError."""
+    try:
+        return hpc_run.read_vtu(path)
+    except ValueError as e:
+        raise StudyError(str(e))
 
 
 def interface_strains(vtu_path, element_id, body_index,

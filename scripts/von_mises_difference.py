@@ -18,7 +18,6 @@ the largest distance is printed).
 """
 import argparse
 import os
-import re
 import sys
 
 import matplotlib
@@ -28,19 +27,19 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.tri as mtri  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def data_array(text, name, path):
-    m = re.search(r'<DataArray[^>]*Name="%s"[^>]*>(.*?)</DataArray>' % re.escape(name), text, re.S)
-    if not m:
-        raise SystemExit(f"{path}: no DataArray '{name}' (not a solution.vtu of hpcontact?)")
-    return np.array(m.group(1).split(), dtype=float)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from hpc_run import read_vtu  # noqa: E402
 
 
-def points(text, path):
-    m = re.search(r"<Points>\s*<DataArray[^>]*>(.*?)</DataArray>", text, re.S)
-    if not m:
-        raise SystemExit(f"{path}: no <Points>")
-    return np.array(m.group(1).split(), dtype=float).reshape(-1, 3)[:, :2]
+def read_solution(path):
+    """Points, cells and von Mises stress of a solution.vtu; SystemExit naming what is missing."""
+    try:
+        points, cells, point_data, _ = read_vtu(path)
+    except (OSError, ValueError) as e:
+        raise SystemExit(str(e))
+    if "von_mises" not in point_data:
+        raise SystemExit(f"{path}: no DataArray 'von_mises' (not a solution.vtu of hpcontact?)")
+    return points, cells, point_data["von_mises"]
 
 
 def main(argv=None):
@@ -53,11 +52,7 @@ def main(argv=None):
                     help="the stress the difference is relative to (default: 99.9th percentile "
                          "of B's von Mises stress)")
     args = ap.parse_args(argv)
-    texts = []
-    for path in (args.a, args.b):
-        with open(path) as f:
-            texts.append(f.read())
-    xa, xb = points(texts[0], args.a), points(texts[1], args.b)
+    (xa, _, va), (xb, cells, vb) = read_solution(args.a), read_solution(args.b)
     if xa.shape != xb.shape:
         print(f"{args.a}, {args.b}: different point counts ({len(xa)} and {len(xb)}): write both "
               "with the same mesh and output.vtu_subdivisions", file=sys.stderr)
@@ -68,28 +63,24 @@ def main(argv=None):
         print(f"{args.a}, {args.b}: the points differ by up to {mismatch:.3g} (model size "
               f"{size:.3g}): not the same mesh", file=sys.stderr)
         return 1
-    va, vb = data_array(texts[0], "von_mises", args.a), data_array(texts[1], "von_mises", args.b)
     scale = args.scale or float(np.percentile(vb, 99.9))
     diff = 100 * np.abs(va - vb) / scale
     os.makedirs(args.out, exist_ok=True)
     # The VTU: B with the difference added to its point data.
     field = ('<DataArray type="Float64" Name="von_mises_difference_percent" format="ascii">\n'
              + "\n".join(f"{v:.10g}" for v in diff) + "\n</DataArray>\n")
-    vtu = texts[1].replace("</PointData>", field + "</PointData>", 1)
+    with open(args.b) as f:
+        vtu = f.read().replace("</PointData>", field + "</PointData>", 1)
     vtu_path = os.path.join(args.out, "von-mises-difference.vtu")
     with open(vtu_path, "w") as f:
         f.write(vtu)
     # The PNG: the cells (quads) as two triangles each.
-    conn = data_array(texts[1], "connectivity", args.b).astype(int)
-    offsets = data_array(texts[1], "offsets", args.b).astype(int)
-    tris, start = [], 0
-    for end in offsets:
-        c = conn[start:end]
+    tris = []
+    for c in cells:
         if len(c) == 4:
             tris += [[c[0], c[1], c[2]], [c[0], c[2], c[3]]]
         elif len(c) == 3:
             tris.append(list(c))
-        start = end
     tri = mtri.Triangulation(xb[:, 0], xb[:, 1], tris)
     fig, ax = plt.subplots(figsize=(6.5, 6))
     im = ax.tripcolor(tri, np.minimum(diff, args.cap), shading="gouraud", cmap="jet",

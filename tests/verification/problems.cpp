@@ -66,6 +66,21 @@ model::ProblemSpec distorted_patch(int p) {
   return spec;
 }
 
+void hold_as_bar(model::BodySpec& b, double tx, double ty) {
+  model::ConstraintSpec left;
+  left.edge_sets = {"left"};
+  left.ux = "0";
+  model::ConstraintSpec pin;
+  pin.nodes = {1};
+  pin.uy = "0";
+  b.constraints = {left, pin};
+  model::EdgeLoadSpec load;
+  load.edge_sets = {"right"};
+  load.kind = model::LoadKind::traction;
+  load.value = {tx, ty};
+  b.edge_loads = {load};
+}
+
 model::ProblemSpec quarter_circle_2x2(int p) {
   const double R = 10.0;
   auto on_arc = [&](double alpha_deg) {

@@ -20,6 +20,11 @@ void add_edge_set(model::BodySpec& b, const std::string& name, std::vector<std::
 /// holds its 8 boundary edges; "left", "right", "bottom", "top" the sides.
 model::ProblemSpec distorted_patch(int p);
 
+/// The distorted patch's body held as a bar in tension: ux = 0 on "left", uy = 0 at node 1 (the
+/// minimal supports), and a constant traction (tx, ty) on "right"; replaces its constraints and
+/// loads.
+void hold_as_bar(model::BodySpec& b, double tx, double ty);
+
 /// Quarter of the Hertz cylinder (R = 10, centre (0, 10)): 2×2 elements, 9 nodes, exact arc,
 /// node A on the arc at x = 2.48. Edge sets "symmetry" (x = 0), "centre" (y = 10), "arc".
 /// ux = 0 on "symmetry", uy = -0.01 on "centre"; no contact (a linear problem).

@@ -61,19 +61,7 @@ TEST(PatchTest, DirichletConstantStressOnDistortedMesh) {
 TEST(PatchTest, NeumannUniformTensionOnDistortedMesh) {
   for (int p = 1; p <= 8; ++p) {
     auto spec = test_problems::distorted_patch(p);
-    auto& b = spec.bodies[0];
-    model::ConstraintSpec left;
-    left.edge_sets = {"left"};
-    left.ux = "0";
-    model::ConstraintSpec pin;
-    pin.nodes = {1};
-    pin.uy = "0";
-    b.constraints = {left, pin};
-    model::EdgeLoadSpec t;
-    t.edge_sets = {"right"};
-    t.kind = model::LoadKind::traction;
-    t.value = {150.0, 0.0};
-    b.edge_loads = {t};
+    test_problems::hold_as_bar(spec.bodies[0], 150.0, 0.0);
     model::Discretization d;
     const auto sol = solve_problem(spec, d);
     for (int q = 0; q < d.bodies[0].mesh.n_quads(); ++q)

@@ -42,7 +42,7 @@ std::string folder_name(int index, const std::string& label) {
 
 /// The run's error line (the last "hpcontact: error: ..." line, without that prefix), else the
 /// last non-empty line of its log ("" if none).
-std::string last_line(const fs::path& file) {
+std::string error_line(const fs::path& file) {
   const std::string prefix = "hpcontact: error: ";
   std::ifstream in(file);
   std::string line, last, error;
@@ -223,7 +223,7 @@ std::vector<StudyRowResult> run_study(const io::StudySpec& study, const StudyOpt
           if (row.summary.is_discarded()) row.summary = nullptr;
         }
         if (!row.converged()) {
-          row.message = last_line(log);
+          row.message = error_line(log);
           if (row.exit_code < 0) row.message = "killed by signal " + std::to_string(-row.exit_code) +
                                                (row.message.empty() ? "" : " after: " + row.message);
           if (row.message.empty()) row.message = "exit code " + std::to_string(row.exit_code);

@@ -604,18 +604,8 @@ std::string read_text_file(const std::string& path) {
 ReadResult parse_problem_full(const std::string& yaml_text, const std::string& file_label,
                               const std::vector<std::string>& overrides) {
   YamlSource source(file_label);
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(file_label + ":" + std::to_string(e.mark.line + 1) + ":" +
-                     std::to_string(e.mark.column + 1) +
-                     ": YAML syntax error: " + one_line(e.msg, 200));
-  }
-  if (!root.IsDefined() || root.IsNull()) throw InputError(file_label + ": empty problem file");
-  if (!root.IsMap())
-    throw InputError(file_label + ": must be a YAML map of sections (case:, bodies:, ...) (got " +
-                     quoted_value(root) + ")");
+  YAML::Node root = load_yaml_map(yaml_text, file_label, "problem file",
+                                  "a YAML map of sections (case:, bodies:, ...)");
   try {
     for (const std::string& o : overrides) apply_override(root, o, source);
     const std::vector<std::string> gmsh_notes = expand_gmsh_meshes(root, source);

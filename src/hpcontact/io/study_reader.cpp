@@ -165,17 +165,8 @@ class StudyBuilder {
 }  // namespace
 
 StudySpec parse_study(const std::string& text, const std::string& file_label) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(file_label + ":" + std::to_string(e.mark.line + 1) + ":" +
-                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + one_line(e.msg, 200));
-  }
-  if (!root.IsDefined() || root.IsNull()) throw InputError(file_label + ": empty study file");
-  if (!root.IsMap())
-    throw InputError(file_label + ": must be a YAML map (study:, runs: or sweep:, ...) (got " +
-                     quoted_value(root) + ")");
+  const YAML::Node root =
+      load_yaml_map(text, file_label, "study file", "a YAML map (study:, runs: or sweep:, ...)");
   try {
     return StudyBuilder(file_label).build(root);
   } catch (const YAML::Exception& e) {

@@ -59,6 +59,22 @@ void YamlSource::fail(const YAML::Node& node, const std::string& path,
   throw InputError(ref.str() + ": " + what);
 }
 
+YAML::Node load_yaml_map(const std::string& text, const std::string& file_label,
+                         const std::string& what, const std::string& expected) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file_label + ":" + std::to_string(e.mark.line + 1) + ":" +
+                     std::to_string(e.mark.column + 1) +
+                     ": YAML syntax error: " + one_line(e.msg, 200));
+  }
+  if (!root.IsDefined() || root.IsNull()) throw InputError(file_label + ": empty " + what);
+  if (!root.IsMap())
+    throw InputError(file_label + ": must be " + expected + " (got " + quoted_value(root) + ")");
+  return root;
+}
+
 std::string join_key(const std::string& parent, const std::string& key) {
   return parent.empty() ? key : parent + "." + key;
 }

@@ -48,6 +48,12 @@ class YamlSource {
   std::vector<std::pair<std::string, std::string>> generated_paths_;  // path, origin
 };
 
+/// The top-level map of an input file's text. InputError naming `file_label`:
+/// "<file>:<line>:<col>: YAML syntax error: ...", "<file>: empty <what>", or
+/// "<file>: must be <expected> (got ...)" when the text is not a map.
+YAML::Node load_yaml_map(const std::string& text, const std::string& file_label,
+                         const std::string& what, const std::string& expected);
+
 /// "a.b" from "a" and "b"; "b" when the parent path is empty (the top level).
 std::string join_key(const std::string& parent, const std::string& key);
 /// "a[3]".

@@ -296,7 +296,8 @@ private:
     for (size_t k = 0; k < pairs_.size(); ++k) {
       const ContactPair& pair = pairs_[k];
       PairForces f = pair_forces(d_, pair, u, t, frozen ? &(*frozen)[k] : nullptr);
-      for (const auto& s : f.states) points_in_contact_ += s.pressure > 0;
+      for (const auto* side : {&f.states, &f.other_states})
+        for (const auto& s : *side) points_in_contact_ += s.pressure > 0;
       R.segment(d_.bodies[pair.body].dof_offset, f.body.size()) -= f.body;
       if (pair.other >= 0) R.segment(d_.bodies[pair.other].dof_offset, f.other.size()) -= f.other;
       if (states) (*states)[k] = std::move(f.states);

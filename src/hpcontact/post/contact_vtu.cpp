@@ -2,10 +2,11 @@
 #include "hpcontact/post/contact_vtu.hpp"
 
 #include <fstream>
-#include <functional>
 #include <iomanip>
+#include <utility>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/post/vtk_grid.hpp"
 
 namespace hpcontact::post {
 
@@ -26,69 +27,35 @@ void write_contact_vtu(const std::string& path, const std::vector<model::Contact
                        const std::vector<model::ContactResult>& results) {
   HPC_REQUIRE(pairs.size() == results.size(), IoError, path, ": ", pairs.size(), " pairs but ",
               results.size(), " results");
-  std::size_t n_points = 0;
-  for (const auto& r : results) n_points += r.states.size();
-  std::ofstream out(path);
-  HPC_REQUIRE(out, IoError, path, ": cannot open for writing");
-  out << std::setprecision(12);
-  out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      << "<UnstructuredGrid>\n"
-      << "<Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\"" << pairs.size() << "\">\n";
-  // Visits every point: f(pair, index in the pair).
-  auto each = [&](const std::function<void(std::size_t, std::size_t)>& f) {
-    for (std::size_t k = 0; k < pairs.size(); ++k)
-      for (std::size_t i = 0; i < results[k].states.size(); ++i) f(k, i);
+  // Every point as (pair, index in the pair); one polyline per pair.
+  std::vector<std::pair<std::size_t, std::size_t>> at;
+  std::vector<Vec2> X;
+  std::vector<std::vector<int>> lines(pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k)
+    for (std::size_t i = 0; i < results[k].states.size(); ++i) {
+      lines[k].push_back(static_cast<int>(at.size()));
+      at.emplace_back(k, i);
+      X.push_back(pairs[k].points[i].X);
+    }
+  auto state = [&](std::size_t n) -> const contact::PointState& {
+    return results[at[n].first].states[at[n].second];
   };
-  out << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  each([&](std::size_t k, std::size_t i) {
-    const Vec2& X = pairs[k].points[i].X;
-    out << X.x() << ' ' << X.y() << " 0\n";
+  VtkGrid grid(path, X, lines, 4 /* VTK_POLY_LINE */, 12);
+  grid.begin_point_data("traction", "pressure");
+  grid.point_vector("displacement", [&](std::size_t n) { return Vec2(state(n).x - X[n]); });
+  grid.point_vector("traction", [&](std::size_t n) { return state(n).traction; });
+  grid.point_scalar("gap", [&](std::size_t n) { return state(n).gap; });
+  grid.point_scalar("pressure", [&](std::size_t n) { return state(n).pressure; });
+  grid.point_scalar("pressure_from_stress", [&](std::size_t n) {
+    const auto& sp = results[at[n].first].stress_pressure;
+    return at[n].second < sp.size() ? sp[at[n].second] : 0.0;
   });
-  out << "</DataArray>\n</Points>\n<Cells>\n"
-      << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  std::size_t next = 0;
-  for (const auto& r : results)
-    for (std::size_t i = 0; i < r.states.size(); ++i) out << next++ << (i + 1 < r.states.size() ? ' ' : '\n');
-  out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  next = 0;
-  for (const auto& r : results) out << (next += r.states.size()) << '\n';
-  out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (std::size_t k = 0; k < pairs.size(); ++k) out << "4\n";  // VTK_POLY_LINE
-  out << "</DataArray>\n</Cells>\n";
-
-  out << "<PointData Vectors=\"traction\" Scalars=\"pressure\">\n";
-  auto vector = [&](const char* name, const std::function<Vec2(std::size_t, std::size_t)>& v) {
-    out << "<DataArray type=\"Float64\" Name=\"" << name
-        << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    each([&](std::size_t k, std::size_t i) {
-      const Vec2 a = v(k, i);
-      out << a.x() << ' ' << a.y() << " 0\n";
-    });
-    out << "</DataArray>\n";
-  };
-  auto scalar = [&](const char* name, const char* type,
-                    const std::function<double(std::size_t, std::size_t)>& v) {
-    out << "<DataArray type=\"" << type << "\" Name=\"" << name << "\" format=\"ascii\">\n";
-    each([&](std::size_t k, std::size_t i) { out << v(k, i) << '\n'; });
-    out << "</DataArray>\n";
-  };
-  const auto& R = results;
-  vector("displacement", [&](auto k, auto i) { return Vec2(R[k].states[i].x - pairs[k].points[i].X); });
-  vector("traction", [&](auto k, auto i) { return R[k].states[i].traction; });
-  scalar("gap", "Float64", [&](auto k, auto i) { return R[k].states[i].gap; });
-  scalar("pressure", "Float64", [&](auto k, auto i) { return R[k].states[i].pressure; });
-  scalar("pressure_from_stress", "Float64", [&](auto k, auto i) {
-    return i < R[k].stress_pressure.size() ? R[k].stress_pressure[i] : 0.0;
-  });
-  scalar("tangential_traction", "Float64", [&](auto k, auto i) { return R[k].states[i].t_t; });
-  scalar("slip", "Float64", [&](auto k, auto i) { return R[k].states[i].slip; });
-  scalar("state", "Int32", [&](auto k, auto i) { return double(state_code(R[k].states[i])); });
-  out << "</PointData>\n<CellData Scalars=\"pair\">\n"
-      << "<DataArray type=\"Int32\" Name=\"pair\" format=\"ascii\">\n";
-  for (std::size_t k = 0; k < pairs.size(); ++k) out << k << '\n';
-  out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-  HPC_REQUIRE(out.good(), IoError, path, ": write failed");
+  grid.point_scalar("tangential_traction", [&](std::size_t n) { return state(n).t_t; });
+  grid.point_scalar("slip", [&](std::size_t n) { return state(n).slip; });
+  grid.point_scalar("state", [&](std::size_t n) { return state_code(state(n)); }, "Int32");
+  grid.begin_cell_data("pair");
+  grid.cell_scalar("pair", [](std::size_t k) { return static_cast<double>(k); });
+  grid.finish();
 }
 
 void write_pvd(const std::string& path, const std::vector<std::string>& files,

@@ -2,19 +2,17 @@
 #include "hpcontact/post/vtu.hpp"
 
 #include <algorithm>
-#include <fstream>
-#include <iomanip>
 #include <vector>
 
-#include "hpcontact/core/error.hpp"
 #include "hpcontact/post/fields.hpp"
+#include "hpcontact/post/vtk_grid.hpp"
 
 namespace hpcontact::post {
 
 void write_vtu(const std::string& path, const model::Discretization& d, const Eigen::VectorXd& u,
                int subdivisions) {
   std::vector<PointResult> points;
-  std::vector<std::array<int, 4>> cells;
+  std::vector<std::vector<int>> cells;
   std::vector<int> cell_body, cell_element, cell_degree;
   for (int b = 0; b < static_cast<int>(d.bodies.size()); ++b) {
     const auto& body = d.bodies[b];
@@ -35,34 +33,13 @@ void write_vtu(const std::string& path, const model::Discretization& d, const Ei
         }
     }
   }
-  std::ofstream out(path);
-  HPC_REQUIRE(out, IoError, path, ": cannot open for writing");
-  out << std::setprecision(10);
-  out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      << "<UnstructuredGrid>\n"
-      << "<Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\"" << cells.size()
-      << "\">\n";
-  out << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const auto& p : points) out << p.x.x() << ' ' << p.x.y() << " 0\n";
-  out << "</DataArray>\n</Points>\n";
-  out << "<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const auto& c : cells) out << c[0] << ' ' << c[1] << ' ' << c[2] << ' ' << c[3] << '\n';
-  out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for (size_t i = 0; i < cells.size(); ++i) out << 4 * (i + 1) << '\n';
-  out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (size_t i = 0; i < cells.size(); ++i) out << "9\n";  // VTK_QUAD
-  out << "</DataArray>\n</Cells>\n";
-
-  out << "<PointData Vectors=\"displacement\" Scalars=\"von_mises\">\n";
-  out << "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" "
-         "format=\"ascii\">\n";
-  for (const auto& p : points) out << p.u.x() << ' ' << p.u.y() << " 0\n";
-  out << "</DataArray>\n";
+  std::vector<Vec2> xs;
+  for (const auto& p : points) xs.push_back(p.x);
+  VtkGrid grid(path, xs, cells, 9 /* VTK_QUAD */, 10);
+  grid.begin_point_data("displacement", "von_mises");
+  grid.point_vector("displacement", [&](std::size_t i) { return points[i].u; });
   auto scalar = [&](const char* name, auto get) {
-    out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
-    for (const auto& p : points) out << get(p) << '\n';
-    out << "</DataArray>\n";
+    grid.point_scalar(name, [&](std::size_t i) { return get(points[i]); });
   };
   scalar("strain_xx", [](const PointResult& p) { return p.strain(0); });
   scalar("strain_yy", [](const PointResult& p) { return p.strain(1); });
@@ -74,17 +51,14 @@ void write_vtu(const std::string& path, const model::Discretization& d, const Ei
   scalar("von_mises", [](const PointResult& p) { return p.von_mises; });
   scalar("principal_1", [](const PointResult& p) { return p.principal_1; });
   scalar("principal_2", [](const PointResult& p) { return p.principal_2; });
-  out << "</PointData>\n<CellData>\n";
+  grid.begin_cell_data();
   auto cell_int = [&](const char* name, const std::vector<int>& v) {
-    out << "<DataArray type=\"Int32\" Name=\"" << name << "\" format=\"ascii\">\n";
-    for (int x : v) out << x << '\n';
-    out << "</DataArray>\n";
+    grid.cell_scalar(name, [&](std::size_t i) { return v[i]; });
   };
   cell_int("body", cell_body);
   cell_int("element", cell_element);
   cell_int("degree", cell_degree);
-  out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-  HPC_REQUIRE(out.good(), IoError, path, ": write failed");
+  grid.finish();
 }
 
 }  // namespace hpcontact::post

@@ -62,15 +62,19 @@ public:
 /// a free rigid-body motion gives round-off, ≤ 1e-13.
 constexpr double singular_pivot_ratio = 1e-11;
 
+/// The smallest pivot ratio seen, and its row.
 struct SmallestPivot {
   double ratio = std::numeric_limits<double>::infinity();
   int row = -1;
-  void take(int row_of_a, double pivot, double diagonal) {
-    const double r = diagonal > 0 ? pivot / diagonal : pivot;
+  void take(int row_of_a, double r) {
     if (!(r >= ratio)) {  // NaN pivots count as the smallest
       ratio = r;
       row = row_of_a;
     }
+  }
+  /// A symmetric factor's pivot against the matrix's diagonal entry of its row.
+  void take(int row_of_a, double pivot, double diagonal) {
+    take(row_of_a, diagonal > 0 ? pivot / diagonal : pivot);
   }
 };
 
@@ -123,10 +127,10 @@ LinearSolver& LinearSolver::operator=(LinearSolver&&) noexcept = default;
 void LinearSolver::factorize(const SparseMatrix& A) {
   bool ok;
   SmallestPivot smallest;
-  const Eigen::VectorXd diagonal = A.diagonal();
   if (kind_ == LinearSolverKind::cholmod) {
     impl_->cholmod.compute(A);
     ok = impl_->cholmod.info() == Eigen::Success;
+    const Eigen::VectorXd diagonal = ok ? Eigen::VectorXd(A.diagonal()) : Eigen::VectorXd();
     if (ok)
       impl_->cholmod.for_each_pivot(
           [&](int row, double pivot) { smallest.take(row, pivot, diagonal(row)); });
@@ -136,6 +140,7 @@ void LinearSolver::factorize(const SparseMatrix& A) {
     impl_->ldlt.compute(A);
     ok = impl_->ldlt.info() == Eigen::Success;
     if (ok) {
+      const Eigen::VectorXd diagonal = A.diagonal();
       const auto& D = impl_->ldlt.vectorD();
       const auto& P = impl_->ldlt.permutationPinv();  // column k of the factor eliminates row P(k)
       for (Eigen::Index k = 0; k < D.size(); ++k) {
@@ -147,7 +152,7 @@ void LinearSolver::factorize(const SparseMatrix& A) {
     impl_->lu.compute(A);
     ok = impl_->lu.info() == Eigen::Success;
     if (ok)
-      impl_->lu.for_each_pivot(A, [&](int column, double ratio) { smallest.take(column, ratio, 1.0); });
+      impl_->lu.for_each_pivot(A, [&](int column, double ratio) { smallest.take(column, ratio); });
   }
   last_singular_row_ = -1;
   if (ok && smallest.ratio > singular_pivot_ratio) return;
@@ -155,8 +160,8 @@ void LinearSolver::factorize(const SparseMatrix& A) {
   std::ostringstream os;
   os << "the stiffness matrix is singular or not positive definite";
   if (ok)
-    os << " (pivot of equation " << smallest.row << ": " << smallest.ratio
-       << " of its diagonal entry)";
+    os << " (pivot of equation " << smallest.row << ": " << smallest.ratio << " of its "
+       << (kind_ == LinearSolverKind::lu ? "column's largest entry)" : "diagonal entry)");
   else if (smallest.row >= 0)
     os << " (at equation " << smallest.row << ")";
   os << ": a body is not constrained against rigid-body motion, or an element is degenerate";

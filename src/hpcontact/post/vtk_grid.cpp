@@ -1,0 +1,76 @@
+// The XML skeleton of an ASCII .vtu file: header, points, cells, data arrays, footer.
+#include "hpcontact/post/vtk_grid.hpp"
+
+#include <iomanip>
+
+#include "hpcontact/core/error.hpp"
+
+namespace hpcontact::post {
+
+VtkGrid::VtkGrid(const std::string& path, const std::vector<Vec2>& points,
+                 const std::vector<std::vector<int>>& cells, int vtk_cell_type, int precision)
+    : path_(path), out_(path), n_points_(points.size()), n_cells_(cells.size()) {
+  HPC_REQUIRE(out_, IoError, path, ": cannot open for writing");
+  out_ << std::setprecision(precision);
+  out_ << "<?xml version=\"1.0\"?>\n"
+       << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+       << "<UnstructuredGrid>\n"
+       << "<Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\"" << cells.size()
+       << "\">\n";
+  out_ << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (const Vec2& x : points) out_ << x.x() << ' ' << x.y() << " 0\n";
+  out_ << "</DataArray>\n</Points>\n";
+  out_ << "<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (const auto& c : cells) {
+    for (std::size_t i = 0; i < c.size(); ++i) out_ << c[i] << (i + 1 < c.size() ? ' ' : '\n');
+  }
+  out_ << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  std::size_t offset = 0;
+  for (const auto& c : cells) out_ << (offset += c.size()) << '\n';
+  out_ << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < cells.size(); ++i) out_ << vtk_cell_type << '\n';
+  out_ << "</DataArray>\n</Cells>\n";
+}
+
+void VtkGrid::begin_point_data(const std::string& vectors, const std::string& scalars) {
+  out_ << "<PointData Vectors=\"" << vectors << "\" Scalars=\"" << scalars << "\">\n";
+}
+
+void VtkGrid::point_vector(const std::string& name, const std::function<Vec2(std::size_t)>& value) {
+  out_ << "<DataArray type=\"Float64\" Name=\"" << name
+       << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < n_points_; ++i) {
+    const Vec2 v = value(i);
+    out_ << v.x() << ' ' << v.y() << " 0\n";
+  }
+  out_ << "</DataArray>\n";
+}
+
+void VtkGrid::point_scalar(const std::string& name, const std::function<double(std::size_t)>& value,
+                           const std::string& type) {
+  array(name, type, n_points_, value);
+}
+
+void VtkGrid::begin_cell_data(const std::string& scalars) {
+  out_ << "</PointData>\n";
+  out_ << (scalars.empty() ? std::string("<CellData>\n") : "<CellData Scalars=\"" + scalars + "\">\n");
+}
+
+void VtkGrid::cell_scalar(const std::string& name, const std::function<double(std::size_t)>& value,
+                          const std::string& type) {
+  array(name, type, n_cells_, value);
+}
+
+void VtkGrid::finish() {
+  out_ << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  HPC_REQUIRE(out_.good(), IoError, path_, ": write failed");
+}
+
+void VtkGrid::array(const std::string& name, const std::string& type, std::size_t n,
+                    const std::function<double(std::size_t)>& value) {
+  out_ << "<DataArray type=\"" << type << "\" Name=\"" << name << "\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < n; ++i) out_ << value(i) << '\n';
+  out_ << "</DataArray>\n";
+}
+
+}  // namespace hpcontact::post
