@@ -212,7 +212,6 @@ public:
     for (const auto& pair : pairs_)
       if (pair.moving) pair.moving->set_load_factor(displacements);
   }
-  void set_load_factor(double lambda) { set_factors(lambda, lambda); }
 
   /// After a converged load step at x: the friction histories take its anchors and slips.
   void commit(const Eigen::VectorXd& x) const {
