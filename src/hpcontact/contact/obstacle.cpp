@@ -1,4 +1,4 @@
-// Gap functions of the rigid plane and circle.
+// Gap functions of the rigid plane, circle and curve.
 #include "hpcontact/contact/obstacle.hpp"
 
 #include <sstream>
@@ -44,6 +44,34 @@ std::string RigidCircle::describe() const {
   std::ostringstream os;
   os << (inside_ ? "hole" : "disc") << "(center=(" << c_.x() << "," << c_.y() << "), radius=" << r_
      << ")";
+  return os.str();
+}
+
+RigidCurve::RigidCurve(std::vector<Vec2> points) : spline_(std::move(points)) {}
+
+double RigidCurve::gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const {
+  const double t = spline_.closest_parameter(x);
+  const Vec2 foot = spline_.point(t), d = spline_.derivative(t), dd = spline_.second_derivative(t);
+  const double speed = d.norm();
+  const Vec2 e = d / speed;
+  const Vec2 n(-e.y(), e.x());
+  if (normal) *normal = n;
+  if (dnormal_dx) {
+    // The foot moves with x as dt/dx = x' / (|x'|² + (x(t) − x)·x'') (from (x(t) − x)·x' = 0),
+    // and the normal turns with t as dn/dt = R (x'' − (x''·e) e) / |x'| (R: +90°).
+    const double stiffness = d.squaredNorm() + (foot - x).dot(dd);
+    const Vec2 de = (dd - dd.dot(e) * e) / speed;
+    const Vec2 dn(-de.y(), de.x());
+    *dnormal_dx = stiffness > 0 ? Mat2(dn * d.transpose() / stiffness) : Mat2::Zero();
+  }
+  return (x - foot).dot(n);
+}
+
+std::string RigidCurve::describe() const {
+  const auto& p = spline_.points();
+  std::ostringstream os;
+  os << "curve(" << p.size() << " points from (" << p.front().x() << "," << p.front().y()
+     << ") to (" << p.back().x() << "," << p.back().y() << "))";
   return os.str();
 }
 

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "hpcontact/geometry/cubic_spline.hpp"
 #include "hpcontact/geometry/vec2.hpp"
 
 namespace hpcontact::contact {
@@ -62,6 +63,21 @@ private:
   Vec2 c_;
   double r_;
   bool inside_;
+};
+
+/// A rigid obstacle bounded by a smooth curve through given points (geometry::CubicSpline: the
+/// natural cubic spline, straight beyond its ends). The body lies to the left of the curve
+/// walking from its first point to its last, the side its normal (−x'_y, x'_x)/|x'| points to.
+/// The gap is the signed distance to the closest point of the curve.
+class RigidCurve final : public Obstacle {
+public:
+  explicit RigidCurve(std::vector<Vec2> points);
+  double gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const override;
+  std::string describe() const override;
+  const geometry::CubicSpline& spline() const { return spline_; }
+
+private:
+  geometry::CubicSpline spline_;
 };
 
 }  // namespace hpcontact::contact

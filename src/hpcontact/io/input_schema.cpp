@@ -322,17 +322,20 @@ const std::vector<KeySpec>& input_schema() {
               "absent: none."},
 
       {.path = "contact[].obstacle.type", .type = T::choice, .required = true,
-       .doc = "plane: a straight line; circle: a disc (or a hole with inside); body: another "
-              "deformable body (bilateral contact: the points of both sides are evaluated, each "
-              "with half weight, and the penalty acts on the gap between the bodies).",
-       .choices = {"plane", "circle", "body"}},
+       .doc = "plane: a straight line; circle: a disc (or a hole with inside); curve: a smooth "
+              "curve through points; body: another deformable body (bilateral contact: the "
+              "points of both sides are evaluated, each with half weight, and the penalty acts "
+              "on the gap between the bodies).",
+       .choices = {"plane", "circle", "curve", "body"}},
       {.path = "contact[].obstacle.body", .type = T::string,
        .doc = "body: name of the other body; required if and only if type is body."},
       {.path = "contact[].obstacle.edges", .type = T::string_list,
        .doc = "body: names of the other body's edge sets that may come into contact.",
        .min_items = 1},
       {.path = "contact[].obstacle.point", .type = T::point, .default_yaml = "[0, 0]",
-       .unit = "length", .doc = "plane: a point of the line, [x, y]."},
+       .unit = "length",
+       .doc = "plane: a point of the line, [x, y]; curve: the origin of positions along it (half "
+              "width, pressure curves), which are measured along its chord."},
       {.path = "contact[].obstacle.normal", .type = T::point, .default_yaml = "[0, 1]",
        .doc = "plane: normal pointing away from the obstacle towards the body, [nx, ny], non-zero "
               "(normalised when read)."},
@@ -340,11 +343,18 @@ const std::vector<KeySpec>& input_schema() {
        .unit = "length", .doc = "circle: centre, [x, y]."},
       {.path = "contact[].obstacle.radius", .type = T::number, .unit = "length",
        .doc = "circle: radius; required if and only if type is circle.", .lower = greater_than(0)},
+      {.path = "contact[].obstacle.points", .type = T::point_list, .unit = "length",
+       .doc = "curve: the points the obstacle's boundary passes through, in order, [[x, y], ...]; "
+              "required if and only if type is curve. The boundary is the natural cubic spline "
+              "through them (chord-length parameter; two points: a straight line), continued "
+              "straight along its end tangents; the body lies to its left walking from the first "
+              "point to the last. The gap is the signed distance to the closest point of the "
+              "curve.", .min_items = 2},
       {.path = "contact[].obstacle.inside", .type = T::boolean, .default_yaml = "false",
        .doc = "circle: false: the body stays outside the circle; true: inside it."},
       {.path = "contact[].obstacle.displacement", .type = T::point, .default_yaml = "[0, 0]",
        .unit = "length",
-       .doc = "plane, circle: rigid displacement of the obstacle, [dx, dy], applied with the load "
+       .doc = "plane, circle, curve: rigid displacement of the obstacle, [dx, dy], applied with the load "
               "factor like the prescribed displacements (a displacement-driven indenter)."},
 
       {.path = "exact", .type = T::section,
@@ -519,6 +529,7 @@ std::string describe_type(const KeySpec& key) {
     case T::degree: return with_bounds("integer or [p_xi, p_eta], each", key);
     case T::scalar_text: return "number or formula";
     case T::string_list: return "list of names";
+    case T::point_list: return "list of [x, y], at least " + std::to_string(key.min_items);
     case T::integer_list: return "list of integers";
     case T::node_table: return "map: node id -> [x, y]";
     case T::element_table: return "map: element id -> [n1, n2, n3, n4]";

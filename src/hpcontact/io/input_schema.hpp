@@ -23,6 +23,7 @@ enum class ValueType {
   degree,          ///< p or [p_xi, p_eta], integers; bounds apply to each
   scalar_text,     ///< a number or an expression, kept verbatim as text
   string_list,     ///< a list of scalars
+  point_list,      ///< a list of [x, y]
   integer_list,    ///< a list of whole numbers
   node_table,      ///< a map node id -> [x, y]
   element_table,   ///< a map element id -> [n1, n2, n3, n4]

@@ -490,8 +490,9 @@ class SpecBuilder {
     ObstacleSpec o;
     const std::string type = node["type"].Scalar();
     o.kind = type == "circle" ? ObstacleKind::circle
-             : type == "body" ? ObstacleKind::body
-                              : ObstacleKind::plane;
+             : type == "curve" ? ObstacleKind::curve
+             : type == "body"  ? ObstacleKind::body
+                               : ObstacleKind::plane;
     for (const char* key : {"body", "edges"}) {
       if (o.kind == ObstacleKind::body && !node[key])
         source_.fail(node, path, std::string("missing key '") + key + "' (required by type: body)");
@@ -522,7 +523,7 @@ class SpecBuilder {
     if (o.kind == ObstacleKind::body && (o.displacement[0] != 0 || o.displacement[1] != 0))
       source_.fail(node["displacement"], path + ".displacement",
                    "a body obstacle moves with its own constraints; displacement is for rigid "
-                   "obstacles (type: plane or circle)");
+                   "obstacles (type: plane, circle or curve)");
     const bool is_circle = o.kind == ObstacleKind::circle;
     if (is_circle && !node["radius"])
       source_.fail(node, path, "missing key 'radius' (required by type: circle)");
@@ -531,6 +532,21 @@ class SpecBuilder {
                    "only allowed with type: circle (got type: " + node["type"].Scalar() + ")");
     if (is_circle) o.radius = number(node["radius"]);
     o.inside = boolean(node["inside"]);
+    const bool is_curve = o.kind == ObstacleKind::curve;
+    if (is_curve && !node["points"])
+      source_.fail(node, path, "missing key 'points' (required by type: curve)");
+    if (!is_curve && node["points"])
+      source_.fail(node["points"], path + ".points",
+                   "only allowed with type: curve (got type: " + type + ")");
+    if (is_curve) {
+      const YAML::Node& points = node["points"];
+      for (std::size_t i = 0; i < points.size(); ++i) o.points.push_back(point(points[i]));
+      for (std::size_t i = 1; i < o.points.size(); ++i)
+        if (o.points[i] == o.points[i - 1])
+          source_.fail(points[i], path + ".points[" + std::to_string(i) + "]",
+                       "repeats the point before it (" + shown_value(points[i]) +
+                           "): consecutive points of a curve must differ");
+    }
     return o;
   }
 

@@ -95,6 +95,11 @@ class SchemaChecker {
             source_.fail(node[i], join_index(path, i),
                          "must be a name (got " + shown_value(node[i]) + ")");
         return;
+      case T::point_list:
+        require_list(node, key, path, "a list of [x, y] points");
+        for (std::size_t i = 0; i < node.size(); ++i)
+          check_pair(node[i], join_index(path, i), false, "[x, y]");
+        return;
       case T::integer_list:
         require_list(node, key, path, "a list of integers");
         for (std::size_t i = 0; i < node.size(); ++i)

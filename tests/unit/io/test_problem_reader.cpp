@@ -492,6 +492,28 @@ TEST(ProblemReader, ChecksObstacle) {
               {"contact[0].quadrature: must be <= 200 (got 201)"});
 }
 
+// A rigid curve is read with its points in order; it needs at least two, each [x, y], no two
+// consecutive ones equal, and points belong to no other type.
+TEST(ProblemReader, ReadsAndChecksCurveObstacle) {
+  const std::string text = square + "contact:\n  - {body: block, edges: [bottom], penalty: 1, "
+                                    "obstacle: {type: plane}}\n";
+  const hm::ProblemSpec spec =
+      hio::parse_problem(with(text, "type: plane", "type: curve, points: [[-1, -0.5], [0.5, -0.6], [2, -0.5]]"), label);
+  EXPECT_EQ(spec.contact[0].obstacle.kind, hm::ObstacleKind::curve);
+  EXPECT_EQ(spec.contact[0].obstacle.points,
+            (std::vector<std::array<double, 2>>{{-1, -0.5}, {0.5, -0.6}, {2, -0.5}}));
+  input_error(with(text, "type: plane", "type: curve"),
+              {"case.yaml:20:", "contact[0].obstacle: missing key 'points' (required by type: curve)"});
+  input_error(with(text, "type: plane", "type: curve, points: [[0, -1]]"),
+              {"contact[0].obstacle.points: must have at least 2 entries"});
+  input_error(with(text, "type: plane", "type: curve, points: [[0, -1], [1]]"),
+              {"contact[0].obstacle.points[1]: must be [x, y]"});
+  input_error(with(text, "type: plane", "type: curve, points: [[0, -1], [1, -1], [1, -1]]"),
+              {"contact[0].obstacle.points[2]: repeats the point before it ([1, -1])"});
+  input_error(with(text, "type: plane", "type: plane, points: [[0, -1], [1, -1]]"),
+              {"contact[0].obstacle.points: only allowed with type: curve (got type: plane)"});
+}
+
 // The solver's Newton settings and load control by force shall be read, component y as 1.
 TEST(ProblemReader, ReadsSolverSettingsAndTargetResultant) {
   const hm::ProblemSpec spec = hio::parse_problem(
