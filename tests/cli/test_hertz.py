@@ -91,6 +91,27 @@ def test_bilateral_equals_unilateral(hpcontact, root, tmp_path):
     assert abs(bil["contact"]["resultant"][1] - 35000) < 35
 
 
+def test_bilateral_rp_moves_a_node_of_each_body_and_equals_rp8(hpcontact, root, tmp_path):
+    """rp between two bodies (bilateral-rp.yaml): the zone end on each body gets its own node
+    (node 2 of the upper and of the lower cylinder), the two ends are mirror images, and the
+    result equals the unilateral rp8.yaml: zone end within 1e-6 mm (measured 3.8e-7), pressure
+    from stresses within 1e-4 of p0 (measured 6e-6; the meshes differ by the 1e-8 tolerance)."""
+    uni = run(hpcontact, root, "rp8.yaml", tmp_path / "uni")
+    bil = run(hpcontact, root, "bilateral-rp.yaml", tmp_path / "bil")
+    assert bil["converged"] and bil["adapt"]["converged"]
+    last = bil["adapt"]["history"][-1]["nodes"]
+    assert sorted((n["body"], n["node"]) for n in last) == [(0, 2), (1, 2)]
+    upper, lower = bil["contact"]["gamma_star"], bil["contact"]["gamma_star_other"]
+    assert len(upper) == len(lower) == 1
+    assert abs(upper[0][0] - lower[0][0]) < 1e-7 and abs(upper[0][1] + lower[0][1]) < 1e-7
+    assert abs(upper[0][0] - uni["contact"]["gamma_star"][0][0]) < 1e-6
+    _, pu = read_curve(tmp_path / "uni" / "pressure.csv")
+    _, pb = read_curve(tmp_path / "bil" / "pressure.csv")
+    p0 = uni["contact"]["hertz_peak_pressure"]
+    assert len(pu) == len(pb)
+    assert max(abs(a - b) for a, b in zip(pu, pb)) < 1e-4 * p0
+
+
 def test_obstacle_the_body_starts_inside_is_refused(hpcontact, root, tmp_path):
     """A plane whose normal points away from the body (the body starts inside the obstacle) is
     an input error naming the key and the cause, before any solving; no summary is written."""

@@ -26,9 +26,13 @@ SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progres
 
 std::vector<ZoneEnd> outer_zone_ends(const Solved& s) {
   std::vector<ZoneEnd> ends;
-  for (size_t k = 0; k < s.solution.contact.size(); ++k)
-    for (int i : s.solution.contact[k].outer_ends)
-      ends.push_back({s.solution.pairs[k].body, s.solution.contact[k].gamma_star[i]});
+  for (size_t k = 0; k < s.solution.contact.size(); ++k) {
+    const auto& c = s.solution.contact[k];
+    for (int i : c.outer_ends) ends.push_back({s.solution.pairs[k].body, c.gamma_star[i]});
+    // Against another body, the zone ends on its boundary too (seed §5.2.3: both bodies).
+    for (int i : c.other_zone_ends.outer)
+      ends.push_back({s.solution.pairs[k].other, c.other_zone_ends.X[i]});
+  }
   HPC_REQUIRE(!ends.empty(), AdaptError, s.spec.file, ": no end of a contact zone found (no "
               "contact, or every contact point is closed); there is no Γ* to adapt the mesh to");
   return ends;
@@ -64,8 +68,9 @@ std::vector<NodeForEnd> nearest_movable_nodes(const Solved& s, const std::vector
     std::optional<BoundaryTrack> choice;
     std::string reasons;
     for (size_t k = 0; k < s.solution.pairs.size(); ++k) {
-      if (s.solution.pairs[k].body != end.body) continue;
-      for (int e : s.solution.pairs[k].edges)
+      const auto& pair = s.solution.pairs[k];
+      if (pair.body != end.body && pair.other != end.body) continue;
+      for (int e : pair.body == end.body ? pair.edges : pair.other_edges)
         for (int v : {body->mesh.edge(e).v0, body->mesh.edge(e).v1}) {
           const double dist = (body->mesh.node(v) - end.X).norm();
           if (dist >= best) continue;

@@ -134,6 +134,7 @@ nlohmann::json contact_json(const SolvedState& st, const PressureComparison* com
   cj["half_width"] = c.half_width;
   cj["gamma_star"] = points_json(c.gamma_star);
   cj["gamma_star_deformed"] = points_json(c.gamma_star_deformed);
+  if (st.pairs.front().other >= 0) cj["gamma_star_other"] = points_json(c.other_zone_ends.X);
   cj["p_max"] = c.p_max;
   cj["resultant"] = {c.resultant.x(), c.resultant.y()};
   cj["max_penetration"] = c.max_penetration;

@@ -234,7 +234,9 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "solver.line_search", .type = T::choice, .default_yaml = "auto",
        .doc = "Backtracking line search on the residual norm (a Newton correction that does not "
               "reduce |R| is halved, up to 10 times): auto = on with friction (its stick/slip "
-              "switches make plain Newton cycle with a large tangential penalty), on, off.",
+              "switches make plain Newton cycle with a large tangential penalty) and with contact "
+              "between two bodies (large trial corrections project points onto far parts of the "
+              "other boundary), on, off.",
        .choices = {"auto", "on", "off"}},
       {.path = "solver.control", .type = T::choice, .default_yaml = "load",
        .doc = "load: load steps with prescribed factors (Newton in each, cut and regrown). "

@@ -30,6 +30,7 @@ struct ContactPair {
   std::shared_ptr<contact::DisplacedObstacle> moving;
   int other = -1;  ///< the other body of a bilateral pair, -1 against a rigid obstacle
   std::vector<contact::ContactPoint> other_points;
+  std::vector<int> other_edges;  ///< the other body's contact edges (mesh edges)
   std::shared_ptr<const contact::DeformableBoundary> boundary, other_boundary;
   double penalty = 0;
   contact::FrictionLaw friction;
@@ -52,6 +53,14 @@ struct ContactPair {
 /// Contact pairs of a problem; InputError naming the key when a pair is wrong.
 std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discretization& d);
 
+/// Ends of the contact zone along one body's contact boundary (Pegasus on the gap between the
+/// contact points where it changes sign, seed §4.7).
+struct ZoneEnds {
+  std::vector<Vec2> X;     ///< undeformed
+  std::vector<Vec2> x;     ///< deformed
+  std::vector<int> outer;  ///< indices of the outer ends of the active region (see ContactResult)
+};
+
 /// State of the contact after a solve: per pair, its points' states and derived figures.
 struct ContactResult {
   std::vector<contact::PointState> states;  ///< per contact point of the pair
@@ -70,6 +79,9 @@ struct ContactResult {
   /// the penalty traction's oscillation produces on coarse discretisations.
   std::vector<int> outer_ends;
   double half_width = 0;  ///< largest |(Γ* - reference point)·tangent|, Γ* undeformed
+  /// Against another body: the states of its points and the zone ends on its boundary.
+  std::vector<contact::PointState> other_states;
+  ZoneEnds other_zone_ends;
 };
 
 struct NonlinearSolution {
