@@ -1,8 +1,12 @@
 // The Hertz contact problem: whole solves with the analytic tangent and with the seed's
-// finite-difference tangent (eq. 3.36), and one tangent evaluation of each at the solution.
+// finite-difference tangent (eq. 3.36), one tangent evaluation of each at the solution; the
+// examples end to end as `hpcontact run` does them (read, solve, write every file).
 #include <benchmark/benchmark.h>
 
+#include <filesystem>
 #include <string>
+
+#include "hpcontact/driver/run.hpp"
 
 #include "hpcontact/io/problem_reader.hpp"
 #include "hpcontact/model/contact_solve.hpp"
@@ -65,6 +69,35 @@ BENCHMARK(BM_HertzTangent)
     ->Args({8, 0})
     ->Args({8, 1})
     ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// End to end as `hpcontact run` does it, files included: read the YAML, discretise, solve
+// (force control), post-process, write summary.json, contact.csv, pressure.csv, solution.vtu and
+// input.yaml into a temporary folder. range(0) indexes kEndToEnd.
+const char* kEndToEnd[] = {"hertz/p15.yaml", "hertz/bilateral.yaml", "curve-obstacle/crowned-rail.yaml"};
+
+void BM_ExampleEndToEnd(benchmark::State& state) {
+  const std::string path = std::string(HPC_SOURCE_DIR) + "/examples/" + kEndToEnd[state.range(0)];
+  const auto out = std::filesystem::temp_directory_path() / "hpcontact-bench-end-to-end";
+  int n_free = 0, iterations = 0;
+  for (auto _ : state) {
+    const auto read = io::read_problem_full(path, {});
+    driver::RunOptions options;
+    options.out_dir = out.string();
+    options.effective_input = read.effective_yaml;
+    const auto r = driver::run_problem(read.spec, options);
+    n_free = r.discretization.n_free;
+    iterations = r.summary.newton_iterations;
+  }
+  std::filesystem::remove_all(out);
+  state.counters["dofs"] = n_free;
+  state.counters["newton_iterations"] = iterations;
+}
+BENCHMARK(BM_ExampleEndToEnd)
+    ->ArgName("example")
+    ->DenseRange(0, 2)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
     ->UseRealTime();
 
 }  // namespace

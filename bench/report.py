@@ -231,7 +231,21 @@ def contact_section(runs):
         if tf and ta:
             ratios.append(f"| p = {p}: one FD tangent / one analytic tangent | "
                           f"{fmt_ratio(tf['real_time'], ta['real_time'])} |")
-    return out + ratios_table(ratios)
+    out += ratios_table(ratios)
+    out += ["", "### Examples end to end", "",
+            "As `hpcontact run` does them: read the YAML, discretise, solve (force control), post-process",
+            "and write every file (summary.json, contact.csv, pressure.csv, solution.vtu, input.yaml) into a",
+            "temporary folder. The time a user waits, less process start-up.", "",
+            "| example | dofs | Newton iterations | time | CPU | spread |", "|---|---:|---:|---:|---:|---:|"]
+    examples = ["examples/hertz/p15.yaml", "examples/hertz/bilateral.yaml",
+                "examples/curve-obstacle/crowned-rail.yaml (rp loop)"]
+    for k, label in enumerate(examples):
+        name = f"BM_ExampleEndToEnd/example:{k}"
+        b = central(runs, name)
+        if b:
+            out.append(f"| {label} | {int(b['dofs'])} | {int(b['newton_iterations'])} | "
+                       f"{fmt_time(b['real_time'])} | {fmt_time(b['cpu_time'])} | {spread(runs, name)} |")
+    return out
 
 
 def adapt_section(runs):
