@@ -113,3 +113,31 @@ def test_rp_needs_contact(hpcontact, root, tmp_path):
                   tmp_path / "o", "--set", "adapt.method=rp")
     assert r.returncode != 0
     assert "adapt.method" in r.stderr and "no contact" in r.stderr
+
+
+@pytest.mark.parametrize("example", ["rp5.yaml", "hp.yaml"])
+def test_no_node_that_can_move_keeps_the_first_solve(hpcontact, root, tmp_path, example):
+    """Edge 2-3 made straight: every node of the contact edges sits where the boundary changes
+    from the circle to a straight edge (or at a corner), so no node can slide onto Γ*. The loop
+    says which nodes and why, exits 1, writes no summary.json in the output folder, and keeps
+    the first (successful) solve in last-good/ marked as not converged."""
+    text = open(os.path.join(root, HERTZ, example)).read()
+    straight = "      - {nodes: [2, 3], arc: {center: [0, 10], radius: 10}}\n"
+    assert straight in text
+    text = text.replace(straight, "").replace(
+        "reference: reference-pressure.csv",
+        "reference: " + os.path.join(root, HERTZ, "reference-pressure.csv"))
+    path = tmp_path / "straight.yaml"
+    path.write_text(text)
+    out = tmp_path / "out"
+    r = hpcontact("run", path, "--out", out, "-q")
+    assert r.returncode == 1
+    assert "straight.yaml: no boundary node of body 'cylinder' can move onto the zone end" in r.stderr
+    for node in (1, 2, 3):
+        assert r.stderr.count(f"node {node} of body 'cylinder' sits where the boundary changes") == 1
+    assert "the last good result (iteration 0) is in" in r.stderr
+    assert not (out / "summary.json").exists()
+    kept = json.loads((out / "last-good" / "summary.json").read_text())
+    assert kept["converged"] is False and kept["adapt"]["converged"] is False
+    assert len(kept["adapt"]["history"]) == 1
+    assert abs(kept["contact"]["resultant"][1] - 35000) < 35

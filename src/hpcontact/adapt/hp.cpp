@@ -63,12 +63,21 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       for (;; ++rec.recentred) {
         s = solve(step == 0 ? spec : build_mesh(spec, centres, step, options), progress,
                   s ? s.get() : out.last.get());
-        ends = outer_zone_ends(*s);
-        if (step == 0) {
-          for (const auto& n : nearest_movable_nodes(*s, ends))
-            centres.push_back({n.track.body(), n.track.node_id(), n.end.X});
-          break;
+        try {
+          ends = outer_zone_ends(*s);
+          if (step == 0)
+            for (const auto& n : nearest_movable_nodes(*s, ends))
+              centres.push_back({n.track.body(), n.track.node_id(), n.end.X});
+        } catch (const AdaptError& e) {
+          // The solve itself succeeded: it is the last good result, recorded without centres.
+          rec.solve = figures_of(*s, ends, std::chrono::duration<double>(Clock::now() - t0).count());
+          out.history.push_back(rec);
+          out.last = s;
+          if (observe) observe(rec, *s);
+          out.message = e.what();
+          return out;
         }
+        if (step == 0) break;
         // Is each Γ* still within the two smallest elements at its centre? (Each centre follows
         // the zone end nearest to it; ends a coarse early step adds elsewhere are left alone.)
         rec.inside = true;

@@ -24,14 +24,25 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
     for (int it = 0;; ++it) {
       const auto t0 = Clock::now();
       SolvedPtr s = solve(current, progress, out.last.get());
-      const auto ends = outer_zone_ends(*s);
       RpIteration rec;
       rec.iteration = it;
+      std::vector<ZoneEnd> ends;
+      try {
+        ends = outer_zone_ends(*s);
+        if (moved.empty())
+          for (const auto& n : nearest_movable_nodes(*s, ends))
+            moved.emplace_back(n.track.body(), n.track.node_id());
+      } catch (const AdaptError& e) {
+        // The solve itself succeeded: it is the last good result, recorded without nodes.
+        rec.solve = figures_of(*s, ends, std::chrono::duration<double>(Clock::now() - t0).count());
+        out.history.push_back(rec);
+        out.last = s;
+        if (observe) observe(rec, *s);
+        out.message = e.what();
+        return out;
+      }
       rec.solve = figures_of(*s, ends, std::chrono::duration<double>(Clock::now() - t0).count());
       for (const auto& c : s->solution.contact) rec.zone_ends_found += static_cast<int>(c.gamma_star.size());
-      if (moved.empty())
-        for (const auto& n : nearest_movable_nodes(*s, ends))
-          moved.emplace_back(n.track.body(), n.track.node_id());
       // Each node follows the zone end of its body nearest to it (ends a coarse solve adds
       // elsewhere, e.g. an opening at a symmetry line, are left alone).
       std::vector<Vec2> target;

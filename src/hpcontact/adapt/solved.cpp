@@ -3,6 +3,7 @@
 
 #include <limits>
 #include <optional>
+#include <set>
 #include <string>
 
 #include "hpcontact/core/error.hpp"
@@ -67,6 +68,7 @@ std::vector<NodeForEnd> nearest_movable_nodes(const Solved& s, const std::vector
     double best = std::numeric_limits<double>::infinity();
     std::optional<BoundaryTrack> choice;
     std::string reasons;
+    std::set<int> refused;  // node ids already explained
     for (size_t k = 0; k < s.solution.pairs.size(); ++k) {
       const auto& pair = s.solution.pairs[k];
       if (pair.body != end.body && pair.other != end.body) continue;
@@ -78,11 +80,11 @@ std::vector<NodeForEnd> nearest_movable_nodes(const Solved& s, const std::vector
             choice.emplace(s.spec, end.body, body->mesh.node_id(v));
             best = dist;
           } catch (const AdaptError& err) {
-            reasons += std::string("\n  ") + err.what();
+            if (refused.insert(v).second) reasons += std::string("\n  ") + err.what();
           }
         }
     }
-    HPC_REQUIRE(choice, AdaptError, "no boundary node of body '", body->name,
+    HPC_REQUIRE(choice, AdaptError, s.spec.file, ": no boundary node of body '", body->name,
                 "' can move onto the zone end at (", end.X.x(), ", ", end.X.y(), "):", reasons);
     // Two ends nearest to one node (a coarse solve whose zone starts open at a symmetry line as
     // well as ending): the node serves the nearer one; the other is left alone.
