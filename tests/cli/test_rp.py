@@ -141,3 +141,24 @@ def test_no_node_that_can_move_keeps_the_first_solve(hpcontact, root, tmp_path, 
     assert kept["converged"] is False and kept["adapt"]["converged"] is False
     assert len(kept["adapt"]["history"]) == 1
     assert abs(kept["contact"]["resultant"][1] - 35000) < 35
+
+
+def test_relocation_that_would_invert_an_element_keeps_the_first_solve(hpcontact, root, tmp_path):
+    """tests/cli/data/thin-arch-rp.yaml: node 2 of a ring one element thick would slide 2.8 mm
+    onto Γ* past its partner on the inner arc; no interior node can follow, so element 2 would
+    invert. The loop names the node, the element and the file, exits 1, and keeps the first
+    solve in last-good/ (not converged); nothing in the output folder passes for a result."""
+    out = tmp_path / "out"
+    r = hpcontact("run", os.path.join(root, "tests/cli/data/thin-arch-rp.yaml"), "--out", out, "-q")
+    assert r.returncode == 1
+    assert "thin-arch-rp.yaml: rp: moving node 2 of body 'arch' to (" in r.stderr, r.stderr
+    assert "would invert an element (the node has no interior neighbours" in r.stderr
+    assert "element 2 is inverted or degenerate at node 2" in r.stderr
+    assert "the last good result (iteration 0) is in" in r.stderr
+    assert not (out / "summary.json").exists()
+    kept = json.loads((out / "last-good" / "summary.json").read_text())
+    assert kept["converged"] is False and kept["adapt"]["converged"] is False
+    assert len(kept["adapt"]["history"]) == 1
+    # The kept solve is the unmoved mesh: node 2 still at 22.5 degrees on the outer arc.
+    mesh = (out / "last-good" / "mesh.yaml").read_text()
+    assert "2: [3.8268343236509" in mesh

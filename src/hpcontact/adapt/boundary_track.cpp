@@ -126,7 +126,7 @@ model::ProblemSpec with_node_moved(const model::ProblemSpec& spec, const Boundar
   const int id = track.node_id();
   const Vec2 target = track.point(s);
   const double margin = 0.01 * (track.upper() - track.lower());
-  HPC_REQUIRE(s > track.lower() + margin && s < track.upper() - margin, AdaptError, "rp: node ", id,
+  HPC_REQUIRE(s > track.lower() + margin && s < track.upper() - margin, AdaptError, spec.file, ": rp: node ", id,
               " of body '", b.name, "' cannot move to (", target.x(), ", ", target.y(),
               "): that point is not between its two boundary neighbours on its ", track.describe());
 
@@ -162,9 +162,12 @@ model::ProblemSpec with_node_moved(const model::ProblemSpec& spec, const Boundar
       last_error = e.what();
     }
   }
-  throw AdaptError(detail::concat("rp: moving node ", id, " of body '", b.name, "' to (",
-                                  target.x(), ", ", target.y(), ") would invert an element even "
-                                  "with its interior neighbours following: ", last_error));
+  throw AdaptError(detail::concat(spec.file, ": rp: moving node ", id, " of body '", b.name, "' to (",
+                                  target.x(), ", ", target.y(), ") would invert an element",
+                                  interior.empty() ? " (the node has no interior neighbours that "
+                                                     "could follow: one element across the body)"
+                                                   : " even with its interior neighbours following",
+                                  ": ", last_error));
 }
 
 }  // namespace hpcontact::adapt
