@@ -70,12 +70,9 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
               centres.push_back({n.track.body(), n.track.node_id(), n.end.X});
         } catch (const AdaptError& e) {
           // The solve itself succeeded: it is the last good result, recorded without centres.
-          rec.solve = figures_of(*s, ends, std::chrono::duration<double>(Clock::now() - t0).count());
-          out.history.push_back(rec);
-          out.last = s;
-          if (observe) observe(rec, *s);
-          out.message = e.what();
-          return out;
+          return stopped_after_solve(std::move(out), rec, s, ends,
+                                     std::chrono::duration<double>(Clock::now() - t0).count(),
+                                     observe, e.what());
         }
         if (step == 0) break;
         // Is each Γ* still within the two smallest elements at its centre? (Each centre follows

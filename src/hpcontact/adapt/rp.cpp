@@ -34,12 +34,9 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
             moved.emplace_back(n.track.body(), n.track.node_id());
       } catch (const AdaptError& e) {
         // The solve itself succeeded: it is the last good result, recorded without nodes.
-        rec.solve = figures_of(*s, ends, std::chrono::duration<double>(Clock::now() - t0).count());
-        out.history.push_back(rec);
-        out.last = s;
-        if (observe) observe(rec, *s);
-        out.message = e.what();
-        return out;
+        return stopped_after_solve(std::move(out), rec, s, ends,
+                                   std::chrono::duration<double>(Clock::now() - t0).count(),
+                                   observe, e.what());
       }
       rec.solve = figures_of(*s, ends, std::chrono::duration<double>(Clock::now() - t0).count());
       for (const auto& c : s->solution.contact) rec.zone_ends_found += static_cast<int>(c.gamma_star.size());

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "hpcontact/adapt/boundary_track.hpp"
@@ -59,5 +60,20 @@ struct SolveFigures {
 };
 
 SolveFigures figures_of(const Solved& s, const std::vector<ZoneEnd>& ends, double seconds);
+
+/// Ends an adaptive loop (rp or hp) whose solve succeeded but whose next step cannot be taken
+/// (no zone end, no node to move): the solve is recorded as the iteration `rec` and kept as the
+/// last good result, and `why` becomes the outcome's message.
+template <class Outcome, class Iteration, class Observer>
+Outcome stopped_after_solve(Outcome out, Iteration rec, const SolvedPtr& s,
+                            const std::vector<ZoneEnd>& ends, double seconds,
+                            const Observer& observe, const std::string& why) {
+  rec.solve = figures_of(*s, ends, seconds);
+  out.history.push_back(rec);
+  out.last = s;
+  if (observe) observe(rec, *s);
+  out.message = why;
+  return out;
+}
 
 }  // namespace hpcontact::adapt
