@@ -67,7 +67,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 from energy_extrapolation import (ExtrapolationError, extrapolate_energy, fit_beta,  # noqa: E402
                                   relative_energy_error)
-from hpc_run import StudyError, check_labelled, csv_number, run_case  # noqa: E402
+from hpc_run import StudyError, check_labelled, csv_number, read_columns, run_case  # noqa: E402
 
 HERTZ_MESH = os.path.join(ROOT, "scripts", "hertz_mesh.py")
 METHODS = ("h", "p", "rp", "hp")
@@ -365,20 +365,19 @@ def penalty_energy(run_dir):
         if len(pairs) != 1 or pairs[0]["obstacle"]["type"] == "body":
             return None
         n = int(pairs[0].get("quadrature", 50))
-        with open(os.path.join(run_dir, "contact.csv")) as f:
-            rows = list(csv.DictReader(f))
-        if not rows or len(rows) % n:
+        cols = read_columns(os.path.join(run_dir, "contact.csv"))
+        if not cols or len(cols["X"]) % n:
             return None
-        X = np.array([[float(r["X"]), float(r["Y"])] for r in rows])
-        pressure = np.array([float(r["pressure"]) for r in rows])
-        gap = np.array([float(r["gap"]) for r in rows])
+        X = np.column_stack([cols["X"], cols["Y"]]).astype(float)
+        pressure = np.array(cols["pressure"], dtype=float)
+        gap = np.array(cols["gap"], dtype=float)
     except (OSError, KeyError, ValueError, TypeError, yaml.YAMLError):
         return None
     size = float(np.ptp(X, axis=0).max()) or 1.0
     xi, w = np.polynomial.legendre.leggauss(n)
     leg = np.polynomial.legendre
     energy = 0.0
-    for k in range(len(rows) // n):
+    for k in range(len(X) // n):
         block = slice(k * n, (k + 1) * n)
         jac2 = np.zeros(n)
         for d in range(2):

@@ -10,7 +10,6 @@ along the contact points in file order); below them the gap g_N. Rows of every p
 file order. Writes FILE.png (default: RESULTS_DIR/contact.png of the first folder).
 """
 import argparse
-import csv
 import math
 import os
 import sys
@@ -20,13 +19,15 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from hpc_run import read_columns  # noqa: E402
+
 
 def read(folder):
-    with open(os.path.join(folder, "contact.csv")) as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
+    cols = read_columns(os.path.join(folder, "contact.csv"))
+    if not cols:
         sys.exit(f"{folder}/contact.csv: no rows")
-    return {k: [float(r[k]) for r in rows] for k in rows[0] if k != "state"}
+    return cols
 
 
 def main(argv=None):

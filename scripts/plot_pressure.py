@@ -5,7 +5,6 @@ usage: plot_pressure.py RESULTS_DIR [OUT.png]
 Reads RESULTS_DIR/pressure.csv and RESULTS_DIR/summary.json; writes RESULTS_DIR/pressure.png
 (p/p0 over x/b, like the seed's Fig. 5.11-5.14).
 """
-import csv
 import json
 import os
 import sys
@@ -14,6 +13,9 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from hpc_run import read_columns  # noqa: E402
 
 
 def main(argv):
@@ -30,11 +32,7 @@ def main(argv):
               file=sys.stderr)
         return 1
     b, p0 = contact["hertz_half_width"], contact["hertz_peak_pressure"]
-    cols = {}
-    with open(os.path.join(folder, "pressure.csv")) as f:
-        for row in csv.DictReader(f):
-            for k, v in row.items():
-                cols.setdefault(k, []).append(float(v))
+    cols = read_columns(os.path.join(folder, "pressure.csv"))
     xb = [x / b for x in cols["x"]]
     fig, ax = plt.subplots(figsize=(7, 4.5))
     ax.plot(xb, [p / p0 for p in cols["hertz"]], "k--", lw=1.2, label="Hertz")

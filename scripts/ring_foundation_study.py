@@ -23,7 +23,7 @@ import numpy as np  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from hpc_run import read_vtu  # noqa: E402
+from hpc_run import read_columns, read_vtu  # noqa: E402
 
 CASE = os.path.join(ROOT, "examples", "ring-foundation", "ring.yaml")
 HALF_LOAD = 1035.0  # N on the half model (the case's traction resultant)
@@ -52,17 +52,16 @@ def main(argv=None):
     if proc.returncode != 0:
         sys.stderr.write(proc.stderr)
         return 1
-    with open(os.path.join(run_dir, "path.csv")) as f:
-        steps = list(csv.DictReader(f))
+    steps = read_columns(os.path.join(run_dir, "path.csv"))
     rows = []
-    for k, step in enumerate(steps, start=1):
-        X, _, c, _ = read_vtu(os.path.join(run_dir, "steps", f"contact-{k:04d}.vtu"))
+    for k in range(len(steps["step"])):
+        X, _, c, _ = read_vtu(os.path.join(run_dir, "steps", f"contact-{k + 1:04d}.vtu"))
         order = np.argsort(X[:, 0])
         x, gap = X[order, 0], c["gap"][order]
         ends = zone_ends(x, gap)
-        rows.append({"load_N": 2 * HALF_LOAD * float(step["load_factor"]),
-                     "top_displacement_mm": -float(step["monitor_uy"]),
-                     "reaction_N": 2 * float(step["resultant_y"]),
+        rows.append({"load_N": 2 * HALF_LOAD * steps["load_factor"][k],
+                     "top_displacement_mm": -steps["monitor_uy"][k],
+                     "reaction_N": 2 * steps["resultant_y"][k],
                      "gap_at_axis_mm": gap[0],
                      "zone_ends_mm": " ".join(f"{e:.6g}" for e in ends)})
     os.makedirs(args.out, exist_ok=True)

@@ -42,15 +42,6 @@ Vec2 node_position(const model::BodySpec& b, int id) {
   return Vec2(p[0], p[1]);
 }
 
-double body_size(const model::BodySpec& body) {
-  Vec2 lo = Vec2::Constant(1e300), hi = Vec2::Constant(-1e300);
-  for (const auto& p : body.nodes) {
-    lo = lo.cwiseMin(Vec2(p[0], p[1]));
-    hi = hi.cwiseMax(Vec2(p[0], p[1]));
-  }
-  return (hi - lo).norm();
-}
-
 BoundaryTrack::BoundaryTrack(const model::ProblemSpec& spec, int body, int node_id)
     : body_(body), node_id_(node_id) {
   const model::BodySpec& b = spec.bodies[body];

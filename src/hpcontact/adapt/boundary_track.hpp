@@ -48,7 +48,4 @@ model::ProblemSpec with_node_moved(const model::ProblemSpec& spec, const Boundar
 /// Position of node `id` (user id) of a body.
 Vec2 node_position(const model::BodySpec& body, int id);
 
-/// Size of a body: the diagonal of its nodes' bounding box.
-double body_size(const model::BodySpec& body);
-
 }  // namespace hpcontact::adapt

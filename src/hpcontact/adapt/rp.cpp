@@ -47,7 +47,7 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
         const Vec2 X = node_position(current.bodies[body], id);
         const ZoneEnd* nearest = nearest_end(ends, body, X);
         target.push_back(nearest->X);
-        const double size = body_size(current.bodies[body]);
+        const double size = s->discretization.bodies[body].mesh.size();
         rec.distance = std::max(rec.distance, (nearest->X - X).norm() / size);
         rec.nodes.push_back({body, id, X, nearest->X});
       }

@@ -5,6 +5,23 @@
 
 namespace hpcontact::contact {
 
+ContactState contact_state(const PointState& s) {
+  if (s.gap > 0) return ContactState::open;
+  if (s.stick_slip == StickSlip::stick) return ContactState::stick;
+  if (s.stick_slip == StickSlip::slip) return ContactState::slip;
+  return ContactState::contact;
+}
+
+const char* state_name(ContactState s) {
+  switch (s) {
+    case ContactState::open: return "open";
+    case ContactState::contact: return "contact";
+    case ContactState::stick: return "stick";
+    case ContactState::slip: return "slip";
+  }
+  return "";
+}
+
 Tangential add_friction(PointState& ps, const FrictionLaw& law, const FrictionHistory& h,
                         const Vec2& anchor) {
   ps.tau = h.tau;

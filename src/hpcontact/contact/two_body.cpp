@@ -72,16 +72,17 @@ void two_body_contact(const std::vector<ContactPoint>& points, const Eigen::Vect
     if (h) {
       // Friction: G_T = ∂g_T/∂u on the slave's modes and the anchor's modes of the master (not
       // the foot's); forces −w t_T G_T; tangent w G_T (dt_dgt G_T − dt_dp ε_N G_n)ᵀ.
-      std::vector<std::pair<int, double>> GT;
-      for (int k = 0; k < ms; ++k)
-        for (int c = 0; c < 2; ++c) GT.emplace_back(offset_s + 2 * cp.modes[k] + c, cp.N(k) * h->tau(c));
-      for (size_t k = 0; k < at.modes.size(); ++k)
-        for (int c = 0; c < 2; ++c) GT.emplace_back(offset_m + 2 * at.modes[k] + c, -at.N(k) * h->tau(c));
       for (int k = 0; k < ms; ++k)
         for (int c = 0; c < 2; ++c) force_s(2 * cp.modes[k] + c) -= w * tr.traction * cp.N(k) * h->tau(c);
       for (size_t k = 0; k < at.modes.size(); ++k)
         for (int c = 0; c < 2; ++c) force_m(2 * at.modes[k] + c) += w * tr.traction * at.N(k) * h->tau(c);
-      if (tangent)
+      if (tangent) {
+        std::vector<std::pair<int, double>> GT;  // (global dof, entry of G_T)
+        GT.reserve(2 * (ms + at.modes.size()));
+        for (int k = 0; k < ms; ++k)
+          for (int c = 0; c < 2; ++c) GT.emplace_back(offset_s + 2 * cp.modes[k] + c, cp.N(k) * h->tau(c));
+        for (size_t k = 0; k < at.modes.size(); ++k)
+          for (int c = 0; c < 2; ++c) GT.emplace_back(offset_m + 2 * at.modes[k] + c, -at.N(k) * h->tau(c));
         for (const auto& [r, vr] : GT) {
           if (tr.dt_dgt != 0)
             for (const auto& [c, vc] : GT)
@@ -90,6 +91,7 @@ void two_body_contact(const std::vector<ContactPoint>& points, const Eigen::Vect
             for (int j = 0; j < L; ++j)
               if (vr * Gn(j) != 0.0) tangent->emplace_back(r, global(j), -w * tr.dt_dp * eps_n * vr * Gn(j));
         }
+      }
     }
     if (!tangent) continue;
     const double a = t.squaredNorm(), kappa = master.curvature(foot), cc = a - g * kappa;

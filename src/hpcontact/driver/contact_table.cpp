@@ -24,10 +24,7 @@ ContactTable contact_table(const std::vector<model::ContactResult>& contact,
       t.tangential_gap.push_back(p.g_t);
       t.tangential_traction.push_back(p.t_t);
       t.slip.push_back(p.slip);
-      t.state.push_back(p.gap > 0                                       ? "open"
-                        : p.stick_slip == contact::StickSlip::stick ? "stick"
-                        : p.stick_slip == contact::StickSlip::slip  ? "slip"
-                                                                    : "contact");
+      t.state.push_back(contact::state_name(contact::contact_state(p)));
     }
   return t;
 }

@@ -109,11 +109,11 @@ double CubicSpline::closest_parameter(const Vec2& x) const {
     if (fb <= 0) return b;
     double t = 0.5 * (a + b);
     for (int it = 0; it < 60; ++it) {
-      const double ft = f(t);
+      const Vec2 r = point(t) - x, d = derivative(t);
+      const double ft = r.dot(d);
       if (ft == 0) return t;
       (ft < 0 ? a : b) = t;
-      const Vec2 d = derivative(t);
-      const double slope = d.squaredNorm() + (point(t) - x).dot(second_derivative(t));
+      const double slope = d.squaredNorm() + r.dot(second_derivative(t));
       double next = slope > 0 ? t - ft / slope : 0.5 * (a + b);
       if (!(next > a && next < b)) next = 0.5 * (a + b);
       const bool done = std::abs(next - t) <= 1e-15 * (1 + std::abs(t)) * std::max(1.0, end());

@@ -98,6 +98,16 @@ int Mesh::quad_index(int id) const {
   return it == quad_of_id_.end() ? -1 : it->second;
 }
 
+double Mesh::size() const {
+  if (nodes_.empty()) return 0;
+  Vec2 lo = nodes_.front(), hi = lo;
+  for (const Vec2& x : nodes_) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  return (hi - lo).norm();
+}
+
 Vec2 Mesh::edge_point(int e, double t) const {
   const Edge& edge = edges_[e];
   if (edge.curve) return edge.curve->point(0.5 * (t + 1));

@@ -63,6 +63,9 @@ public:
   /// Point of edge e at global parameter t in [-1, 1] (t = -1 at v0).
   Vec2 edge_point(int e, double t) const;
 
+  /// Size of the mesh: the diagonal of the smallest axis-parallel box around its nodes.
+  double size() const;
+
 private:
   std::vector<Vec2> nodes_;
   std::vector<int> node_ids_;

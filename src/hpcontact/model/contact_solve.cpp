@@ -662,9 +662,7 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
     // An obstacle the body starts deep inside (more than 1 % of its size) is a wrong normal or
     // position, not a contact problem: say so before solving.
     if (pair.other < 0) {
-      Eigen::AlignedBox2d box;
-      for (int v = 0; v < body.mesh.n_nodes(); ++v) box.extend(body.mesh.node(v));
-      const double size = box.diagonal().norm();
+      const double size = body.mesh.size();
       const contact::ContactPoint* deepest = nullptr;
       double g_min = 0;
       for (const auto& cp : pair.points)
@@ -915,10 +913,8 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     const auto& tr = *ss.target_resultant;
     HPC_REQUIRE(!pairs.empty(), InputError, ss.where.str(),
                 ".target_resultant: needs a contact pair to measure the resultant");
-    std::vector<contact::PointState> states;
-    auto measured = [&]() {
-      return std::abs(contact_resultant(d, pairs.front(), system.full(x), states)(tr.component));
-    };
+    // The resultant of the last converged step, as record() took it for the load path.
+    auto measured = [&]() { return std::abs(sol.path.back().resultant(tr.component)); };
     double l0 = lambda, f0 = measured() - tr.value;
     HPC_REQUIRE(f0 + tr.value > 0, InputError, ss.where.str(),
                 ".target_resultant: the prescribed displacements produce no contact force, so they "

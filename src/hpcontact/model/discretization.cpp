@@ -323,13 +323,8 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
 void find_free_rigid_motions(Discretization& d) {
   for (size_t b = 0; b < d.bodies.size(); ++b) {
     Body& body = d.bodies[b];
-    Vec2 lo = body.mesh.node(0), hi = lo;
-    for (const Vec2& x : body.mesh.nodes()) {
-      lo = lo.cwiseMin(x);
-      hi = hi.cwiseMax(x);
-    }
     body.free_rigid_motions = free_rigid_motions(prescribed_vertices(d, static_cast<int>(b)),
-                                                 (hi - lo).norm());
+                                                 body.mesh.size());
   }
 }
 

@@ -30,6 +30,13 @@ std::string translation(Vec2 t) {
   return "translation along (" + number(t.x()) + ", " + number(t.y()) + ")";
 }
 
+/// "translation in x and rotation about (0, 0)": the free motions joined for a message.
+std::string joined(const std::vector<std::string>& motions) {
+  std::string out;
+  for (const auto& m : motions) out += (out.empty() ? "" : " and ") + m;
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::string> free_rigid_motions(const std::vector<PointConstraint>& constraints,
@@ -113,10 +120,8 @@ void require_held(const ProblemSpec& spec, const Discretization& d) {
     for (const auto& c : spec.contact)
       in_contact = in_contact || c.body == bs.name || c.obstacle.body == bs.name;
     if (in_contact) continue;
-    std::string free;
-    for (const auto& m : motions) free += (free.empty() ? "" : " and ") + m;
     throw InputError(bs.where.str() + ": body '" + bs.name +
-                     "' is not held against rigid-body motion: its constraints leave " + free +
+                     "' is not held against rigid-body motion: its constraints leave " + joined(motions) +
                      " free, and no contact pair holds it (prescribe ux or uy at more nodes or "
                      "edges)");
   }
@@ -129,10 +134,8 @@ std::string explain_singular(const Discretization& d, int row) {
       if (d.free_index[dof] == row) out = "at " + describe_dof(d, dof);
   for (const Body& body : d.bodies) {
     if (body.free_rigid_motions.empty()) continue;
-    std::string free;
-    for (const auto& m : body.free_rigid_motions) free += (free.empty() ? "" : " and ") + m;
     out += std::string(out.empty() ? "" : "; ") + "body '" + body.name +
-           "' is held only by contact against " + free +
+           "' is held only by contact against " + joined(body.free_rigid_motions) +
            " (frictionless contact holds only where it presses, and only normal to the contact)";
   }
   return out;

@@ -10,19 +10,6 @@
 
 namespace hpcontact::post {
 
-namespace {
-
-int state_code(const contact::PointState& s) {
-  switch (s.stick_slip) {
-    case contact::StickSlip::stick: return 2;
-    case contact::StickSlip::slip: return 3;
-    case contact::StickSlip::open: break;
-  }
-  return s.pressure > 0 ? 1 : 0;
-}
-
-}  // namespace
-
 void write_contact_vtu(const std::string& path, const std::vector<model::ContactPair>& pairs,
                        const std::vector<model::ContactResult>& results) {
   HPC_REQUIRE(pairs.size() == results.size(), IoError, path, ": ", pairs.size(), " pairs but ",
@@ -52,7 +39,9 @@ void write_contact_vtu(const std::string& path, const std::vector<model::Contact
   });
   grid.point_scalar("tangential_traction", [&](std::size_t n) { return state(n).t_t; });
   grid.point_scalar("slip", [&](std::size_t n) { return state(n).slip; });
-  grid.point_scalar("state", [&](std::size_t n) { return state_code(state(n)); }, "Int32");
+  grid.point_scalar(
+      "state", [&](std::size_t n) { return static_cast<int>(contact::contact_state(state(n))); },
+      "Int32");
   grid.begin_cell_data("pair");
   grid.cell_scalar("pair", [](std::size_t k) { return static_cast<double>(k); });
   grid.finish();

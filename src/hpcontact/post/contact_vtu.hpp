@@ -12,7 +12,8 @@ namespace hpcontact::post {
 /// at their undeformed positions (like solution.vtu, so "Warp By Vector" with `displacement`
 /// puts both on the deformed configuration). Point data: displacement, traction (the contact
 /// traction on the body), gap, pressure (penalty), pressure_from_stress, tangential_traction,
-/// slip, state (0 open, 1 contact without friction, 2 stick, 3 slip); cell data: pair.
+/// slip, state (contact::ContactState: 0 open, 1 contact without friction, 2 stick, 3 slip);
+/// cell data: pair.
 /// Throws IoError if the file cannot be written.
 void write_contact_vtu(const std::string& path, const std::vector<model::ContactPair>& pairs,
                        const std::vector<model::ContactResult>& results);
