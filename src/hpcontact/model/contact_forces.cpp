@@ -1,0 +1,120 @@
+// Penalty forces of the contact pairs (one side against a rigid obstacle, both sides between two
+// bodies) and the finite-strain internal forces, each with its tangent's triplets.
+#include "hpcontact/model/contact_forces.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "hpcontact/contact/two_body.hpp"
+#include "hpcontact/fem/finite_strain.hpp"
+
+namespace hpcontact::model {
+
+PairForces pair_forces(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u,
+                       std::vector<Eigen::Triplet<double>>* t,
+                       const std::vector<contact::PointState>* frozen) {
+  const Body& body = d.bodies[pair.body];
+  const int n = body.dofs.n_dofs();
+  const Eigen::VectorXd ua = u.segment(body.dof_offset, n);
+  PairForces f;
+  f.body = Eigen::VectorXd::Zero(n);
+  contact::FrictionInput fr, fr_other;
+  if (pair.memory) {
+    fr = {&pair.friction, &pair.memory->points};
+    fr_other = {&pair.friction, &pair.memory->other_points};
+  }
+  if (pair.other < 0) {
+    contact::penalty_contact(pair.points, *pair.obstacle, pair.penalty, ua, f.body, t,
+                             body.dof_offset, &f.states, frozen, fr);
+    return f;
+  }
+  const Body& other = d.bodies[pair.other];
+  const int m = other.dofs.n_dofs();
+  const Eigen::VectorXd ub = u.segment(other.dof_offset, m);
+  f.other = Eigen::VectorXd::Zero(m);
+  pair.boundary->set_displacement(ua);
+  pair.other_boundary->set_displacement(ub);
+  contact::two_body_contact(pair.points, ua, *pair.other_boundary, pair.penalty, 0.5, f.body, f.other,
+                            t, body.dof_offset, other.dof_offset, &f.states, fr);
+  contact::two_body_contact(pair.other_points, ub, *pair.boundary, pair.penalty, 0.5, f.other, f.body,
+                            t, other.dof_offset, body.dof_offset, &f.other_states, fr_other);
+  return f;
+}
+
+FiniteStrainForces::FiniteStrainForces(const Discretization& d) : d_(d) {
+  for (int b = 0; b < static_cast<int>(d.bodies.size()); ++b) {
+    const Body& body = d.bodies[b];
+    if (!body.finite_strain()) continue;
+    for (int q = 0; q < body.mesh.n_quads(); ++q) {
+      elements_.push_back({b, q});
+      values_.push_back(fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q],
+                                            body.mesh, q));
+    }
+  }
+}
+
+bool FiniteStrainForces::add(const Eigen::VectorXd& u, Eigen::VectorXd& R,
+                             std::vector<Eigen::Triplet<double>>* t, std::string* inverted) const {
+  const int ne = static_cast<int>(elements_.size());
+  std::vector<fem::FiniteStrainElement> el(ne);
+#pragma omp parallel for schedule(dynamic)
+  for (int i = 0; i < ne; ++i) {
+    const Body& body = d_.bodies[elements_[i].body];
+    const int q = elements_[i].q;
+    el[i] = fem::finite_strain_element(values_[i], body.material_of(q), body.law, body.thickness,
+                                       body.element_coefficients(q, u), t != nullptr);
+  }
+  for (int i = 0; i < ne; ++i) {
+    const Body& body = d_.bodies[elements_[i].body];
+    const int q = elements_[i].q;
+    if (el[i].inverted()) {
+      if (inverted) {
+        const Vec2& X = values_[i].x[el[i].min_J_point];
+        std::ostringstream os;
+        os << "element " << body.mesh.quad_id(q) << " of body '" << body.name
+           << "' inverts: det F = " << el[i].min_J << " at (" << X.x() << ", " << X.y() << ")";
+        *inverted = os.str();
+      }
+      return false;
+    }
+    const int n = static_cast<int>(el[i].f_int.size());
+    for (int a = 0; a < n; ++a) R(body.global_dof(q, a)) += el[i].f_int(a);
+    if (!t) continue;
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b)
+        t->emplace_back(body.global_dof(q, a), body.global_dof(q, b), el[i].K(a, b));
+  }
+  return true;
+}
+
+/// Anchors and slips of a pair's points after a converged load step (see FrictionHistory).
+void commit_friction(const ContactPair& pair, const PairForces& f) {
+  if (!pair.memory) return;
+  auto update = [&](std::vector<contact::FrictionHistory>& hs,
+                    const std::vector<contact::PointState>& states) {
+    for (size_t i = 0; i < hs.size(); ++i) {
+      auto& h = hs[i];
+      const auto& s = states[i];
+      if (s.gap > 0 || !std::isfinite(s.gap)) {
+        h = contact::FrictionHistory{};
+        continue;
+      }
+      if (h.anchored) {
+        h.slip = s.slip;
+        continue;
+      }
+      h.anchored = true;
+      h.edge = s.foot_edge;
+      h.t = s.foot_t;
+      h.anchor = s.foot - pair.obstacle->offset();
+      h.tau = s.tau;
+      h.slip = 0;
+    }
+  };
+  pair.memory->points_before = pair.memory->points;
+  pair.memory->other_points_before = pair.memory->other_points;
+  update(pair.memory->points, f.states);
+  if (pair.other >= 0) update(pair.memory->other_points, f.other_states);
+}
+
+}  // namespace hpcontact::model

@@ -1,0 +1,57 @@
+// The contact pairs of a problem: each body's contact points, its obstacle (rigid or another
+// body), the penalty and the friction law, built once from the problem description.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "hpcontact/contact/deformable_boundary.hpp"
+#include "hpcontact/contact/obstacle.hpp"
+#include "hpcontact/contact/penalty.hpp"
+#include "hpcontact/model/discretization.hpp"
+
+namespace hpcontact::model {
+
+/// A resolved contact pair: the body, its contact points, the obstacle and the penalty. Against
+/// another deformable body (`other` >= 0) the obstacle is that body's deformed boundary, and
+/// the other body's points are evaluated against this body's boundary too (seed §3.6).
+struct ContactPair {
+  int body = -1;
+  std::vector<contact::ContactPoint> points;
+  std::vector<int> edges;  ///< mesh edges of the contact boundary, in order
+  contact::ObstaclePtr obstacle;
+  /// The same obstacle when it moves (a rigid obstacle with a displacement), else null.
+  std::shared_ptr<contact::DisplacedObstacle> moving;
+  int other = -1;  ///< the other body of a bilateral pair, -1 against a rigid obstacle
+  std::vector<contact::ContactPoint> other_points;
+  std::vector<int> other_edges;  ///< the other body's contact edges (mesh edges)
+  std::shared_ptr<const contact::DeformableBoundary> boundary, other_boundary;
+  double penalty = 0;
+  contact::FrictionLaw friction;
+  /// The friction histories of the pair's points (and of the other body's points), carried from
+  /// load step to load step; shared by copies of the pair.
+  struct FrictionMemory {
+    std::vector<contact::FrictionHistory> points, other_points;
+    /// The histories the last committed step started from (what its Newton iterations saw),
+    /// for its tangent (contact_tangent): evaluated with the committed slips, slipping points
+    /// lie on the cone, where a difference quotient straddles stick and slip.
+    std::vector<contact::FrictionHistory> points_before, other_points_before;
+  };
+  std::shared_ptr<FrictionMemory> memory;
+  Vec2 reference_point = Vec2::Zero();  ///< obstacle point used for the half width
+  Vec2 tangent = Vec2(1, 0);            ///< obstacle tangent used for the half width
+  /// Coordinate of a point along the obstacle: (X − reference point)·tangent.
+  double coordinate(const Vec2& X) const { return (X - reference_point).dot(tangent); }
+};
+
+/// Contact pairs of a problem; InputError naming the key when a pair is wrong.
+std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discretization& d);
+
+/// The body called `name` and its index; InputError naming `where`.body if there is none.
+const Body& body_named(const Discretization& d, const std::string& name, const SourceRef& where,
+                       int* index);
+
+}  // namespace hpcontact::model

@@ -1,0 +1,196 @@
+// Contact results at a state: Γ* by Pegasus on the gap (seed §4.7), pressures from the stresses,
+// resultants, and the pressure probe along the boundary.
+#include "hpcontact/model/contact_results.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "hpcontact/core/roots.hpp"
+#include "hpcontact/fem/edge_load.hpp"
+#include "hpcontact/fem/element_values.hpp"
+#include "hpcontact/model/body_stress.hpp"
+#include "hpcontact/model/contact_forces.hpp"
+
+namespace hpcontact::model {
+
+Vec2 contact_resultant(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u,
+                       std::vector<contact::PointState>& states,
+                       std::vector<contact::PointState>* other_states) {
+  PairForces f = pair_forces(d, pair, u, nullptr);
+  const Vec2 r = f.resultant(pair);
+  states = std::move(f.states);
+  if (other_states) *other_states = std::move(f.other_states);
+  return r;
+}
+
+namespace {
+
+/// Gap of the deformed boundary at local edge parameter t of element q; the deformed point in
+/// x_out, the undeformed one in X_out.
+double gap_at(const Body& body, const contact::Obstacle& obstacle, int q, int le, double t,
+              const Eigen::VectorXd& u, Vec2* x_out, Vec2* X_out = nullptr) {
+  const auto& es = body.dofs.element(q);
+  const int n = es.n_modes();
+  Eigen::VectorXd N(n);
+  const auto r = fem::edge_reference_point(le, t);
+  es.evaluate(r[0], r[1], N.data(), nullptr, nullptr);
+  const Vec2 X = fem::edge_geometry(body.maps[q], le, t, nullptr, nullptr);
+  if (X_out) *X_out = X;
+  Vec2 x = X;
+  for (int a = 0; a < n; ++a) {
+    const int dof = body.dof_offset + 2 * es.modes[a];
+    x += N(a) * Vec2(u(dof), u(dof + 1));
+  }
+  if (x_out) *x_out = x;
+  return obstacle.gap(x, nullptr, nullptr);
+}
+
+bool shares_node(const mesh::Mesh& m, int a, int b) {
+  const auto &ea = m.edge(a), &eb = m.edge(b);
+  return ea.v0 == eb.v0 || ea.v0 == eb.v1 || ea.v1 == eb.v0 || ea.v1 == eb.v1;
+}
+
+/// Root of the gap between parameters a and b of one edge by the Pegasus method (seed §4.7):
+/// the boundary point where the contact zone ends, undeformed (X) and deformed (x).
+std::pair<Vec2, Vec2> zone_end(const Body& body, const contact::Obstacle& obstacle, int q, int le,
+                               double a, double b, const Eigen::VectorXd& u) {
+  Vec2 x, X;
+  auto gap = [&](double t) { return gap_at(body, obstacle, q, le, t, u, &x, &X); };
+  const double fa = gap(a), fb = gap(b);
+  gap(pegasus_root(gap, a, b, fa, fb, 1e-14 * (1 + x.norm())));
+  return {X, x};
+}
+
+/// -n·σ·n at local edge parameter t of element q, n the outward normal N of the undeformed
+/// boundary; under finite strain the Cauchy stress and the deformed normal F⁻ᵀN / |F⁻ᵀN|.
+double stress_pressure(const Body& body, int q, int le, double t, const Vec2& N,
+                       const Eigen::VectorXd& u) {
+  const auto r = fem::edge_reference_point(le, t);
+  const auto pv = fem::point_values(body.dofs.element(q), body.maps[q], r[0], r[1]);
+  const auto ps = point_stress(body, q, pv, body.element_coefficients(q, u));
+  const Vec2 n = body.finite_strain() ? Vec2(ps.F.inverse().transpose() * N).normalized() : N;
+  const Eigen::Vector3d& sig = ps.stress;
+  return -(n.x() * n.x() * sig(0) + n.y() * n.y() * sig(1) + 2 * n.x() * n.y() * sig(2));
+}
+
+/// The ends of the contact zone along the contact points of one body (the states' gaps change
+/// sign; Pegasus on the gap between them, seed §4.7), and which of them are the outer ends of
+/// the active region, by the coordinate along the obstacle (the contact edges need not be
+/// listed as one path): the zone end just outside the first and the last closed point, where
+/// open points lie beyond them.
+ZoneEnds zone_ends(const Body& body, const std::vector<contact::ContactPoint>& points,
+                   const std::vector<contact::PointState>& states, const contact::Obstacle& obstacle,
+                   const ContactPair& pair, const Eigen::VectorXd& u) {
+  ZoneEnds z;
+  for (size_t i = 0; i + 1 < points.size(); ++i) {
+    if ((states[i].gap < 0) == (states[i + 1].gap < 0)) continue;
+    const auto &p0 = points[i], &p1 = points[i + 1];
+    const bool same_edge = p0.element == p1.element && p0.local_edge == p1.local_edge;
+    std::optional<std::pair<Vec2, Vec2>> end;
+    if (same_edge) {
+      end = zone_end(body, obstacle, p0.element, p0.local_edge, p0.t, p1.t, u);
+    } else if (shares_node(body.mesh, body.mesh.quad_edge(p0.element, p0.local_edge),
+                           body.mesh.quad_edge(p1.element, p1.local_edge))) {
+      // The zone ends between two edges: on the side whose end gap changes sign (a node
+      // placed on Γ*, as rp does, gives a root at the edge end itself).
+      for (const auto* cp : {&p0, &p1}) {
+        const bool open = states[cp == &p0 ? i : i + 1].gap >= 0;
+        const double te = cp->t >= 0 ? 1.0 : -1.0;  // the end at the shared node
+        if (!end && (gap_at(body, obstacle, cp->element, cp->local_edge, te, u, nullptr) >= 0) != open)
+          end = zone_end(body, obstacle, cp->element, cp->local_edge, cp->t, te, u);
+      }
+    }
+    if (end) {
+      z.X.push_back(end->first);
+      z.x.push_back(end->second);
+    }
+  }
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (size_t i = 0; i < points.size(); ++i)
+    if (states[i].gap < 0) {
+      lo = std::min(lo, pair.coordinate(points[i].X));
+      hi = std::max(hi, pair.coordinate(points[i].X));
+    }
+  int below = -1, above = -1;
+  for (int k = 0; k < static_cast<int>(z.X.size()); ++k) {
+    const double c = pair.coordinate(z.X[k]);
+    if (c <= lo && (below < 0 || c > pair.coordinate(z.X[below]))) below = k;
+    if (c >= hi && (above < 0 || c < pair.coordinate(z.X[above]))) above = k;
+  }
+  if (below >= 0) z.outer.push_back(below);
+  if (above >= 0 && above != below) z.outer.push_back(above);
+  return z;
+}
+
+ContactResult contact_result(const Discretization& d, const ContactPair& pair,
+                             const Eigen::VectorXd& u) {
+  const Body& body = d.bodies[pair.body];
+  ContactResult res;
+  res.resultant = contact_resultant(d, pair, u, res.states, &res.other_states);
+  for (const auto& cp : pair.points)
+    res.stress_pressure.push_back(stress_pressure(body, cp.element, cp.local_edge, cp.t, cp.normal, u));
+  for (size_t i = 0; i < pair.points.size(); ++i) {
+    res.p_max = std::max(res.p_max, res.states[i].pressure);
+    res.max_penetration = std::max(res.max_penetration, -res.states[i].gap);
+  }
+  ZoneEnds own = zone_ends(body, pair.points, res.states, *pair.obstacle, pair, u);
+  res.gamma_star = std::move(own.X);
+  res.gamma_star_deformed = std::move(own.x);
+  res.outer_ends = std::move(own.outer);
+  if (pair.other >= 0)
+    res.other_zone_ends = zone_ends(d.bodies[pair.other], pair.other_points, res.other_states,
+                                    *pair.boundary, pair, u);
+  for (const Vec2& g : res.gamma_star)
+    res.half_width = std::max(res.half_width, std::abs(pair.coordinate(g)));
+  return res;
+}
+
+}  // namespace
+
+ContactResult evaluate_contact(const Discretization& d, const ContactPair& pair,
+                               const Eigen::VectorXd& u) {
+  return contact_result(d, pair, u);
+}
+
+BoundaryPressureProbe::BoundaryPressureProbe(const Discretization& d, const ContactPair& pair,
+                                             const Eigen::VectorXd& u)
+    : d_(d), pair_(pair), u_(u), coord_(pair.edges.size()) {
+  for (size_t k = 0; k < pair.edges.size(); ++k)
+    for (int i = 0; i <= kSamples; ++i)
+      coord_[k][i] = coordinate(static_cast<int>(k), -1 + 2.0 * i / kSamples);
+}
+
+double BoundaryPressureProbe::coordinate(int k, double t) const {
+  const Body& body = d_.bodies[pair_.body];
+  const auto& edge = body.mesh.edge(pair_.edges[k]);
+  const Vec2 X = fem::edge_geometry(body.maps[edge.quads[0]], edge.local_edge[0], t, nullptr, nullptr);
+  return pair_.coordinate(X);
+}
+
+std::optional<BoundaryPressure> BoundaryPressureProbe::operator()(double s) const {
+  const Body& body = d_.bodies[pair_.body];
+  const double tol = 1e-12 * (1 + std::abs(s));  // s on a node: round-off must not hide it
+  for (size_t k = 0; k < coord_.size(); ++k) {
+    for (int i = 0; i < kSamples; ++i) {
+      double fa = coord_[k][i] - s, fb = coord_[k][i + 1] - s;
+      if (std::abs(fa) <= tol) fa = 0;
+      if (std::abs(fb) <= tol) fb = 0;
+      if (fa * fb > 0) continue;
+      const double t = pegasus_root([&](double r) { return coordinate(static_cast<int>(k), r) - s; },
+                                    -1 + 2.0 * i / kSamples, -1 + 2.0 * (i + 1) / kSamples, fa, fb, tol);
+      const auto& edge = body.mesh.edge(pair_.edges[k]);
+      const int q = edge.quads[0], le = edge.local_edge[0];
+      Vec2 normal;
+      fem::edge_geometry(body.maps[q], le, t, &normal, nullptr);
+      BoundaryPressure bp;
+      const double g = gap_at(body, *pair_.obstacle, q, le, t, u_, &bp.x, &bp.X);
+      bp.penalty = g < 0 ? -pair_.penalty * g : 0.0;
+      bp.from_stress = stress_pressure(body, q, le, t, normal, u_);
+      return bp;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace hpcontact::model

@@ -1,0 +1,84 @@
+// The results of a contact solve at a state: the points' states, resultants, the ends of the
+// contact zone (Γ*), and the pressures along the boundary (from the stresses and the penalty).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "hpcontact/model/contact_pairs.hpp"
+
+namespace hpcontact::model {
+
+/// Ends of the contact zone along one body's contact boundary (Pegasus on the gap between the
+/// contact points where it changes sign, seed §4.7).
+struct ZoneEnds {
+  std::vector<Vec2> X;     ///< undeformed
+  std::vector<Vec2> x;     ///< deformed
+  std::vector<int> outer;  ///< indices of the outer ends of the active region (see ContactResult)
+};
+
+/// State of the contact after a solve: per pair, its points' states and derived figures.
+struct ContactResult {
+  std::vector<contact::PointState> states;  ///< per contact point of the pair
+  /// Normal pressure -n·σ·n from the stresses of the body at each contact point (the seed's
+  /// plotted pressure), n the undeformed outward normal.
+  std::vector<double> stress_pressure;
+  Vec2 resultant = Vec2::Zero();            ///< ∫ traction ds on the body
+  double p_max = 0, max_penetration = 0;
+  /// Ends of the contact zone (Pegasus on the gap, seed §4.7) on the undeformed boundary: the
+  /// points a node is moved to (rp) and where the closed forms of the linear theory put them.
+  std::vector<Vec2> gamma_star;
+  std::vector<Vec2> gamma_star_deformed;  ///< the same points after deformation
+  /// Indices into gamma_star of the outer ends of the active region along the contact boundary
+  /// (its first and last sign change, where the boundary's own ends are open): the ends rp moves
+  /// nodes to. Sign changes between them are islands of opening inside the contact zone, which
+  /// the penalty traction's oscillation produces on coarse discretisations.
+  std::vector<int> outer_ends;
+  double half_width = 0;  ///< largest |(Γ* - reference point)·tangent|, Γ* undeformed
+  /// Against another body: the states of its points and the zone ends on its boundary.
+  std::vector<contact::PointState> other_states;
+  ZoneEnds other_zone_ends;
+};
+
+/// Pressures at one point of a contact boundary.
+struct BoundaryPressure {
+  Vec2 X;                  ///< undeformed position
+  Vec2 x;                  ///< deformed position
+  double from_stress = 0;  ///< -n·σ·n, n the undeformed outward normal
+  double penalty = 0;      ///< eps_N <-g_N>
+};
+
+/// Pressures along the contact boundary of a pair, located by the coordinate
+/// s = (X - reference point)·tangent of the undeformed point X along the obstacle (the linear
+/// theory's coordinate: Hertz and Shtayerman place the pressure on the undeformed surface). The boundary is sampled once when
+/// constructed; each query then refines one bracket.
+class BoundaryPressureProbe {
+public:
+  BoundaryPressureProbe(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u);
+  /// Pressures at the boundary point with coordinate s; nullopt if no contact edge reaches s.
+  std::optional<BoundaryPressure> operator()(double s) const;
+
+private:
+  static constexpr int kSamples = 32;  ///< sub-intervals per edge
+  const Discretization& d_;
+  const ContactPair& pair_;
+  const Eigen::VectorXd& u_;
+  std::vector<std::array<double, kSamples + 1>> coord_;  ///< per edge, at t = -1 + 2i/kSamples
+  double coordinate(int edge_index, double t) const;
+};
+
+/// The contact state of a pair at the dofs u: its points' states, pressures from the stresses,
+/// resultant, Γ*, half width.
+ContactResult evaluate_contact(const Discretization& d, const ContactPair& pair,
+                               const Eigen::VectorXd& u);
+
+/// ∫ traction ds of a pair at the state u, and the states of its points (and of the other
+/// body's points into other_states, if given).
+Vec2 contact_resultant(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u,
+                       std::vector<contact::PointState>& states,
+                       std::vector<contact::PointState>* other_states = nullptr);
+
+}  // namespace hpcontact::model
