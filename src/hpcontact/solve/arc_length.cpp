@@ -22,17 +22,18 @@ bool arc_step(LoadPathSystem& system, Eigen::VectorXd& x, double& lambda, double
   Eigen::VectorXd r;
   system.set_load_factor(lambda);
   system.evaluate(x, r, &K);
+  const int n = system.path_size();
   try {
-    solver.factorize(K);
+    system.factorize(solver, K);
   } catch (const NumericalError& e) {
     why = std::string("singular tangent at the start of the step: ") + e.what();
     return false;
   }
   Eigen::VectorXd f = -system.load_derivative(x);
-  Eigen::VectorXd dxF = solver.solve(f);
+  Eigen::VectorXd dxF = system.solve(solver, f);
   // Predictor: continue in the direction of the previous step (or of rising λ at the start).
-  double sign = previous_dx.size() ? (previous_dx.dot(dxF) >= 0 ? 1.0 : -1.0) : 1.0;
-  double dlam = sign * dl / dxF.norm();
+  double sign = previous_dx.size() ? (previous_dx.head(n).dot(dxF.head(n)) >= 0 ? 1.0 : -1.0) : 1.0;
+  double dlam = sign * dl / dxF.head(n).norm();
   Eigen::VectorXd Dx = dlam * dxF;
   double Dlam = dlam;
   double scale = 0;
@@ -52,17 +53,18 @@ bool arc_step(LoadPathSystem& system, Eigen::VectorXd& x, double& lambda, double
       return true;
     }
     try {
-      solver.factorize(K);
+      system.factorize(solver, K);
     } catch (const NumericalError& e) {
       why = std::string("singular tangent: ") + e.what();
       return false;
     }
     f = -system.load_derivative(x + Dx);
-    dxF = solver.solve(f);
-    const Eigen::VectorXd dxR = solver.solve(-r);
-    // ‖Dx + dxR + δλ dxF‖² = dl²
+    dxF = system.solve(solver, f);
+    const Eigen::VectorXd dxR = system.solve(solver, -r);
+    // ‖Dx + dxR + δλ dxF‖² = dl² over the first n unknowns
     const Eigen::VectorXd u = Dx + dxR;
-    const double a = dxF.squaredNorm(), b = 2 * dxF.dot(u), c = u.squaredNorm() - dl * dl;
+    const double a = dxF.head(n).squaredNorm(), b = 2 * dxF.head(n).dot(u.head(n)),
+                 c = u.head(n).squaredNorm() - dl * dl;
     const double disc = b * b - 4 * a * c;
     if (!(disc >= 0) || a == 0) {
       why = "the arc-length constraint has no real root (the step length is too large here)";
@@ -71,7 +73,7 @@ bool arc_step(LoadPathSystem& system, Eigen::VectorXd& x, double& lambda, double
     const double s = std::sqrt(disc);
     const double l1 = (-b + s) / (2 * a), l2 = (-b - s) / (2 * a);
     const Eigen::VectorXd d1 = u + l1 * dxF, d2 = u + l2 * dxF;
-    const bool first = d1.dot(Dx) >= d2.dot(Dx);
+    const bool first = d1.head(n).dot(Dx.head(n)) >= d2.head(n).dot(Dx.head(n));
     Dx = first ? d1 : d2;
     Dlam += first ? l1 : l2;
   }
@@ -93,9 +95,9 @@ ArcLengthReport arc_length(LoadPathSystem& system, Eigen::VectorXd& x, double& l
     system.set_load_factor(lambda);
     system.evaluate(x, r, &K);
     LinearSolver solver(o.linear_solver);
-    solver.factorize(K);
+    system.factorize(solver, K);
     dl = std::abs((o.target - lambda) / std::max(1, o.steps)) *
-         solver.solve(-system.load_derivative(x)).norm();
+         system.solve(solver, -system.load_derivative(x)).head(system.path_size()).norm();
   }
   const double min_length = o.min_length > 0 ? o.min_length : dl / 1024;
   const double max_length = o.max_length > 0 ? o.max_length : 8 * dl;

@@ -19,6 +19,9 @@ public:
   virtual void set_load_factor(double lambda) = 0;
   /// ∂R/∂λ at x and the current λ (minus the load vector, for loads proportional to λ).
   virtual Eigen::VectorXd load_derivative(const Eigen::VectorXd& x) = 0;
+  /// The arc length measures the first path_size() unknowns (the displacements: unknowns
+  /// after them, e.g. contact multipliers, have other units and follow the path).
+  virtual int path_size() const { return size(); }
 };
 
 struct ArcLengthOptions {

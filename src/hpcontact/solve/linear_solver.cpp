@@ -108,6 +108,26 @@ struct LinearSolver::Impl {
   CholmodWithPivots cholmod;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
   UmfPackWithPivots lu;
+  /// The matrix factorised last: UMFPACK's solve reads A itself (iterative refinement), and
+  /// Eigen's wrapper keeps only a reference to it.
+  SparseMatrix matrix;
+  /// The sparsity pattern of the last matrix analysed (compressed column storage).
+  std::vector<SparseMatrix::StorageIndex> outer, inner;
+  bool analysed = false;
+
+  /// Whether A has the pattern analysed last; if not, it becomes the pattern to analyse.
+  bool same_pattern(const SparseMatrix& A) {
+    const auto n = A.cols(), nnz = A.nonZeros();
+    const bool same = analysed && static_cast<Eigen::Index>(outer.size()) == n + 1 &&
+                      static_cast<Eigen::Index>(inner.size()) == nnz &&
+                      std::equal(outer.begin(), outer.end(), A.outerIndexPtr()) &&
+                      std::equal(inner.begin(), inner.end(), A.innerIndexPtr());
+    if (!same) {
+      outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + n + 1);
+      inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + nnz);
+    }
+    return same;
+  }
 };
 
 LinearSolverKind linear_solver_kind(const std::string& name, const std::string& where) {
@@ -124,11 +144,22 @@ LinearSolver::~LinearSolver() = default;
 LinearSolver::LinearSolver(LinearSolver&&) noexcept = default;
 LinearSolver& LinearSolver::operator=(LinearSolver&&) noexcept = default;
 
-void LinearSolver::factorize(const SparseMatrix& A) {
+void LinearSolver::factorize(const SparseMatrix& A_in) {
   bool ok;
   SmallestPivot smallest;
+  // A copy in compressed storage (the pattern comparison needs it, and LU's solve reads A).
+  impl_->matrix = A_in;
+  impl_->matrix.makeCompressed();
+  const SparseMatrix& A = impl_->matrix;
+  const bool analyse = !impl_->same_pattern(A);
+  impl_->analysed = false;  // until this factorisation has succeeded
+  if (analyse) ++analyses_;
+  auto compute = [&](auto& solver) {
+    if (analyse) solver.analyzePattern(A);
+    solver.factorize(A);
+  };
   if (kind_ == LinearSolverKind::cholmod) {
-    impl_->cholmod.compute(A);
+    compute(impl_->cholmod);
     ok = impl_->cholmod.info() == Eigen::Success;
     const Eigen::VectorXd diagonal = ok ? Eigen::VectorXd(A.diagonal()) : Eigen::VectorXd();
     if (ok)
@@ -137,7 +168,7 @@ void LinearSolver::factorize(const SparseMatrix& A) {
     else
       smallest.row = impl_->cholmod.failed_row();
   } else if (kind_ == LinearSolverKind::ldlt) {
-    impl_->ldlt.compute(A);
+    compute(impl_->ldlt);
     ok = impl_->ldlt.info() == Eigen::Success;
     if (ok) {
       const Eigen::VectorXd diagonal = A.diagonal();
@@ -149,13 +180,16 @@ void LinearSolver::factorize(const SparseMatrix& A) {
       }
     }
   } else {
-    impl_->lu.compute(A);
+    compute(impl_->lu);
     ok = impl_->lu.info() == Eigen::Success;
     if (ok)
       impl_->lu.for_each_pivot(A, [&](int column, double ratio) { smallest.take(column, ratio); });
   }
   last_singular_row_ = -1;
-  if (ok && smallest.ratio > singular_pivot_ratio) return;
+  if (ok && smallest.ratio > singular_pivot_ratio) {
+    impl_->analysed = true;
+    return;
+  }
   last_singular_row_ = smallest.row;
   std::ostringstream os;
   os << "the stiffness matrix is singular or not positive definite";
@@ -175,6 +209,15 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
     case LinearSolverKind::lu: break;
   }
   return impl_->lu.solve(b);
+}
+
+Eigen::MatrixXd LinearSolver::solve_columns(const Eigen::MatrixXd& B) const {
+  switch (kind_) {
+    case LinearSolverKind::cholmod: return impl_->cholmod.solve(B);
+    case LinearSolverKind::ldlt: return impl_->ldlt.solve(B);
+    case LinearSolverKind::lu: break;
+  }
+  return impl_->lu.solve(B);
 }
 
 }  // namespace hpcontact::solve

@@ -15,7 +15,9 @@ enum class LinearSolverKind { cholmod, ldlt, lu };
 /// Parses "cholmod" / "ldlt" / "lu"; InputError naming `where` otherwise.
 LinearSolverKind linear_solver_kind(const std::string& name, const std::string& where);
 
-/// Factorises once, solves many right-hand sides.
+/// Factorises once, solves many right-hand sides. The symbolic analysis (ordering, elimination
+/// tree) is kept while the matrices factorised have the same sparsity pattern: Newton's
+/// tangents of one solve usually do, and then only the numeric factorisation is repeated.
 class LinearSolver {
 public:
   explicit LinearSolver(LinearSolverKind kind = LinearSolverKind::cholmod);
@@ -33,11 +35,16 @@ public:
   /// after a success, or when the solver names no row (LU).
   int last_singular_row() const { return last_singular_row_; }
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  /// Solves for every column of B at once.
+  Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& B) const;
+  /// Symbolic analyses done so far (a new one for each new sparsity pattern), for tests.
+  int analyses() const { return analyses_; }
 
 private:
   struct Impl;
   LinearSolverKind kind_;
   int last_singular_row_ = -1;
+  int analyses_ = 0;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -54,7 +54,7 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
       return report;
     }
     try {
-      solver.factorize(K);
+      system.factorize(solver, K);
     } catch (const NumericalError& e) {
       report.status = SolveStatus::singular;
       report.message = e.what();
@@ -62,7 +62,7 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
       report.iterations = it;
       return report;
     }
-    dx = solver.solve(-r);
+    dx = system.solve(solver, -r);
     if (options.line_search) {
       // Backtracking on |R|: the full correction unless it fails to reduce the residual, else
       // the first of ½, ¼, ... that does (or the best of them). The full step is evaluated

@@ -16,8 +16,17 @@ class NonlinearSystem {
 public:
   virtual ~NonlinearSystem() = default;
   virtual int size() const = 0;
-  /// R(x) into r; if K is not null, the tangent dR/dx (symmetric) into *K.
+  /// R(x) into r; if K is not null, the tangent dR/dx into *K.
   virtual void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, SparseMatrix* K) = 0;
+  /// Factorises a tangent K that evaluate() formed, with `sparse` (kept by the caller from one
+  /// tangent to the next, so a repeated sparsity pattern is analysed once); NumericalError when
+  /// it is singular. A system whose tangent has a structure to exploit (multipliers) overrides
+  /// this and solve() together.
+  virtual void factorize(LinearSolver& sparse, const SparseMatrix& K) { sparse.factorize(K); }
+  /// K⁻¹ b with the tangent factorize() took last.
+  virtual Eigen::VectorXd solve(const LinearSolver& sparse, const Eigen::VectorXd& b) const {
+    return sparse.solve(b);
+  }
 };
 
 struct NewtonOptions {

@@ -189,3 +189,21 @@ TEST(LinearSolver, SingularPivotNamesARowOfTheFreePart) {
     EXPECT_EQ(s.last_singular_row(), -1) << kind_name(kind);
   }
 }
+
+// A matrix with the pattern of the last one shall be factorised without a new symbolic
+// analysis, and solved as accurately; a new pattern shall be analysed again.
+TEST(LinearSolver, SamePatternKeepsTheSymbolicAnalysis) {
+  for (auto kind : {LinearSolverKind::cholmod, LinearSolverKind::ldlt, LinearSolverKind::lu}) {
+    LinearSolver s(kind);
+    SparseMatrix A = laplacian_2d(8);
+    const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(A.rows(), -1, 2);
+    for (int k = 0; k < 3; ++k) {
+      s.factorize(A);
+      EXPECT_LE((s.solve(A * x) - x).norm(), 1e-12 * x.norm());
+      A.coeffRef(5, 5) += 1.0;  // same pattern, new values
+    }
+    EXPECT_EQ(s.analyses(), 1);
+    s.factorize(laplacian_2d(9));
+    EXPECT_EQ(s.analyses(), 2);
+  }
+}

@@ -1,0 +1,175 @@
+// Block elimination of the multipliers: dependent ones by their own rows, the rest by a dense
+// Schur complement on an augmented sparse factorisation (see saddle_point.hpp for the algebra).
+//
+// With z = (z_F, z_D), the dependent rows give z_D = H_DD⁻¹ (b_D − H_DF z_F); substituted,
+//   K Δu + Ẽ z_F = b_u − E_D H_DD⁻¹ b_D,     Ẽ = E_F − E_D H_DD⁻¹ H_DF,
+//   G_F Δu + H̃ z_F = b_F − H_FD H_DD⁻¹ b_D,  H̃ = H_FF − H_FD H_DD⁻¹ H_DF.
+// Adding G_Fᵀ Γ⁻¹ times the second to the first: A Δu + Ê z_F = b̂_u with A = K + G_Fᵀ Γ⁻¹ G_F,
+// Ê = Ẽ + G_Fᵀ Γ⁻¹ H̃; so Δu = A⁻¹ b̂_u − Y z_F, Y = A⁻¹ Ê, and (H̃ − G_F Y) z_F = b̃_F − G_F A⁻¹ b̂_u.
+#include "hpcontact/solve/saddle_point.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "hpcontact/core/error.hpp"
+
+namespace hpcontact::solve {
+
+namespace {
+using RowMajor = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+}
+
+void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, int n,
+                                  const Eigen::VectorXd& gamma) {
+  n_ = n;
+  m_ = static_cast<int>(J.rows()) - n;
+  HPC_ASSERT(m_ >= 0 && J.cols() == J.rows() && gamma.size() == m_, "saddle point blocks");
+  const SparseMatrix K = J.topLeftCorner(n_, n_);
+  E_ = J.topRightCorner(n_, m_);
+  H_ = J.bottomRightCorner(m_, m_);
+  const RowMajor G_rows = J.bottomLeftCorner(m_, n_);
+  H_rows_ = H_;
+  const RowMajor& H_rows = H_rows_;
+
+  // Dependent rows: no u-part, a non-zero diagonal, and ties only to free multipliers.
+  std::vector<char> dependent(m_, 0);
+  for (int k = 0; k < m_; ++k) {
+    bool has_g = false;
+    for (RowMajor::InnerIterator it(G_rows, k); it; ++it) has_g = has_g || it.value() != 0.0;
+    dependent[k] = !has_g && H_.coeff(k, k) != 0.0;
+  }
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (int k = 0; k < m_; ++k) {
+      if (!dependent[k]) continue;
+      for (RowMajor::InnerIterator it(H_rows, k); it; ++it)
+        if (it.col() != k && it.value() != 0.0 && dependent[it.col()]) {
+          dependent[k] = 0;
+          changed = true;
+          break;
+        }
+    }
+  }
+  is_dependent_ = dependent;
+  free_.clear();
+  dependent_.clear();
+  position_.assign(m_, -1);
+  for (int k = 0; k < m_; ++k) {
+    auto& set = dependent[k] ? dependent_ : free_;
+    position_[k] = static_cast<int>(set.size());
+    set.push_back(k);
+  }
+  const int nf = static_cast<int>(free_.size());
+  h_dd_.resize(static_cast<Eigen::Index>(dependent_.size()));
+  for (size_t i = 0; i < dependent_.size(); ++i) h_dd_(i) = H_.coeff(dependent_[i], dependent_[i]);
+
+  // H̃ and Ẽ: the free blocks, less the ties through the dependent multipliers.
+  H_tilde_ = Eigen::MatrixXd::Zero(nf, nf);
+  Eigen::MatrixXd E_hat = Eigen::MatrixXd::Zero(n_, nf);
+  for (int f = 0; f < nf; ++f) E_hat.col(f) = E_.col(free_[f]);
+  for (int k = 0; k < m_; ++k)
+    for (RowMajor::InnerIterator it(H_rows, k); it; ++it) {
+      const int l = static_cast<int>(it.col());
+      if (!dependent[k] && !dependent[l]) H_tilde_(position_[k], position_[l]) += it.value();
+    }
+  for (size_t i = 0; i < dependent_.size(); ++i) {
+    const int d = dependent_[i];
+    // the tie row: H_dF, and the column H_Fd that multiplies z_d in the free rows
+    for (RowMajor::InnerIterator it(H_rows, d); it; ++it) {
+      const int f = static_cast<int>(it.col());
+      if (f == d || dependent[f]) continue;
+      const double tie = it.value() / h_dd_(i);
+      E_hat.col(position_[f]) -= tie * Eigen::VectorXd(E_.col(d));
+      for (SparseMatrix::InnerIterator jt(H_, d); jt; ++jt)  // column d of H
+        if (!dependent[jt.row()]) H_tilde_(position_[jt.row()], position_[f]) -= jt.value() * tie;
+    }
+  }
+
+  // A = K + G_Fᵀ Γ⁻¹ G_F, with the pattern of every stored row of G kept.
+  inv_gamma_ = Eigen::VectorXd::Zero(nf);
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(K.nonZeros());
+  for (int c = 0; c < K.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(K, c); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
+  for (int k = 0; k < m_; ++k) {
+    double w = 0;
+    if (!dependent[k] && gamma(k) > 0) {
+      w = 1 / gamma(k);
+      inv_gamma_(position_[k]) = w;
+    }
+    for (RowMajor::InnerIterator a(G_rows, k); a; ++a)
+      for (RowMajor::InnerIterator b(G_rows, k); b; ++b)
+        t.emplace_back(a.col(), b.col(), w * a.value() * b.value());
+  }
+  SparseMatrix A(n_, n_);
+  A.setFromTriplets(t.begin(), t.end());
+  sparse.factorize(A);
+
+  RowMajor G_F(nf, n_);
+  {
+    std::vector<Eigen::Triplet<double>> tf;
+    for (int f = 0; f < nf; ++f)
+      for (RowMajor::InnerIterator it(G_rows, free_[f]); it; ++it) tf.emplace_back(f, it.col(), it.value());
+    G_F.setFromTriplets(tf.begin(), tf.end());
+  }
+  G_F_ = G_F;
+  for (int f = 0; f < nf; ++f)
+    if (inv_gamma_(f) != 0)
+      for (RowMajor::InnerIterator it(G_F, f); it; ++it)
+        E_hat.row(it.col()) += inv_gamma_(f) * it.value() * H_tilde_.row(f);
+  if (nf == 0) {
+    Y_.resize(n_, 0);
+    return;
+  }
+  Y_ = sparse.solve_columns(E_hat);
+  const Eigen::MatrixXd S = H_tilde_ - G_F * Y_;
+  S_.compute(S);
+  const double rcond = S_.rcond();
+  if (!(rcond > 1e-14)) {
+    std::ostringstream os;
+    os << "the multiplier system is singular (reciprocal condition " << rcond << " of its "
+       << nf << " coupled rows): constraints that repeat one another, or a force target no "
+          "constraint carries";
+    throw NumericalError(os.str());
+  }
+}
+
+Eigen::VectorXd SaddlePointSolver::solve(const LinearSolver& sparse, const Eigen::VectorXd& b) const {
+  const int nf = static_cast<int>(free_.size()), nd = static_cast<int>(dependent_.size());
+  const Eigen::VectorXd b_u = b.head(n_);
+  Eigen::VectorXd zd0(nd), b_F(nf);
+  for (int i = 0; i < nd; ++i) zd0(i) = b(n_ + dependent_[i]) / h_dd_(i);
+  for (int f = 0; f < nf; ++f) b_F(f) = b(n_ + free_[f]);
+  // b̃_u = b_u − E_D z_D⁰, b̃_F = b_F − H_FD z_D⁰ with z_D⁰ = H_DD⁻¹ b_D
+  Eigen::VectorXd bt_u = b_u;
+  for (int i = 0; i < nd; ++i) {
+    if (zd0(i) == 0.0) continue;
+    const int d = dependent_[i];
+    bt_u -= zd0(i) * Eigen::VectorXd(E_.col(d));
+    for (SparseMatrix::InnerIterator it(H_, d); it; ++it)  // column d of H
+      if (!is_dependent_[it.row()]) b_F(position_[it.row()]) -= it.value() * zd0(i);
+  }
+  Eigen::VectorXd bh_u = bt_u;
+  if (nf > 0) bh_u += G_F_.transpose() * inv_gamma_.cwiseProduct(b_F);
+  const Eigen::VectorXd a = sparse.solve(bh_u);
+  Eigen::VectorXd z_F;
+  Eigen::VectorXd du = a;
+  if (nf > 0) {
+    z_F = S_.solve(b_F - G_F_ * a);
+    du -= Y_ * z_F;
+  }
+  Eigen::VectorXd x(n_ + m_);
+  x.head(n_) = du;
+  for (int f = 0; f < nf; ++f) x(n_ + free_[f]) = z_F(f);
+  // z_D = H_DD⁻¹ (b_D − H_DF z_F)
+  for (int i = 0; i < nd; ++i) {
+    const int d = dependent_[i];
+    double v = b(n_ + d);
+    for (RowMajor::InnerIterator it(H_rows_, d); it; ++it)
+      if (it.col() != d) v -= it.value() * x(n_ + it.col());
+    x(n_ + d) = v / h_dd_(i);
+  }
+  return x;
+}
+
+}  // namespace hpcontact::solve
