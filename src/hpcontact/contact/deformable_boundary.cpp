@@ -2,6 +2,7 @@
 // is sampled to bracket its minima, which are then refined by the Pegasus method.
 #include "hpcontact/contact/deformable_boundary.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -96,6 +97,71 @@ void DeformableBoundary::evaluate(int k, double t, BoundaryPoint& bp) const {
   bp.normal = (e.local_edge < 2 ? Vec2(T.y(), -T.x()) : Vec2(-T.y(), T.x())).normalized();
 }
 
+Vec2 DeformableBoundary::undeformed(int k, double t) const {
+  const Edge& e = edges_[k];
+  return fem::edge_geometry(maps_[e.element], e.local_edge, t, nullptr, nullptr);
+}
+
+std::vector<DeformableBoundary::Vertex> DeformableBoundary::vertices() const {
+  std::vector<Vertex> out;
+  std::vector<int> count;
+  BoundaryPoint bp;
+  for (int k = 0; k < n_edges(); ++k)
+    for (double t : {-1.0, 1.0}) {
+      evaluate(k, t, bp);
+      // an edge's tangent points along its parameter; the vertex's mean tangent follows the
+      // first edge that has it
+      const Vec2 tau = bp.dx_dt.normalized();
+      const double tol = 1e-12 * (1 + bp.x.norm());
+      size_t v = 0;
+      while (v < out.size() && (out[v].x - bp.x).norm() > tol) ++v;
+      if (v == out.size()) {
+        out.push_back({bp.x, tau});
+        count.push_back(1);
+      } else {
+        out[v].tangent += tau.dot(out[v].tangent) >= 0 ? tau : Vec2(-tau);
+        ++count[v];
+      }
+    }
+  for (auto& v : out) v.tangent.normalize();
+  return out;
+}
+
+std::vector<double> DeformableBoundary::segments(int k, const DeformableBoundary& master) const {
+  std::vector<double> ends{-1.0, 1.0};
+  BoundaryPoint bp;
+  evaluate(k, -1, bp);
+  const Vec2 a = bp.x;
+  evaluate(k, 1, bp);
+  const double length = (bp.x - a).norm();
+  for (const Vertex& v : master.vertices()) {
+    // f(t) = (x(t) − x_v)·τ_v changes sign where the edge passes the normal through the vertex
+    auto f = [&](double t) {
+      evaluate(k, t, bp);
+      return (bp.x - v.x).dot(v.tangent);
+    };
+    double ta = -1, fa = f(ta);
+    for (int i = 1; i <= kSamples; ++i) {
+      const double tb = -1 + 2.0 * i / kSamples, fb = f(tb);
+      if ((fa < 0) != (fb < 0)) {
+        const double t = pegasus_root(f, ta, tb, fa, fb, 1e-15);
+        evaluate(k, t, bp);
+        // only a vertex near the edge: one across the body would project elsewhere
+        if (t > -1 && t < 1 && (bp.x - v.x).norm() < 0.5 * length) ends.push_back(t);
+      }
+      ta = tb;
+      fa = fb;
+    }
+  }
+  std::sort(ends.begin(), ends.end());
+  // segments shorter than round-off would carry no quadrature weight
+  std::vector<double> out{ends.front()};
+  for (size_t i = 1; i < ends.size(); ++i)
+    if (ends[i] - out.back() > 1e-12) out.push_back(ends[i]);
+  if (out.back() < 1.0) out.back() = 1.0;
+  return out;
+}
+
 double DeformableBoundary::curvature(const BoundaryPoint& foot) const {
   // central differences of the exact tangent (step 1e-4: error ~1e-8 relative)
   const double h = 1e-4;
@@ -123,9 +189,14 @@ bool DeformableBoundary::project(const Vec2& x, BoundaryPoint& foot) const {
     }
   };
   auto shared_vertex = [&](int k, double end) { return edges_[k].shared_end[end > 0 ? 1 : 0]; };
+  // A point level with a free end of the boundary (to round-off of the edge's size) has its
+  // foot there: a node of the other body over the end of a matching boundary.
+  auto level_with_free_end = [&](int k, double end, double f_end) {
+    return !shared_vertex(k, end) && std::abs(f_end) <= 1e-10 * bp.dx_dt.squaredNorm();
+  };
   for (int k = 0; k < static_cast<int>(edges_.size()); ++k) {
     double ta = -1, fa = f(k, ta);
-    if (fa < 0 && shared_vertex(k, -1)) consider(k, -1);
+    if ((fa < 0 && shared_vertex(k, -1)) || level_with_free_end(k, -1, fa)) consider(k, -1);
     for (int i = 1; i <= kSamples; ++i) {
       const double tb = -1 + 2.0 * i / kSamples, fb = f(k, tb);
       if (fa > 0 && fb <= 0) {
@@ -136,7 +207,7 @@ bool DeformableBoundary::project(const Vec2& x, BoundaryPoint& foot) const {
       ta = tb;
       fa = fb;
     }
-    if (fa > 0 && shared_vertex(k, 1)) consider(k, 1);
+    if ((fa > 0 && shared_vertex(k, 1)) || level_with_free_end(k, 1, fa)) consider(k, 1);
   }
   return found;
 }

@@ -48,6 +48,23 @@ public:
 
   /// The point of edge k at parameter t, deformed by the current displacement.
   void evaluate(int k, double t, BoundaryPoint& bp) const;
+  /// The same point undeformed.
+  Vec2 undeformed(int k, double t) const;
+  int n_edges() const { return static_cast<int>(edges_.size()); }
+
+  /// A vertex of the deformed boundary: its position and the mean unit tangent of the edges
+  /// that meet there (one edge at an end of the boundary).
+  struct Vertex {
+    Vec2 x, tangent;
+  };
+  /// The vertices of the boundary's edges, each once.
+  std::vector<Vertex> vertices() const;
+
+  /// The parameters of edge k between which the closest point of `master` to the points of the
+  /// edge lies on one edge of `master`: where the projection crosses a vertex of master, the
+  /// ends of the mortar segments, ascending, −1 and 1 included. Both boundaries' displacements
+  /// must be set.
+  std::vector<double> segments(int k, const DeformableBoundary& master) const;
 
   /// n · d²x/dt² at a foot (the curvature term of the consistent tangent), by central
   /// differences of the exact tangent; only active points of a tangent evaluation need it.

@@ -33,6 +33,8 @@ public:
   double gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const override;
   std::string describe() const override;
   Vec2 offset() const override { return lambda_ * d_; }
+  /// The displacement per unit load factor.
+  Vec2 direction() const { return d_; }
 
 private:
   ObstaclePtr base_;

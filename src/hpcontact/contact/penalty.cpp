@@ -6,7 +6,7 @@
 namespace hpcontact::contact {
 
 ContactState contact_state(const PointState& s) {
-  if (s.gap > 0) return ContactState::open;
+  if (s.gap > 0 && !(s.pressure > 0)) return ContactState::open;
   if (s.stick_slip == StickSlip::stick) return ContactState::stick;
   if (s.stick_slip == StickSlip::slip) return ContactState::slip;
   return ContactState::contact;

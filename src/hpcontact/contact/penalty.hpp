@@ -32,8 +32,10 @@ struct PointState {
   Vec2 foot = Vec2::Zero();
 };
 
-/// What a contact point does: open (g_N > 0), in contact without friction (g_N ≤ 0, as the
-/// penalty counts it active), sticking or slipping. The codes are contact.vtu's `state`.
+/// What a contact point does: open (g_N > 0 and no pressure: exact enforcement carries a
+/// pressure where the gap between its nodes is slightly open), in contact without friction
+/// (g_N ≤ 0, as the penalty counts it active, or a pressure), sticking or slipping. The codes are
+/// contact.vtu's `state`.
 enum class ContactState { open = 0, contact = 1, stick = 2, slip = 3 };
 ContactState contact_state(const PointState& s);
 /// "open", "contact", "stick", "slip" (contact.csv's `state`).

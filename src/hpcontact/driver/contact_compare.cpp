@@ -92,9 +92,10 @@ nlohmann::json PressureComparison::measure(const model::Discretization& d,
                                            const model::ContactPair& pair,
                                            const Eigen::VectorXd& u,
                                            const std::vector<double>& zone_ends,
-                                           const std::string& csv_path) const {
+                                           const std::string& csv_path,
+                                           const Eigen::VectorXd* multipliers) const {
   // Hertz and the reference are integrated on the same points: locate each point only once.
-  const model::BoundaryPressureProbe probe(d, pair, u);
+  const model::BoundaryPressureProbe probe(d, pair, u, multipliers);
   std::unordered_map<double, std::pair<double, double>> located;  // x -> (from stress, penalty)
   auto at = [&](double x) {
     if (auto it = located.find(x); it != located.end()) return it->second;
@@ -125,20 +126,24 @@ nlohmann::json PressureComparison::measure(const model::Discretization& d,
   j["hertz_peak_pressure"] = p0;
   j["shtayerman_half_width"] = shtayerman_.half_width();
   j["pressure_measured_from"] = "stress";
-  // The same measures of the penalty traction eps_N <-g_N>, the contact pressure the method
-  // itself carries (oscillating while Γ* lies inside an element, clean once a node sits on it).
-  j["penalty_traction"] = errors([&](double x) { return at(x).second; });
+  // The same measures of the contact pressure the method itself carries: the penalty traction
+  // eps_N <-g_N> (oscillating while Γ* lies inside an element, clean once a node sits on it), or
+  // the multiplier of exact enforcement.
+  j[pair.constraints ? "multiplier" : "penalty_traction"] = errors([&](double x) { return at(x).second; });
   if (reference_) j["reference"] = reference_name_;
-  if (!csv_path.empty()) post::write_text_file(csv_path, pressure_csv(curve(d, pair, u, zone_ends)));
+  if (!csv_path.empty())
+    post::write_text_file(csv_path, pressure_csv(curve(d, pair, u, zone_ends, multipliers)));
   return j;
 }
 
 PressureCurve PressureComparison::curve(const model::Discretization& d,
                                         const model::ContactPair& pair, const Eigen::VectorXd& u,
-                                        const std::vector<double>& zone_ends) const {
-  const model::BoundaryPressureProbe probe(d, pair, u);
+                                        const std::vector<double>& zone_ends,
+                                        const Eigen::VectorXd* multipliers) const {
+  const model::BoundaryPressureProbe probe(d, pair, u, multipliers);
   const double b = hertz_.half_width();
   PressureCurve c;
+  c.multiplier = pair.constraints != nullptr;
   for (int i = 0; i <= 1000; ++i) c.x.push_back(1.5 * b * i / 1000);
   for (double z : zone_ends)
     if (z > 0 && z < 1.5 * b) c.x.push_back(z);
@@ -157,7 +162,8 @@ PressureCurve PressureComparison::curve(const model::Discretization& d,
 std::string pressure_csv(const PressureCurve& c) {
   std::ostringstream csv;
   csv.precision(12);
-  csv << "x,pressure_from_stress,pressure_penalty,hertz,shtayerman\n";
+  csv << "x,pressure_from_stress," << (c.multiplier ? "pressure_multiplier" : "pressure_penalty")
+      << ",hertz,shtayerman\n";
   for (size_t i = 0; i < c.x.size(); ++i)
     csv << c.x[i] << ',' << c.from_stress[i] << ',' << c.penalty[i] << ',' << c.hertz[i] << ','
         << c.shtayerman[i] << '\n';

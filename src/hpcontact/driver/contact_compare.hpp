@@ -25,13 +25,16 @@ struct ReferenceCurve {
 struct PressureCurve {
   std::vector<double> x;            ///< coordinate along the obstacle, ascending
   std::vector<double> from_stress;  ///< -n·σ·n (0 where no contact edge reaches x)
-  std::vector<double> penalty;      ///< eps_N <-g_N>
+  std::vector<double> penalty;      ///< the pressure the method carries: eps_N <-g_N>, or the multiplier
   std::vector<double> hertz, shtayerman;
   std::vector<double> reference;    ///< the reference curve; empty when the input names none
+  /// Whether `penalty` holds the multiplier of exact enforcement (column pressure_multiplier)
+  /// rather than the penalty traction (pressure_penalty).
+  bool multiplier = false;
 };
 
-/// The curve as CSV text: x,pressure_from_stress,pressure_penalty,hertz,shtayerman (the
-/// reference is not written: it is an input), 12 significant digits.
+/// The curve as CSV text: x,pressure_from_stress,pressure_penalty (or pressure_multiplier),
+/// hertz,shtayerman (the reference is not written: it is an input), 12 significant digits.
 std::string pressure_csv(const PressureCurve& curve);
 
 /// The contact pressure of a pair against Hertz, Shtayerman (for the exact circle) and, if the
@@ -53,12 +56,14 @@ public:
   /// keeps its kink.
   nlohmann::json measure(const model::Discretization& d, const model::ContactPair& pair,
                          const Eigen::VectorXd& u, const std::vector<double>& zone_ends,
-                         const std::string& csv_path) const;
+                         const std::string& csv_path,
+                         const Eigen::VectorXd* multipliers = nullptr) const;
 
   /// The pair's pressure on 1001 points of [0, 1.5 b_Hertz] and on the zone ends inside it,
   /// with Hertz, Shtayerman and the reference there.
   PressureCurve curve(const model::Discretization& d, const model::ContactPair& pair,
-                      const Eigen::VectorXd& u, const std::vector<double>& zone_ends) const;
+                      const Eigen::VectorXd& u, const std::vector<double>& zone_ends,
+                      const Eigen::VectorXd* multipliers = nullptr) const;
 
 private:
   analytic::Hertz hertz_;

@@ -12,7 +12,7 @@ ContactTable contact_table(const std::vector<model::ContactResult>& contact,
   for (size_t k = 0; k < contact.size(); ++k)
     for (size_t i = 0; i < contact[k].states.size(); ++i) {
       const auto& p = contact[k].states[i];
-      const auto& X = pairs[k].points[i].X;
+      const auto& X = contact[k].X[i];
       t.pair.push_back(static_cast<int>(k));
       t.X.push_back(X.x());
       t.Y.push_back(X.y());

@@ -92,6 +92,10 @@ struct SolvedState {
   Eigen::VectorXd u;
   std::vector<model::ContactResult> contact;
   std::vector<model::ContactPair> pairs;
+  std::vector<Eigen::VectorXd> multipliers;  ///< per pair (empty for penalty pairs)
+  const Eigen::VectorXd* multipliers_of(size_t k) const {
+    return k < multipliers.size() && multipliers[k].size() ? &multipliers[k] : nullptr;
+  }
 };
 
 nlohmann::json points_json(const std::vector<Vec2>& points) {
@@ -162,7 +166,7 @@ nlohmann::json contact_json(const SolvedState& st, const PressureComparison* com
       }
       if (previous && previous->stick_slip != contact::StickSlip::open &&
           s.stick_slip != contact::StickSlip::open && previous->stick_slip != s.stick_slip)
-        transitions.push_back(0.5 * (pair.points[i - 1].X + pair.points[i].X));
+        transitions.push_back(0.5 * (c.X[i - 1] + c.X[i]));
       previous = &s;
     }
     fj["stick_points"] = n_stick;
@@ -175,7 +179,8 @@ nlohmann::json contact_json(const SolvedState& st, const PressureComparison* com
     cj["friction"] = fj;
   }
   if (comparison)
-    cj.update(comparison->measure(*st.d, st.pairs.front(), st.u, zone_ends(st), csv_path));
+    cj.update(comparison->measure(*st.d, st.pairs.front(), st.u, zone_ends(st), csv_path,
+                                  st.multipliers_of(0)));
   return cj;
 }
 
@@ -198,7 +203,8 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
     const PressureComparison* cmp = comparison(st);
     s.extra["contact"] = contact_json(st, cmp, "");
     r.contact = contact_table(st.contact, st.pairs);
-    if (cmp) r.pressure_curve = cmp->curve(disc, st.pairs.front(), st.u, zone_ends(st));
+    if (cmp)
+      r.pressure_curve = cmp->curve(disc, st.pairs.front(), st.u, zone_ends(st), st.multipliers_of(0));
   }
   if (out_dir.empty()) return;
   const fs::path out(out_dir);
@@ -343,7 +349,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     // The pressure errors of one iteration into its record, its curve into iter_dir.
     auto add_pressure = [&](nlohmann::json& j, int iteration, const adapt::Solved& solved) {
       const auto& sol = solved.solution;
-      const SolvedState st{&solved.discretization, sol.u, sol.contact, sol.pairs};
+      const SolvedState st{&solved.discretization, sol.u, sol.contact, sol.pairs, sol.multipliers};
       const PressureComparison* cmp = comparison(st);
       if (!cmp) return;
       const std::string csv =
@@ -412,7 +418,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
                                             : (fs::path(options.out_dir) / "last-good").string();
     if (!out_dir.empty()) fs::create_directories(out_dir);
     SolvedState st{&last->discretization, last->solution.u, last->solution.contact,
-                   last->solution.pairs};
+                   last->solution.pairs, last->solution.multipliers};
     post_process(last->spec, st, out_dir, options, comparison, result);
     if (!out_dir.empty())
       post::write_text_file((fs::path(out_dir) / "mesh.yaml").string(), mesh_yaml(last->spec));
@@ -463,7 +469,8 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     if (spec.output.steps && spec.output.vtu && !options.out_dir.empty()) {
       fs::create_directories(fs::path(options.out_dir) / "steps");
       on_step = [&](const Eigen::VectorXd& u, const model::NonlinearSolution::PathPoint&,
-                    const std::vector<model::ContactPair>& pairs) {
+                    const std::vector<model::ContactPair>& pairs,
+                    const std::vector<Eigen::VectorXd>& multipliers) {
         std::ostringstream name;
         name << std::setw(4) << std::setfill('0') << step_files.size() + 1 << ".vtu";
         step_files.push_back("steps/step-" + name.str());
@@ -472,7 +479,9 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
                         spec.output.vtu_subdivisions);
         if (pairs.empty()) return;
         std::vector<model::ContactResult> results;
-        for (const auto& pair : pairs) results.push_back(model::evaluate_contact(d, pair, u));
+        for (size_t k = 0; k < pairs.size(); ++k)
+          results.push_back(model::evaluate_contact(
+              d, pairs[k], u, multipliers[k].size() ? &multipliers[k] : nullptr));
         contact_files.push_back("steps/contact-" + name.str());
         post::write_contact_vtu((fs::path(options.out_dir) / contact_files.back()).string(), pairs,
                                 results);
@@ -500,7 +509,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       if (!options.out_dir.empty() && sol.load_steps > 0) {
         const std::string good = (fs::path(options.out_dir) / "last-good").string();
         fs::create_directories(good);
-        const SolvedState last{&d, sol.u, sol.contact, sol.pairs};
+        const SolvedState last{&d, sol.u, sol.contact, sol.pairs, sol.multipliers};
         post_process(spec, last, good, options, comparison, result);
         write_path(spec, sol, good);
         s.converged = false;
@@ -521,6 +530,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     st.u = sol.u;
     st.contact = std::move(sol.contact);
     st.pairs = std::move(sol.pairs);
+    st.multipliers = std::move(sol.multipliers);
   }
   result.discretization = std::move(d);
   st.d = &result.discretization;

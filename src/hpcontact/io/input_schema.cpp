@@ -287,9 +287,26 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Names of the body's edge sets that may come into contact.", .min_items = 1},
       {.path = "contact[].obstacle", .type = T::section, .required = true,
        .doc = "What the body's edges touch: a rigid obstacle or another body."},
-      {.path = "contact[].penalty", .type = T::number, .required = true,
-       .unit = "force/length³",
-       .doc = "Normal penalty eps_N (seed eq. 3.19); the seed uses 1000·E.", .lower = greater_than(0)},
+      {.path = "contact[].enforcement", .type = T::choice, .default_yaml = "penalty",
+       .doc = "augmented-lagrangian: the contact condition exactly (g_N >= 0, pressure >= 0, "
+              "pressure × g_N = 0), the pressure an unknown at the multiplier nodes (the p + 1 "
+              "Gauss-Lobatto points of each contact edge of trace degree p), found with the "
+              "active set by a semi-smooth Newton method; penalty: the seed's normal penalty at "
+              "the Gauss points (eq. 3.19), whose pressure eps_N <-g_N> needs a penetration.",
+       .choices = {"augmented-lagrangian", "penalty"}},
+      {.path = "contact[].constraint", .type = T::choice, .default_yaml = "mortar",
+       .doc = "augmented-lagrangian: where the non-penetration condition is imposed. mortar: the "
+              "gap weighted by each node's Lagrange polynomial over its edges (integrated with "
+              "the pair's quadrature, split where the other body's element boundaries project "
+              "between two bodies); collocation: the gap at each node.",
+       .choices = {"mortar", "collocation"}},
+      {.path = "contact[].penalty", .type = T::number, .unit = "force/length³",
+       .doc = "penalty: the normal penalty eps_N (seed eq. 3.19; the seed uses 1000·E), "
+              "required. augmented-lagrangian: the augmentation of the active-set test and of "
+              "the factorised tangent, a parameter of convergence speed and conditioning, not "
+              "of the answer; absent: E/(1 - nu²) p²/h at each node (E of the body, p and h of "
+              "the node's contact edge).",
+       .lower = greater_than(0)},
       {.path = "contact[].quadrature", .type = T::integer, .default_yaml = "50",
        .doc = "Gauss points per contact edge, independent of p (seed: 50).",
        .lower = at_least(1), .upper = at_most(200)},

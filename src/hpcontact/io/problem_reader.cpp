@@ -457,7 +457,14 @@ class SpecBuilder {
       const BodySpec& body = body_named(node["body"], item_path + ".body", bodies);
       c.edge_sets = edge_set_names(node["edges"], item_path + ".edges", body);
       c.obstacle = obstacle(node["obstacle"], item_path + ".obstacle", bodies, c.body);
-      c.penalty = number(node["penalty"]);
+      c.enforcement = node["enforcement"].Scalar() == "augmented-lagrangian"
+                          ? Enforcement::augmented_lagrangian
+                          : Enforcement::penalty;
+      c.constraint = node["constraint"].Scalar() == "collocation" ? ConstraintRule::collocation
+                                                                   : ConstraintRule::mortar;
+      if (node["penalty"]) c.penalty = number(node["penalty"]);
+      else if (c.enforcement == Enforcement::penalty)
+        source_.fail(node, item_path, "missing key 'penalty' (required by enforcement: penalty)");
       c.quadrature = integer(node["quadrature"]);
       if (const YAML::Node cmp = node["compare"]) {
         PressureCompareSpec pc;

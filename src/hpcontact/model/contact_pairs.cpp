@@ -2,7 +2,6 @@
 #include "hpcontact/model/contact_pairs.hpp"
 
 #include <algorithm>
-#include <map>
 
 #include "hpcontact/core/error.hpp"
 
@@ -36,46 +35,23 @@ std::vector<int> edges_named(const Body& body, const std::vector<std::string>& n
 /// The contact points of `edges` in the order of the boundary path(s) they form: edges sorted
 /// into chains through shared nodes, the points of each edge running along its chain (zone ends
 /// are found between neighbouring points, so the list must follow the boundary whatever the
-/// order the edge sets list the edges in). `edges` is reordered the same way.
+/// order the edge sets list the edges in). `edges` is reordered the same way, and each point's
+/// ContactPoint::edge indexes it.
 std::vector<contact::ContactPoint> chained_contact_points(const Body& body, std::vector<int>& edges,
-                                                          int quadrature) {
-  const auto& m = body.mesh;
-  std::map<int, std::vector<int>> at_node;  // node -> positions in `edges`
-  for (size_t k = 0; k < edges.size(); ++k)
-    for (int v : {m.edge(edges[k]).v0, m.edge(edges[k]).v1}) at_node[v].push_back(static_cast<int>(k));
-  std::vector<bool> used(edges.size(), false);
-  std::vector<int> ordered;
-  std::vector<bool> reversed;  // the edge's own direction v0 -> v1 runs against the chain
-  auto walk = [&](int k, int from) {
-    while (k >= 0 && !used[k]) {
-      used[k] = true;
-      const auto& e = m.edge(edges[k]);
-      ordered.push_back(edges[k]);
-      reversed.push_back(e.v0 != from);
-      const int to = e.v0 == from ? e.v1 : e.v0;
-      int next = -1;
-      for (int j : at_node[to])
-        if (!used[j]) next = j;
-      k = next;
-      from = to;
-    }
-  };
-  // Chains start at a node with one edge; what is left are closed loops.
-  for (const auto& [v, ks] : at_node)
-    if (ks.size() == 1 && !used[ks[0]]) walk(ks[0], v);
-  for (size_t k = 0; k < edges.size(); ++k)
-    if (!used[k]) walk(static_cast<int>(k), m.edge(edges[k]).v0);
-  edges = ordered;
+                                                          int quadrature,
+                                                          std::vector<contact::ChainEdge>* chain_out = nullptr) {
+  const auto chain = contact::chain_edges(body.mesh, edges);
+  if (chain_out) *chain_out = chain;
+  edges.clear();
   std::vector<contact::ContactPoint> points;
-  for (size_t k = 0; k < edges.size(); ++k) {
-    auto pts = contact::contact_points(m, body.dofs, body.maps, {edges[k]}, quadrature, body.thickness);
+  for (const auto& ce : chain) {
+    auto pts = contact::contact_points(body.mesh, body.dofs, body.maps, {ce.edge}, quadrature,
+                                       body.thickness);
+    for (auto& cp : pts) cp.edge = static_cast<int>(edges.size());
     // Local edge parameters run with the element's edge; put them along the chain.
-    const auto& e = m.edge(edges[k]);
-    const int q = e.quads[0], le = e.local_edge[0];
-    const int local_start = m.quad(q)[mesh::kEdgeVertices[le][0]];
-    const int chain_start = reversed[k] ? e.v1 : e.v0;
-    if (local_start != chain_start) std::reverse(pts.begin(), pts.end());
+    if (ce.against) std::reverse(pts.begin(), pts.end());
     points.insert(points.end(), pts.begin(), pts.end());
+    edges.push_back(ce.edge);
   }
   return points;
 }
@@ -88,8 +64,11 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
     ContactPair pair;
     const Body& body = body_named(d, cs.body, cs.where, &pair.body);
     pair.edges = edges_named(body, cs.edge_sets, cs.where.str() + ".edges");
-    HPC_REQUIRE(cs.penalty > 0, InputError, cs.where.str(), ".penalty: must be > 0 (got ",
-                cs.penalty, ")");
+    std::vector<contact::ChainEdge> chain;
+    pair.points = chained_contact_points(body, pair.edges, cs.quadrature, &chain);
+    const bool exact = cs.enforcement == Enforcement::augmented_lagrangian;
+    HPC_REQUIRE(cs.penalty > 0 || (exact && cs.penalty == 0), InputError, cs.where.str(),
+                ".penalty: must be > 0 (got ", cs.penalty, ")");
     pair.penalty = cs.penalty;
     if (cs.friction.law != "none") {
       const std::string key = cs.friction.where.str();
@@ -130,16 +109,21 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       const Body& other = body_named(d, o.body, cs.where, &pair.other);
       HPC_REQUIRE(pair.other != pair.body, InputError, cs.where.str(),
                   ".obstacle.body: must be another body than the contact's own");
-      const auto other_edges = edges_named(other, o.edge_sets, cs.where.str() + ".obstacle.edges");
+      pair.other_edges = edges_named(other, o.edge_sets, cs.where.str() + ".obstacle.edges");
+      pair.other_points = chained_contact_points(other, pair.other_edges, cs.quadrature);
+      // Both boundaries list their edges in chain order, as the points and multiplier nodes do.
       pair.boundary = std::make_shared<contact::DeformableBoundary>(body.mesh, body.dofs, body.maps,
                                                                     pair.edges);
       pair.other_boundary = std::make_shared<contact::DeformableBoundary>(
-          other.mesh, other.dofs, other.maps, other_edges);
+          other.mesh, other.dofs, other.maps, pair.other_edges);
       pair.obstacle = pair.other_boundary;
-      pair.other_edges = other_edges;
-      pair.other_points = chained_contact_points(other, pair.other_edges, cs.quadrature);
     }
-    pair.points = chained_contact_points(body, pair.edges, cs.quadrature);
+    if (exact) {
+      HPC_REQUIRE(cs.friction.law == "none", InputError, cs.where.str(),
+                  ".enforcement: friction is enforced by the penalty only so far; set enforcement: "
+                  "penalty for a pair with friction");
+      pair.constraints = make_pair_constraints(cs, body, chain, pair.points, pair.other >= 0);
+    }
     // An obstacle the body starts deep inside (more than 1 % of its size) is a wrong normal or
     // position, not a contact problem: say so before solving.
     if (pair.other < 0) {

@@ -11,6 +11,7 @@
 #include "hpcontact/contact/deformable_boundary.hpp"
 #include "hpcontact/contact/obstacle.hpp"
 #include "hpcontact/contact/penalty.hpp"
+#include "hpcontact/model/contact_multipliers.hpp"
 #include "hpcontact/model/discretization.hpp"
 
 namespace hpcontact::model {
@@ -30,6 +31,8 @@ struct ContactPair {
   std::vector<int> other_edges;  ///< the other body's contact edges (mesh edges)
   std::shared_ptr<const contact::DeformableBoundary> boundary, other_boundary;
   double penalty = 0;
+  /// Exact enforcement (augmented Lagrangian): the multiplier constraints; null for the penalty.
+  std::shared_ptr<const PairConstraints> constraints;
   contact::FrictionLaw friction;
   /// The friction histories of the pair's points (and of the other body's points), carried from
   /// load step to load step; shared by copies of the pair.

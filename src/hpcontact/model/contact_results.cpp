@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "hpcontact/core/error.hpp"
 #include "hpcontact/core/roots.hpp"
 #include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/fem/element_values.hpp"
@@ -15,13 +16,12 @@
 namespace hpcontact::model {
 
 Vec2 contact_resultant(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u,
-                       std::vector<contact::PointState>& states,
-                       std::vector<contact::PointState>* other_states) {
-  PairForces f = pair_forces(d, pair, u, nullptr);
-  const Vec2 r = f.resultant(pair);
-  states = std::move(f.states);
-  if (other_states) *other_states = std::move(f.other_states);
-  return r;
+                       const Eigen::VectorXd* multipliers) {
+  if (pair.constraints) {
+    HPC_ASSERT(multipliers, "an exact pair's resultant needs its multipliers");
+    return evaluate_constraints(d, pair, u, *multipliers, nullptr, nullptr, false).resultant;
+  }
+  return pair_forces(d, pair, u, nullptr).resultant(pair);
 }
 
 namespace {
@@ -123,24 +123,156 @@ ZoneEnds zone_ends(const Body& body, const std::vector<contact::ContactPoint>& p
   return z;
 }
 
+/// The position of a boundary point, undeformed and deformed (u all dofs).
+std::pair<Vec2, Vec2> boundary_position(const Body& body, int q, int le, double t,
+                                        const Eigen::VectorXd& u) {
+  Vec2 x, X;
+  gap_at(body, contact::RigidPlane(Vec2::Zero(), Vec2(0, 1)), q, le, t, u, &x, &X);
+  return {X, x};
+}
+
+/// The zone ends of an exactly enforced pair: between neighbouring multiplier nodes of one edge
+/// of which one carries pressure and the other not. The end is placed by the asymptotic forms of
+/// frictionless contact at a smooth zone end — the pressure falls like √(b − s) on the closed
+/// side, the gap rises like (s − b)^{3/2} on the open side — fitted to the two nodes on each side
+/// (s the distance along the boundary), the mean of the fits that exist, within the two nodes.
+ZoneEnds node_zone_ends(const Body& body, const ContactPair& pair,
+                        const std::vector<ContactResult::Node>& nodes, const Eigen::VectorXd& u) {
+  const PairConstraints& c = *pair.constraints;
+  ZoneEnds z;
+  const auto& edge_nodes = c.nodes.edge_nodes;
+  // The nodes of the edges in chain order, with the edges they belong to.
+  for (size_t k = 0; k < edge_nodes.size(); ++k) {
+    const auto& en = edge_nodes[k];
+    const int p = static_cast<int>(en.size()) - 1;
+    for (int i = 0; i < p; ++i) {
+      const int a = en[i], b = en[i + 1];
+      if (nodes[a].active == nodes[b].active) continue;
+      // closed node, open node, their parameters, and the neighbours beyond them (same chain)
+      const bool a_closed = nodes[a].active;
+      const int ic = a_closed ? i : i + 1, io = a_closed ? i + 1 : i, dir = a_closed ? -1 : 1;
+      auto node_at = [&](int idx) -> int {
+        if (idx >= 0 && idx <= p) return en[idx];
+        // across the vertex into the neighbouring edge of the chain
+        for (size_t kk = 0; kk < edge_nodes.size(); ++kk) {
+          if (kk == k) continue;
+          const auto& other = edge_nodes[kk];
+          const int vertex = idx < 0 ? en[0] : en[p];
+          for (size_t m = 0; m < other.size(); ++m)
+            if (other[m] == vertex) {
+              const int step = (m == 0) ? 1 : -1;
+              const int off = idx < 0 ? -idx : idx - p;
+              const int mm = static_cast<int>(m) + step * off;
+              if (mm >= 0 && mm < static_cast<int>(other.size())) return other[mm];
+            }
+        }
+        return -1;
+      };
+      const int closed = en[ic], open = en[io];
+      const int closed2 = node_at(ic + dir), open2 = node_at(io - dir);
+      const double h = (nodes[open].X - nodes[closed].X).norm();
+      std::vector<double> fits;  // distance of the end from the closed node
+      if (closed2 >= 0 && nodes[closed2].active && nodes[closed2].pressure > nodes[closed].pressure) {
+        const double d2 = (nodes[closed].X - nodes[closed2].X).norm();
+        const double p1 = nodes[closed].pressure, p2 = nodes[closed2].pressure;
+        fits.push_back(d2 * p1 * p1 / (p2 * p2 - p1 * p1));
+      }
+      if (open2 >= 0 && !nodes[open2].active && nodes[open].gap > 0 && nodes[open2].gap > nodes[open].gap) {
+        const double d2 = (nodes[open2].X - nodes[open].X).norm();
+        const double r = std::pow(nodes[open].gap / nodes[open2].gap, 2.0 / 3.0);
+        // (h − e) / (h + d2 − e) = r  ⇒  e = (h − r (h + d2)) / (1 − r)
+        fits.push_back((h - r * (h + d2)) / (1 - r));
+      }
+      double e = 0.5 * h;
+      if (!fits.empty()) {
+        e = 0;
+        for (double f : fits) e += f / fits.size();
+      }
+      e = std::clamp(e, 0.0, h);
+      // the parameter on the edge, linear between the two nodes' parameters
+      const double tc = c.nodes.edge_points[k][ic], to = c.nodes.edge_points[k][io];
+      const double t = tc + (to - tc) * (h > 0 ? e / h : 0.5);
+      const auto& edge = body.mesh.edge(pair.edges[k]);
+      const auto [X, x] = boundary_position(body, edge.quads[0], edge.local_edge[0], t, u);
+      z.X.push_back(X);
+      z.x.push_back(x);
+    }
+  }
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& n : nodes)
+    if (n.active) {
+      lo = std::min(lo, pair.coordinate(n.X));
+      hi = std::max(hi, pair.coordinate(n.X));
+    }
+  int below = -1, above = -1;
+  for (int k = 0; k < static_cast<int>(z.X.size()); ++k) {
+    const double co = pair.coordinate(z.X[k]);
+    if (co <= lo && (below < 0 || co > pair.coordinate(z.X[below]))) below = k;
+    if (co >= hi && (above < 0 || co < pair.coordinate(z.X[above]))) above = k;
+  }
+  if (below >= 0) z.outer.push_back(below);
+  if (above >= 0 && above != below) z.outer.push_back(above);
+  return z;
+}
+
 ContactResult contact_result(const Discretization& d, const ContactPair& pair,
-                             const Eigen::VectorXd& u) {
+                             const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers) {
   const Body& body = d.bodies[pair.body];
   ContactResult res;
-  res.resultant = contact_resultant(d, pair, u, res.states, &res.other_states);
-  for (const auto& cp : pair.points)
-    res.stress_pressure.push_back(stress_pressure(body, cp.element, cp.local_edge, cp.t, cp.normal, u));
-  for (size_t i = 0; i < pair.points.size(); ++i) {
-    res.p_max = std::max(res.p_max, res.states[i].pressure);
-    res.max_penetration = std::max(res.max_penetration, -res.states[i].gap);
+  ConstraintState s;
+  if (pair.constraints) {
+    HPC_ASSERT(multipliers, "an exact pair's results need its multipliers");
+    s = evaluate_constraints(d, pair, u, *multipliers, nullptr, nullptr, false);
   }
-  ZoneEnds own = zone_ends(body, pair.points, res.states, *pair.obstacle, pair, u);
+  const std::vector<contact::ContactPoint>& points =
+      !pair.constraints          ? pair.points
+      : s.segment_points.empty() ? pair.constraints->points
+                                 : s.segment_points;
+  if (pair.constraints) {
+    const PairConstraints& c = *pair.constraints;
+    res.states = s.points;
+    res.resultant = s.resultant;
+    for (int j = 0; j < c.size(); ++j) {
+      const auto& cp = c.node_points[j];
+      ContactResult::Node n;
+      std::tie(n.X, n.x) = boundary_position(body, cp.element, cp.local_edge, cp.t, u);
+      n.pressure = (*multipliers)(j);
+      n.gap = s.found[j] ? s.G(j) / c.weight(j) : std::numeric_limits<double>::infinity();
+      n.active = n.pressure > 0;
+      res.p_max = std::max(res.p_max, n.pressure);
+      res.nodes.push_back(n);
+    }
+  } else {
+    PairForces f = pair_forces(d, pair, u, nullptr);
+    res.resultant = f.resultant(pair);
+    res.states = std::move(f.states);
+    res.other_states = std::move(f.other_states);
+    for (const auto& ps : res.states) res.p_max = std::max(res.p_max, ps.pressure);
+  }
+  for (const auto& cp : points) {
+    res.X.push_back(cp.X);
+    res.stress_pressure.push_back(stress_pressure(body, cp.element, cp.local_edge, cp.t, cp.normal, u));
+  }
+  for (const auto& ps : res.states)
+    if (std::isfinite(ps.gap)) res.max_penetration = std::max(res.max_penetration, -ps.gap);
+  ZoneEnds own = pair.constraints ? node_zone_ends(body, pair, res.nodes, u)
+                                  : zone_ends(body, pair.points, res.states, *pair.obstacle, pair, u);
   res.gamma_star = std::move(own.X);
   res.gamma_star_deformed = std::move(own.x);
   res.outer_ends = std::move(own.outer);
-  if (pair.other >= 0)
+  if (pair.other >= 0 && !pair.constraints) {
     res.other_zone_ends = zone_ends(d.bodies[pair.other], pair.other_points, res.other_states,
                                     *pair.boundary, pair, u);
+  } else if (pair.other >= 0) {
+    // one-sided: the other body's zone ends are the feet of this body's, on its boundary
+    for (const Vec2& x : res.gamma_star_deformed) {
+      contact::BoundaryPoint foot;
+      if (!pair.other_boundary->project(x, foot)) continue;
+      res.other_zone_ends.x.push_back(foot.x);
+      res.other_zone_ends.X.push_back(pair.other_boundary->undeformed(foot.edge, foot.t));
+    }
+    res.other_zone_ends.outer = res.outer_ends;
+  }
   for (const Vec2& g : res.gamma_star)
     res.half_width = std::max(res.half_width, std::abs(pair.coordinate(g)));
   return res;
@@ -149,13 +281,14 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
 }  // namespace
 
 ContactResult evaluate_contact(const Discretization& d, const ContactPair& pair,
-                               const Eigen::VectorXd& u) {
-  return contact_result(d, pair, u);
+                               const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers) {
+  return contact_result(d, pair, u, multipliers);
 }
 
 BoundaryPressureProbe::BoundaryPressureProbe(const Discretization& d, const ContactPair& pair,
-                                             const Eigen::VectorXd& u)
-    : d_(d), pair_(pair), u_(u), coord_(pair.edges.size()) {
+                                             const Eigen::VectorXd& u,
+                                             const Eigen::VectorXd* multipliers)
+    : d_(d), pair_(pair), u_(u), multipliers_(multipliers), coord_(pair.edges.size()) {
   for (size_t k = 0; k < pair.edges.size(); ++k)
     for (int i = 0; i <= kSamples; ++i)
       coord_[k][i] = coordinate(static_cast<int>(k), -1 + 2.0 * i / kSamples);
@@ -185,7 +318,10 @@ std::optional<BoundaryPressure> BoundaryPressureProbe::operator()(double s) cons
       fem::edge_geometry(body.maps[q], le, t, &normal, nullptr);
       BoundaryPressure bp;
       const double g = gap_at(body, *pair_.obstacle, q, le, t, u_, &bp.x, &bp.X);
-      bp.penalty = g < 0 ? -pair_.penalty * g : 0.0;
+      if (pair_.constraints && multipliers_)
+        bp.penalty = pair_.constraints->nodes.interpolate(static_cast<int>(k), t, *multipliers_);
+      else
+        bp.penalty = g < 0 ? -pair_.penalty * g : 0.0;
       bp.from_stress = stress_pressure(body, q, le, t, normal, u_);
       return bp;
     }

@@ -22,7 +22,10 @@ struct ZoneEnds {
 
 /// State of the contact after a solve: per pair, its points' states and derived figures.
 struct ContactResult {
-  std::vector<contact::PointState> states;  ///< per contact point of the pair
+  /// Per contact point of the pair: its Gauss points (penalty, mortar) or its multiplier nodes
+  /// (collocation); the pressure of an exactly enforced pair is its multiplier there.
+  std::vector<contact::PointState> states;
+  std::vector<Vec2> X;  ///< the undeformed position of each state's point
   /// Normal pressure -n·σ·n from the stresses of the body at each contact point (the seed's
   /// plotted pressure), n the undeformed outward normal.
   std::vector<double> stress_pressure;
@@ -41,6 +44,14 @@ struct ContactResult {
   /// Against another body: the states of its points and the zone ends on its boundary.
   std::vector<contact::PointState> other_states;
   ZoneEnds other_zone_ends;
+  /// Exact enforcement: the multiplier nodes, with the pressure the method carries.
+  struct Node {
+    Vec2 X, x;          ///< undeformed and deformed position
+    double pressure = 0;  ///< λ_j
+    double gap = 0;       ///< the weighted gap G_j / W_j (collocation: g_N at the node)
+    bool active = false;  ///< λ_j > 0
+  };
+  std::vector<Node> nodes;
 };
 
 /// Pressures at one point of a contact boundary.
@@ -48,7 +59,8 @@ struct BoundaryPressure {
   Vec2 X;                  ///< undeformed position
   Vec2 x;                  ///< deformed position
   double from_stress = 0;  ///< -n·σ·n, n the undeformed outward normal
-  double penalty = 0;      ///< eps_N <-g_N>
+  /// The pressure the method carries: eps_N <-g_N> (penalty), the multiplier λ_h (exact).
+  double penalty = 0;
 };
 
 /// Pressures along the contact boundary of a pair, located by the coordinate
@@ -57,7 +69,9 @@ struct BoundaryPressure {
 /// constructed; each query then refines one bracket.
 class BoundaryPressureProbe {
 public:
-  BoundaryPressureProbe(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u);
+  /// `multipliers`: the pair's multipliers when it is enforced exactly (kept by reference).
+  BoundaryPressureProbe(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u,
+                        const Eigen::VectorXd* multipliers = nullptr);
   /// Pressures at the boundary point with coordinate s; nullopt if no contact edge reaches s.
   std::optional<BoundaryPressure> operator()(double s) const;
 
@@ -66,19 +80,19 @@ private:
   const Discretization& d_;
   const ContactPair& pair_;
   const Eigen::VectorXd& u_;
+  const Eigen::VectorXd* multipliers_;
   std::vector<std::array<double, kSamples + 1>> coord_;  ///< per edge, at t = -1 + 2i/kSamples
   double coordinate(int edge_index, double t) const;
 };
 
-/// The contact state of a pair at the dofs u: its points' states, pressures from the stresses,
-/// resultant, Γ*, half width.
+/// The contact state of a pair at the dofs u (and its multipliers, when it is enforced exactly):
+/// its points' states, pressures from the stresses, resultant, Γ*, half width.
 ContactResult evaluate_contact(const Discretization& d, const ContactPair& pair,
-                               const Eigen::VectorXd& u);
+                               const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers = nullptr);
 
-/// ∫ traction ds of a pair at the state u, and the states of its points (and of the other
-/// body's points into other_states, if given).
+/// ∫ traction ds on the pair's body at the state u (and its multipliers when it is enforced
+/// exactly).
 Vec2 contact_resultant(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u,
-                       std::vector<contact::PointState>& states,
-                       std::vector<contact::PointState>* other_states = nullptr);
+                       const Eigen::VectorXd* multipliers = nullptr);
 
 }  // namespace hpcontact::model

@@ -49,7 +49,9 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   // Auto: on with friction (stick/slip switches make plain Newton cycle) and between two bodies
   // (a large trial correction projects points onto far parts of the other boundary: the
   // bilateral Hertz example takes 200 iterations without it, 49 with it, same solution).
-  const bool two_bodies = std::any_of(pairs.begin(), pairs.end(), [](const ContactPair& p) { return p.other >= 0; });
+  const bool two_bodies = std::any_of(pairs.begin(), pairs.end(), [](const ContactPair& p) {
+    return p.other >= 0 && !p.constraints;
+  });
   no.line_search = ss.line_search == "on" || (ss.line_search == "auto" && (system.has_friction() || two_bodies));
   HPC_REQUIRE(!system.has_friction() || !ss.target_resultant, InputError, ss.where.str(),
               ".target_resultant: force control goes back and forth along the load path, which a "
@@ -70,13 +72,19 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   auto record = [&](double displacements, double loads, int iterations, double arc) {
     NonlinearSolution::PathPoint p{displacements, loads, Vec2::Zero(), Vec2::Zero(), iterations, arc};
     const Eigen::VectorXd u = system.solution(x);
+    const auto multipliers = system.multipliers(x);
     if (monitor_dof >= 0) p.monitor = Vec2(u(monitor_dof), u(monitor_dof + 1));
-    if (!pairs.empty()) {
-      std::vector<contact::PointState> states;
-      p.resultant = contact_resultant(d, pairs.front(), u, states);
-    }
+    if (!pairs.empty())
+      p.resultant = contact_resultant(d, pairs.front(), u,
+                                      multipliers[0].size() ? &multipliers[0] : nullptr);
     sol.path.push_back(p);
-    if (on_step) on_step(u, p, pairs);
+    if (on_step) on_step(u, p, pairs, multipliers);
+  };
+  // The contact results at the end (converged or not).
+  auto finish = [&]() {
+    sol.multipliers = system.multipliers(x);
+    for (size_t k = 0; k < pairs.size(); ++k)
+      sol.contact.push_back(evaluate_contact(d, pairs[k], sol.u, sol.multipliers_of(k)));
   };
   struct Factors {
     double displacements = 0, loads = 0;
@@ -84,6 +92,20 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   Factors converged;  // the factors of the last converged step
   auto say = [&](const std::string& s) {
     if (progress) progress(s);
+  };
+
+  // A progress line per Newton iteration.
+  auto newton_progress = [&]() -> solve::IterationCallback {
+    if (!progress) return {};
+    const auto start = std::chrono::steady_clock::now();
+    return [&, start](int it, double rn, double dxn) {
+      std::ostringstream os;
+      os << "  iteration " << it << ": |R| " << rn << ", |dx| " << dxn;
+      if (!pairs.empty()) os << ", " << system.points_in_contact() << " points in contact";
+      os << ", " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+         << " s";
+      say(os.str());
+    };
   };
 
   // Load steps along the path parameter from `from` to `target` (factors(s) gives the
@@ -99,18 +121,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       system.set_factors(fn.displacements, fn.loads);
       no.reference_norm = system.force_scale(x);
       Eigen::VectorXd trial = x;
-      const auto step_start = std::chrono::steady_clock::now();
-      solve::IterationCallback each;
-      if (progress)
-        each = [&](int it, double rn, double dxn) {
-          std::ostringstream os;
-          os << "  iteration " << it << ": |R| " << rn << ", |dx| " << dxn;
-          if (!pairs.empty()) os << ", " << system.points_in_contact() << " points in contact";
-          os << ", " << std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count()
-             << " s";
-          say(os.str());
-        };
-      const auto rep = solve::newton(system, trial, no, each);
+      const auto rep = solve::newton(system, trial, no, newton_progress());
       sol.newton_iterations += rep.iterations;
       if (rep.ok()) {
         x = trial;
@@ -171,11 +182,13 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   double lambda = 0;
   // A failed run keeps the last converged state, marked not converged.
   auto failed = [&]() {
+    system.set_force_target(std::nullopt);
+    x.conservativeResize(system.size());
     system.set_factors(converged.displacements, converged.loads);
     sol.u = system.solution(x);
     sol.load_factor = converged.displacements;
     sol.loads_factor = converged.loads;
-    for (const auto& pair : pairs) sol.contact.push_back(evaluate_contact(d, pair, sol.u));
+    finish();
     sol.pairs = pairs;
     return sol;
   };
@@ -219,6 +232,34 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       sol.message = rep.message;
       return failed();
     }
+  } else if (ss.stages.empty() && ss.target_resultant && !pairs.empty() && pairs.front().constraints) {
+    // Force control of an exactly enforced pair: the factor is one more unknown of Newton's
+    // system, its equation the target resultant (bordered), solved from the start at once.
+    const auto& tr = *ss.target_resultant;
+    system.set_factors(first, first);
+    system.set_force_target(std::make_pair(tr.component, tr.value));
+    x.conservativeResize(system.size());
+    x(system.size() - 1) = first;
+    no.reference_norm = std::max(system.force_scale(x), tr.value);
+    const auto rep = solve::newton(system, x, no, newton_progress());
+    sol.newton_iterations += rep.iterations;
+    if (!rep.ok()) {
+      sol.message = "force control (factor and contact pressures one Newton system) did not "
+                    "converge: " + rep.message;
+      x.setZero();
+      return failed();
+    }
+    const double alpha = system.displacement_factor(x);
+    system.set_force_target(std::nullopt);
+    x.conservativeResize(system.size());
+    system.set_factors(alpha, alpha);
+    converged = {alpha, alpha};
+    record(alpha, alpha, rep.iterations, 0.0);
+    ++sol.load_steps;
+    std::ostringstream os;
+    os << "force control: factor " << alpha << ", " << rep.iterations << " Newton iterations, |R| "
+       << rep.residual_history.front() << " -> " << rep.residual_history.back();
+    say(os.str());
   } else if (ss.stages.empty()) {
     if (!advance_to(0.0, first)) return failed();
   } else {
@@ -234,7 +275,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     }
   }
   lambda = first;
-  if (ss.target_resultant) {
+  if (ss.target_resultant && !(pairs.front().constraints && ss.stages.empty() && ss.control == "load")) {
     const auto& tr = *ss.target_resultant;
     HPC_REQUIRE(!pairs.empty(), InputError, ss.where.str(),
                 ".target_resultant: needs a contact pair to measure the resultant");
@@ -271,11 +312,14 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       }
     }
   }
+  system.set_force_target(std::nullopt);
+  x.conservativeResize(system.size());
+  system.set_factors(converged.displacements, converged.loads);
   sol.u = system.solution(x);
   sol.load_factor = converged.displacements;
   sol.loads_factor = converged.loads;
   sol.converged = true;
-  for (const auto& pair : pairs) sol.contact.push_back(evaluate_contact(d, pair, sol.u));
+  finish();
   sol.pairs = std::move(pairs);
   return sol;
 }
@@ -297,7 +341,7 @@ solve::SparseMatrix tangent_at(const ProblemSpec& spec, const Discretization& d,
     }
   ContactSystem system(d, pairs, spec.discretization.condense, kind);
   system.set_factors(sol.load_factor, sol.loads_factor);
-  const Eigen::VectorXd x = system.unknowns(sol.u);
+  const Eigen::VectorXd x = system.unknowns(sol.u, sol.multipliers);
   Eigen::VectorXd r;
   solve::SparseMatrix K;
   system.evaluate(x, r, &K);

@@ -36,13 +36,20 @@ struct NonlinearSolution {
   };
   std::vector<PathPoint> path;
   std::vector<ContactResult> contact;  ///< per pair
+  /// Per pair: the pressures at its multiplier nodes (exact enforcement), empty for the penalty.
+  std::vector<Eigen::VectorXd> multipliers;
+  /// The pair's multipliers, or null (for evaluate_contact and BoundaryPressureProbe).
+  const Eigen::VectorXd* multipliers_of(size_t pair) const {
+    return pair < multipliers.size() && multipliers[pair].size() ? &multipliers[pair] : nullptr;
+  }
 };
 
 using ProgressFn = std::function<void(const std::string&)>;
-/// Called after every converged load step with all dofs u, the path point just recorded and the
-/// contact pairs (for evaluate_contact).
+/// Called after every converged load step with all dofs u, the path point just recorded, the
+/// contact pairs and their multipliers (for evaluate_contact).
 using StepFn = std::function<void(const Eigen::VectorXd& u, const NonlinearSolution::PathPoint&,
-                                  const std::vector<ContactPair>& pairs)>;
+                                  const std::vector<ContactPair>& pairs,
+                                  const std::vector<Eigen::VectorXd>& multipliers)>;
 
 
 /// Solves the (nonlinear) contact problem with load steps and Newton's method; with

@@ -1,9 +1,11 @@
-// The contact system's residual and tangent: the elastic operator, finite-strain bodies and the
-// contact forces of every pair, on the unknowns of the solve.
+// The contact system's residual and tangent: the elastic operator, finite-strain bodies, the
+// penalty forces and the multiplier constraints of every pair, on the unknowns of the solve.
 #include "hpcontact/model/contact_system.hpp"
 
 #include <cmath>
 #include <limits>
+
+#include "hpcontact/core/error.hpp"
 
 namespace hpcontact::model {
 
@@ -14,13 +16,42 @@ ContactSystem::ContactSystem(const Discretization& d, const std::vector<ContactP
       op_(assemble_elastic(d, condense && !d.finite_strain())),
       K_uu_(op_.unknown_block(d)),
       finite_(d),
-      tangent_(tangent) {}
+      tangent_(tangent),
+      n_u_(op_.n_unknowns) {
+  for (const auto& pair : pairs_) {
+    z_offset_.push_back(pair.constraints ? n_z_ : -1);
+    if (pair.constraints) n_z_ += pair.constraints->size();
+  }
+  gamma_ = Eigen::VectorXd::Zero(n_z_);
+  for (size_t k = 0; k < pairs_.size(); ++k)
+    if (const auto& c = pairs_[k].constraints)
+      gamma_.segment(z_offset_[k], c->size()) = c->augmentation.cwiseProduct(c->weight);
+  K_prescribed_ = op_.K * d_.prescribed;
+}
 
 void ContactSystem::set_factors(double displacements, double loads) {
   lambda_ = displacements;
   lambda_f_ = loads;
   for (const auto& pair : pairs_)
     if (pair.moving) pair.moving->set_load_factor(displacements);
+}
+
+void ContactSystem::set_force_target(std::optional<std::pair<int, double>> target) {
+  HPC_ASSERT(!target || (!pairs_.empty() && pairs_.front().constraints), "force target needs an exact first pair");
+  if (target.has_value() != target_.has_value()) {
+    n_z_ += target ? 1 : -1;
+    gamma_.conservativeResize(n_z_);
+    if (target) gamma_(n_z_ - 1) = 0;
+  }
+  target_ = target;
+}
+
+double ContactSystem::displacement_factor(const Eigen::VectorXd& x) const {
+  return target_ ? x(size() - 1) : lambda_;
+}
+
+double ContactSystem::loads_factor(const Eigen::VectorXd& x) const {
+  return target_ ? x(size() - 1) : lambda_f_;
 }
 
 void ContactSystem::commit(const Eigen::VectorXd& x) const {
@@ -30,24 +61,48 @@ void ContactSystem::commit(const Eigen::VectorXd& x) const {
     if (pair.memory) commit_friction(pair, pair_forces(d_, pair, u, nullptr));
 }
 
+Eigen::VectorXd ContactSystem::load_vector() const { return op_.restrict(d_, op_.load); }
+
 bool ContactSystem::has_friction() const {
   for (const auto& pair : pairs_)
     if (pair.memory) return true;
   return false;
 }
 
+Eigen::VectorXd ContactSystem::unknowns(const Eigen::VectorXd& u,
+                                        const std::vector<Eigen::VectorXd>& multipliers) const {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(size());
+  x.head(n_u_) = op_.restrict(d_, u);
+  for (size_t k = 0; k < pairs_.size() && k < multipliers.size(); ++k)
+    if (z_offset_[k] >= 0 && multipliers[k].size() == pairs_[k].constraints->size())
+      x.segment(n_u_ + z_offset_[k], multipliers[k].size()) = multipliers[k];
+  if (target_) x(size() - 1) = lambda_;
+  return x;
+}
+
+std::vector<Eigen::VectorXd> ContactSystem::multipliers(const Eigen::VectorXd& x) const {
+  std::vector<Eigen::VectorXd> m(pairs_.size());
+  for (size_t k = 0; k < pairs_.size(); ++k)
+    if (z_offset_[k] >= 0) m[k] = x.segment(n_u_ + z_offset_[k], pairs_[k].constraints->size());
+  return m;
+}
+
+Eigen::VectorXd ContactSystem::full(const Eigen::VectorXd& x) const {
+  return op_.expand(d_, x.head(n_u_), displacement_factor(x));
+}
+
 Eigen::VectorXd ContactSystem::solution(const Eigen::VectorXd& x) const {
   Eigen::VectorXd u = full(x);
-  op_.recover_internal(d_, u, lambda_f_);
+  op_.recover_internal(d_, u, loads_factor(x));
   return u;
 }
 
 double ContactSystem::force_scale(const Eigen::VectorXd& x) const {
-  const Eigen::VectorXd f = op_.K * (lambda_ * d_.prescribed);
+  const Eigen::VectorXd f = op_.K * (displacement_factor(x) * d_.prescribed);
   const Eigen::VectorXd u = full(x);
   Eigen::VectorXd g = op_.K * u;
   if (!finite_.empty()) finite_.add(u, g, nullptr, nullptr);
-  return op_.restrict(d_, f).norm() + std::abs(lambda_f_) * op_.restrict(d_, op_.load).norm() +
+  return op_.restrict(d_, f).norm() + std::abs(loads_factor(x)) * op_.restrict(d_, op_.load).norm() +
          op_.restrict(d_, g).norm();
 }
 
@@ -58,43 +113,132 @@ void ContactSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve
     *K = finite_difference_tangent(x, tangent_ == Tangent::seed_difference ? &undisturbed : nullptr);
     return;
   }
-  std::vector<Eigen::Triplet<double>> t;
-  residual(x, r, K ? &t : nullptr, nullptr, nullptr);
+  Triplets T;
+  residual(x, r, K ? &T : nullptr, nullptr, nullptr);
   if (!K) return;
-  std::vector<Eigen::Triplet<double>> tf;
-  tf.reserve(t.size());
-  for (const auto& e : t) {
-    const int i = op_.unknown(d_, e.row()), j = op_.unknown(d_, e.col());
-    if (i >= 0 && j >= 0) tf.emplace_back(i, j, e.value());
-  }
   solve::SparseMatrix Kc(size(), size());
-  Kc.setFromTriplets(tf.begin(), tf.end());
-  *K = K_uu_ + Kc;
+  Kc.setFromTriplets(T.begin(), T.end());
+  if (n_z_ == 0) {
+    *K = K_uu_ + Kc;
+    return;
+  }
+  // K_uu_ widened to the whole system
+  Triplets W;
+  W.reserve(K_uu_.nonZeros());
+  for (int c = 0; c < K_uu_.outerSize(); ++c)
+    for (solve::SparseMatrix::InnerIterator it(K_uu_, c); it; ++it) W.emplace_back(it.row(), it.col(), it.value());
+  solve::SparseMatrix Kw(size(), size());
+  Kw.setFromTriplets(W.begin(), W.end());
+  *K = Kw + Kc;
 }
 
-void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r,
-                             std::vector<Eigen::Triplet<double>>* t, PairStates* states,
-                             const PairStates* frozen) const {
+void ContactSystem::factorize(solve::LinearSolver& sparse, const solve::SparseMatrix& K) {
+  if (n_z_ == 0) return sparse.factorize(K);
+  saddle_.factorize(sparse, K, n_u_, gamma_);
+}
+
+Eigen::VectorXd ContactSystem::solve(const solve::LinearSolver& sparse, const Eigen::VectorXd& b) const {
+  if (n_z_ == 0) return sparse.solve(b);
+  return saddle_.solve(sparse, b);
+}
+
+void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Triplets* T,
+                             PairStates* states, const PairStates* frozen) const {
+  const double alpha = displacement_factor(x);
+  if (target_)
+    for (const auto& pair : pairs_)
+      if (pair.moving) pair.moving->set_load_factor(alpha);
   const Eigen::VectorXd u = full(x);
-  Eigen::VectorXd R = op_.K * u - lambda_f_ * op_.load;
+  Eigen::VectorXd R = op_.K * u - loads_factor(x) * op_.load;
+  // The tangent's triplets on all dofs (finite strain, penalty contact, curvature of the
+  // multiplier constraints), mapped onto the unknowns below.
+  Triplets t_all;
+  Triplets* t = T ? &t_all : nullptr;
+  r = Eigen::VectorXd::Zero(size());
   if (!finite_.empty() && !finite_.add(u, R, t, &failure_)) {
     // An inverted element has no internal force: a not-finite residual makes Newton stop and
     // the load step be cut.
-    r = Eigen::VectorXd::Constant(size(), std::numeric_limits<double>::quiet_NaN());
+    r.setConstant(std::numeric_limits<double>::quiet_NaN());
     return;
   }
   if (states) states->resize(pairs_.size());
   points_in_contact_ = 0;
+  // Rows of z, filled per exact pair; their u-parts as (row, dof of all dofs, value).
+  Triplets z_rows;
   for (size_t k = 0; k < pairs_.size(); ++k) {
     const ContactPair& pair = pairs_[k];
-    PairForces f = pair_forces(d_, pair, u, t, frozen ? &(*frozen)[k] : nullptr);
-    for (const auto* side : {&f.states, &f.other_states})
-      for (const auto& s : *side) points_in_contact_ += s.pressure > 0;
-    R.segment(d_.bodies[pair.body].dof_offset, f.body.size()) -= f.body;
-    if (pair.other >= 0) R.segment(d_.bodies[pair.other].dof_offset, f.other.size()) -= f.other;
-    if (states) (*states)[k] = std::move(f.states);
+    if (!pair.constraints) {
+      PairForces f = pair_forces(d_, pair, u, t, frozen ? &(*frozen)[k] : nullptr);
+      for (const auto* side : {&f.states, &f.other_states})
+        for (const auto& s : *side) points_in_contact_ += s.pressure > 0;
+      R.segment(d_.bodies[pair.body].dof_offset, f.body.size()) -= f.body;
+      if (pair.other >= 0) R.segment(d_.bodies[pair.other].dof_offset, f.other.size()) -= f.other;
+      if (states) (*states)[k] = std::move(f.states);
+      continue;
+    }
+    const PairConstraints& c = *pair.constraints;
+    const int o = n_u_ + z_offset_[k];
+    const Eigen::VectorXd lambda = x.segment(o, c.size());
+    const ConstraintState s = evaluate_constraints(d_, pair, u, lambda, &R, t, T != nullptr);
+    if (states) (*states)[k] = s.points;
+    int active_nodes = 0;
+    for (int j = 0; j < c.size(); ++j) {
+      const bool active = node_active(c, s, lambda, j);
+      active_nodes += active;
+      r(o + j) = active ? c.augmentation(j) * s.G(j) : c.weight(j) * lambda(j);
+      if (!T) continue;
+      for (const auto& [dof, v] : s.dG[j]) {
+        // force column ∂r_u/∂λ_j = −∂G_j/∂u, and the row's u-part (zeros when inactive, so that
+        // the pattern stays)
+        const int i = op_.unknown(d_, dof);
+        if (i >= 0) {
+          T->emplace_back(i, o + j, -v);
+          T->emplace_back(o + j, i, active ? c.augmentation(j) * v : 0.0);
+        } else if (target_ && active) {
+          z_rows.emplace_back(o + j, dof, c.augmentation(j) * v);  // for ∂r_j/∂α
+        }
+      }
+      if (!active) T->emplace_back(o + j, o + j, c.weight(j));
+      else if (target_ && pair.moving)
+        T->emplace_back(o + j, size() - 1, c.augmentation(j) * s.dG_dfactor(j));
+    }
+    points_in_contact_ += active_nodes;
+    if (target_ && k == 0) {
+      // The target row: s·F_c − F, s the sign of the resultant's component; held (Δα = 0)
+      // while no node carries force.
+      const int comp = target_->first, row = size() - 1;
+      const double F = s.resultant(comp), sign = F < 0 ? -1.0 : 1.0;
+      if (active_nodes == 0) {
+        r(row) = 0;
+        if (T) T->emplace_back(row, row, 1.0);
+      } else {
+        r(row) = sign * F - target_->second;
+        if (T)
+          for (int j = 0; j < c.size(); ++j)
+            if (const double v = sign * s.d_resultant[j](comp); v != 0.0) T->emplace_back(row, o + j, v);
+      }
+    }
   }
-  r = op_.restrict(d_, R);
+  r.head(n_u_) = op_.restrict(d_, R);
+  if (!T) return;
+  for (const auto& e : t_all) {
+    const int i = op_.unknown(d_, e.row()), j = op_.unknown(d_, e.col());
+    if (i >= 0 && j >= 0) T->emplace_back(i, j, e.value());
+  }
+  if (target_) {
+    // ∂r/∂α: the prescribed displacements' column of the tangent (linear bodies: K u_p; the
+    // finite-strain and contact parts from their triplets) less the loads, and of the active
+    // constraint rows.
+    const int col = size() - 1;
+    Eigen::VectorXd column = K_prescribed_ - op_.load;
+    for (const auto& e : t_all)
+      if (const double up = d_.prescribed(e.col()); up != 0.0) column(e.row()) += e.value() * up;
+    const Eigen::VectorXd cu = op_.restrict(d_, column);
+    for (int i = 0; i < n_u_; ++i)
+      if (cu(i) != 0.0) T->emplace_back(i, col, cu(i));
+    for (const auto& e : z_rows)
+      if (const double up = d_.prescribed(e.col()); up != 0.0) T->emplace_back(e.row(), col, e.value() * up);
+  }
 }
 
 solve::SparseMatrix ContactSystem::finite_difference_tangent(const Eigen::VectorXd& x,

@@ -1,7 +1,9 @@
-// The contact problem as a nonlinear system for the solvers: R(x) = K u − λ_f f − f_c(u) (and
-// the finite-strain internal forces) over the unknowns of the elastic operator, its tangent.
+// The contact problem as a nonlinear system for the solvers: R(x) = K u − λ_f f − f_c(u, λ) (and
+// the finite-strain internal forces) over the unknowns of the elastic operator, followed by the
+// contact multipliers of exactly enforced pairs and, under force control, the load factor.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,14 +12,23 @@
 #include "hpcontact/model/contact_forces.hpp"
 #include "hpcontact/model/linear_solve.hpp"
 #include "hpcontact/solve/arc_length.hpp"
+#include "hpcontact/solve/saddle_point.hpp"
 
 namespace hpcontact::model {
 
-/// The nonlinear system over the unknowns of the elastic operator: with static condensation only
-/// the free external dofs, since contact acts on vertex and edge modes alone and the internal
-/// modes of the linear elastic elements can be eliminated once, before Newton (not with a
-/// finite-strain body, whose internal modes stay unknowns). Finite-strain bodies add their
-/// internal forces and tangents at every evaluation.
+/// The nonlinear system over the unknowns x = (u, λ, α):
+/// - u, the unknowns of the elastic operator: with static condensation only the free external
+///   dofs, since contact acts on vertex and edge modes alone and the internal modes of the linear
+///   elastic elements can be eliminated once, before Newton (not with a finite-strain body,
+///   whose internal modes stay unknowns). Finite-strain bodies add their internal forces and
+///   tangents at every evaluation.
+/// - λ, the pressures at the multiplier nodes of the exactly enforced pairs, pair after pair.
+///   Their rows are the complementarity functions W_j C_j, C_j = λ_j − max(0, λ_j − ε_j ĝ_j)
+///   (active: ε_j G_j = 0, inactive: W_j λ_j = 0), whose semi-smooth Newton step changes the
+///   active set from one iteration to the next.
+/// - α, under force control (bordered), the factor on the prescribed displacements, its row
+///   the target resultant of the first pair: s·F_c(λ) − F = 0.
+/// The tangent is factorised by eliminating λ and α (solve::SaddlePointSolver).
 class ContactSystem final : public solve::NonlinearSystem {
 public:
   /// How the Newton tangent is formed: analytic; the seed's differences (normals of the
@@ -30,24 +41,40 @@ public:
 
   /// Why the last evaluation failed (an inverted element), empty if it did not.
   const std::string& failure() const { return failure_; }
-  /// Contact points with a pressure at the state last evaluated (both sides of two-body pairs).
+  /// Contact points with a pressure at the state last evaluated (both sides of two-body pairs;
+  /// the active nodes of exactly enforced pairs).
   int points_in_contact() const { return points_in_contact_; }
 
   /// The factors on the prescribed displacements (and obstacle displacements) and on the loads.
   void set_factors(double displacements, double loads);
+  /// Force control as one more unknown: the factor on the prescribed displacements, found with
+  /// the first pair's resultant component (0: x, 1: y) equal to `value` in magnitude. The first
+  /// pair must be enforced exactly. Off (nullopt): the factor is set_factors()'s.
+  void set_force_target(std::optional<std::pair<int, double>> target);
+  bool force_controlled() const { return target_.has_value(); }
+  /// The factor on the prescribed displacements at x (the unknown α under force control), and
+  /// on the loads (α too under force control: the proportional path).
+  double displacement_factor(const Eigen::VectorXd& x) const;
+  double loads_factor(const Eigen::VectorXd& x) const;
 
   /// After a converged load step at x: the friction histories take its anchors and slips.
   void commit(const Eigen::VectorXd& x) const;
   /// The load vector on the unknowns (what a unit load factor applies).
-  Eigen::VectorXd load_vector() const { return op_.restrict(d_, op_.load); }
+  Eigen::VectorXd load_vector() const;
   double displacement_factor() const { return lambda_; }
   bool has_friction() const;
-  /// The unknowns' values in a vector of all dofs.
-  Eigen::VectorXd unknowns(const Eigen::VectorXd& u) const { return op_.restrict(d_, u); }
-  int size() const override { return op_.n_unknowns; }
+  /// The unknowns x of all dofs u and the multipliers of each pair (empty for penalty pairs; an
+  /// empty list: zero multipliers), α = the current factor under force control.
+  Eigen::VectorXd unknowns(const Eigen::VectorXd& u,
+                           const std::vector<Eigen::VectorXd>& multipliers = {}) const;
+  /// The multipliers of each pair at x (empty for penalty pairs).
+  std::vector<Eigen::VectorXd> multipliers(const Eigen::VectorXd& x) const;
+  int size() const override { return n_u_ + n_z_; }
+  /// The number of displacement unknowns (the multipliers follow them).
+  int n_displacements() const { return n_u_; }
 
   /// All dofs from the unknowns (condensed internal modes zero; see solution()).
-  Eigen::VectorXd full(const Eigen::VectorXd& x) const { return op_.expand(d_, x, lambda_); }
+  Eigen::VectorXd full(const Eigen::VectorXd& x) const;
   /// All dofs, the condensed internal modes recovered.
   Eigen::VectorXd solution(const Eigen::VectorXd& x) const;
 
@@ -58,14 +85,17 @@ public:
   double force_scale(const Eigen::VectorXd& x) const;
 
   void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve::SparseMatrix* K) override;
+  void factorize(solve::LinearSolver& sparse, const solve::SparseMatrix& K) override;
+  Eigen::VectorXd solve(const solve::LinearSolver& sparse, const Eigen::VectorXd& b) const override;
 
 private:
   using PairStates = std::vector<std::vector<contact::PointState>>;
+  using Triplets = std::vector<Eigen::Triplet<double>>;
 
-  /// R(x) on the unknowns; the contact tangent's triplets (all dofs) into t, the points' states
-  /// into states; with `frozen`, gaps use the normals of those states (see penalty_contact).
-  void residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, std::vector<Eigen::Triplet<double>>* t,
-                PairStates* states, const PairStates* frozen) const;
+  /// R(x); the tangent's triplets on the unknowns into T (null: none); the penalty points'
+  /// states into states; with `frozen`, penalty gaps use the normals of those states.
+  void residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Triplets* T, PairStates* states,
+                const PairStates* frozen) const;
 
   /// The seed's tangent (eq. 3.35–3.36): column m by central differences of the whole residual
   /// with the step h_m = ν (|x_m| + 1e-3), ν = 1e-6 (< √η; below the seed's 1e-5 because a
@@ -85,6 +115,14 @@ private:
   Tangent tangent_ = Tangent::analytic;
   double lambda_ = 1.0;    ///< factor on the prescribed displacements
   double lambda_f_ = 1.0;  ///< factor on the loads
+  int n_u_ = 0;            ///< displacement unknowns
+  int n_z_ = 0;            ///< multipliers and the bordered factor
+  std::vector<int> z_offset_;  ///< per pair: its first multiplier's index in z, -1 for penalty
+  std::optional<std::pair<int, double>> target_;  ///< force control: component, value
+  Eigen::VectorXd gamma_;      ///< augmentation of each row of z (ε_j W_j; 0 for α)
+  solve::SaddlePointSolver saddle_;
+  /// The prescribed displacements restricted to… all dofs (for ∂/∂α), and K times them.
+  Eigen::VectorXd K_prescribed_;
 };
 
 /// The system on the path of the loads' factor (arc-length), the prescribed displacements held.
@@ -95,8 +133,19 @@ public:
   void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve::SparseMatrix* K) override {
     s_.evaluate(x, r, K);
   }
+  void factorize(solve::LinearSolver& sparse, const solve::SparseMatrix& K) override {
+    s_.factorize(sparse, K);
+  }
+  Eigen::VectorXd solve(const solve::LinearSolver& sparse, const Eigen::VectorXd& b) const override {
+    return s_.solve(sparse, b);
+  }
   void set_load_factor(double lambda) override { s_.set_factors(s_.displacement_factor(), lambda); }
-  Eigen::VectorXd load_derivative(const Eigen::VectorXd&) override { return -s_.load_vector(); }
+  Eigen::VectorXd load_derivative(const Eigen::VectorXd&) override {
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(s_.size());
+    f.head(s_.n_displacements()) = -s_.load_vector();
+    return f;
+  }
+  int path_size() const override { return s_.n_displacements(); }
 
 private:
   ContactSystem& s_;

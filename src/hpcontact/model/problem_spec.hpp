@@ -195,13 +195,27 @@ struct FrictionSpec {
   SourceRef where;
 };
 
-/// A contact boundary of a body against a rigid obstacle, enforced by a normal penalty at the
-/// Gauss points of its edges.
+/// How a pair's contact condition is enforced: exactly, with the pressure as an unknown at the
+/// multiplier nodes (augmented Lagrangian: g_N ≥ 0, λ ≥ 0, λ g_N = 0), or by the seed's
+/// penalty at the Gauss points (eq. 3.19: the pressure ε_N <−g_N>, some penetration).
+enum class Enforcement { augmented_lagrangian, penalty };
+
+/// Where an exact constraint is imposed: at the multiplier nodes (the Gauss–Lobatto points of
+/// each contact edge: g_N(x_j) ≥ 0), or weighted by each node's polynomial over its edges
+/// (mortar: ∫ L_j g_N ds ≥ 0, integrated on segments between the other body's element
+/// boundaries).
+enum class ConstraintRule { mortar, collocation };
+
+/// A contact boundary of a body against a rigid obstacle or another body.
 struct ContactPairSpec {
   std::string body;                    ///< body name
   std::vector<std::string> edge_sets;  ///< its contact edges
   ObstacleSpec obstacle;
-  double penalty = 0;   ///< eps_N > 0 [force/length³]
+  Enforcement enforcement = Enforcement::penalty;
+  ConstraintRule constraint = ConstraintRule::mortar;
+  /// eps_N [force/length³]: the penalty; with augmented_lagrangian the augmentation (0: the
+  /// default E p² / h at each node), a parameter of convergence speed, not of the answer.
+  double penalty = 0;
   int quadrature = 50;  ///< Gauss points per contact edge, independent of p (seed: 50)
   std::optional<PressureCompareSpec> compare;
   FrictionSpec friction;

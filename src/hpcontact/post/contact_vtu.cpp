@@ -22,7 +22,7 @@ void write_contact_vtu(const std::string& path, const std::vector<model::Contact
     for (std::size_t i = 0; i < results[k].states.size(); ++i) {
       lines[k].push_back(static_cast<int>(at.size()));
       at.emplace_back(k, i);
-      X.push_back(pairs[k].points[i].X);
+      X.push_back(results[k].X[i]);
     }
   auto state = [&](std::size_t n) -> const contact::PointState& {
     return results[at[n].first].states[at[n].second];

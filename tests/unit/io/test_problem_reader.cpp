@@ -471,7 +471,8 @@ TEST(ProblemReader, RejectsNonPositivePenalty) {
   input_error(with(text, "penalty: 1,", "penalty: 0,"),
               {"case.yaml:20:", "contact[0].penalty: must be > 0 (got 0)"});
   input_error(with(text, "penalty: 1,", "penalty: -3,"), {"contact[0].penalty: must be > 0"});
-  input_error(with(text, "penalty: 1, ", ""), {"contact[0]: missing required key 'penalty'"});
+  input_error(with(text, "penalty: 1, ", ""),
+              {"contact[0]: missing key 'penalty' (required by enforcement: penalty)"});
 }
 
 // An obstacle shall be complete: a circle needs its radius (a plane has none), a plane a

@@ -1,0 +1,81 @@
+// Gap kinematics of a contact point: rigid obstacles (dn/dx from the obstacle) and the other
+// body's deformed boundary (the covariant linearisation of the closest-point gap, e.g.
+// Wriggers, Computational Contact Mechanics, ch. 4; see two_body.hpp for the formula).
+#include "hpcontact/contact/point_gap.hpp"
+
+namespace hpcontact::contact {
+
+PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const Eigen::VectorXd& u,
+                         int offset, bool second) {
+  PointGap pg;
+  const int m = static_cast<int>(cp.modes.size());
+  Vec2 ux = Vec2::Zero();
+  for (int k = 0; k < m; ++k) ux += cp.N(k) * Vec2(u(2 * cp.modes[k]), u(2 * cp.modes[k] + 1));
+  pg.x = cp.X + ux;
+  Mat2 dn = Mat2::Zero();
+  pg.g = obstacle.gap(pg.x, &pg.normal, second ? &dn : nullptr);
+  pg.found = true;
+  pg.tangent = Vec2(pg.normal.y(), -pg.normal.x());
+  pg.foot = pg.x - pg.g * pg.normal;
+  pg.dofs.resize(2 * m);
+  pg.dg.resize(2 * m);
+  for (int k = 0; k < m; ++k)
+    for (int c = 0; c < 2; ++c) {
+      pg.dofs[2 * k + c] = offset + 2 * cp.modes[k] + c;
+      pg.dg(2 * k + c) = cp.N(k) * pg.normal(c);
+    }
+  if (second) {
+    pg.d2g.resize(2 * m, 2 * m);
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; b < m; ++b)
+        pg.d2g.block<2, 2>(2 * a, 2 * b) = cp.N(a) * cp.N(b) * dn;
+  }
+  return pg;
+}
+
+PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
+                            const DeformableBoundary& master, int offset_s, int offset_m, bool second) {
+  PointGap pg;
+  const int ms = static_cast<int>(cp.modes.size());
+  pg.x = cp.X;
+  for (int k = 0; k < ms; ++k) pg.x += cp.N(k) * Vec2(u_s(2 * cp.modes[k]), u_s(2 * cp.modes[k] + 1));
+  BoundaryPoint foot;
+  if (!master.project(pg.x, foot)) return pg;
+  pg.found = true;
+  const Vec2 n = foot.normal, t = foot.dx_dt;
+  pg.normal = n;
+  pg.tangent = t.normalized();
+  pg.foot = foot.x;
+  pg.foot_edge = foot.edge;
+  pg.foot_t = foot.t;
+  pg.g = (pg.x - foot.x).dot(n);
+  const int mm = static_cast<int>(foot.modes.size());
+  const int L = 2 * (ms + mm);
+  pg.dofs.resize(L);
+  pg.dg.resize(L);
+  Eigen::VectorXd Gt = Eigen::VectorXd::Zero(L), Dn = Eigen::VectorXd::Zero(L);
+  for (int k = 0; k < ms; ++k)
+    for (int c = 0; c < 2; ++c) {
+      pg.dofs[2 * k + c] = offset_s + 2 * cp.modes[k] + c;
+      pg.dg(2 * k + c) = cp.N(k) * n(c);
+      Gt(2 * k + c) = cp.N(k) * t(c);
+    }
+  for (int k = 0; k < mm; ++k)
+    for (int c = 0; c < 2; ++c) {
+      const int j = 2 * (ms + k) + c;
+      pg.dofs[j] = offset_m + 2 * foot.modes[k] + c;
+      pg.dg(j) = -foot.N(k) * n(c);
+      Gt(j) = -foot.N(k) * t(c);
+      Dn(j) = foot.dN(k) * n(c);
+    }
+  if (second) {
+    const double a = t.squaredNorm(), kappa = master.curvature(foot), cc = a - pg.g * kappa;
+    const Eigen::VectorXd H = Gt + pg.g * Dn;
+    const Eigen::MatrixXd M =
+        -(Dn * H.transpose() / cc + Gt * Dn.transpose() / a + kappa * Gt * H.transpose() / (a * cc));
+    pg.d2g = 0.5 * (M + M.transpose());
+  }
+  return pg;
+}
+
+}  // namespace hpcontact::contact

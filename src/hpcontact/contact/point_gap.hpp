@@ -1,0 +1,43 @@
+// The normal gap of one contact point against its obstacle, linearised in the displacements:
+// the kinematics shared by the contact laws (penalty, multipliers).
+#pragma once
+
+#include <limits>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "hpcontact/contact/contact_boundary.hpp"
+#include "hpcontact/contact/deformable_boundary.hpp"
+#include "hpcontact/contact/obstacle.hpp"
+
+namespace hpcontact::contact {
+
+/// g_N of a point at the current state, with ∂g/∂u over the dofs it depends on and, when asked
+/// for, ∂²g/∂u² (symmetric): against a rigid obstacle g(x) with ∇g = N n and ∇²g = N Nᵀ dn/dx;
+/// against another body's deformed boundary the closest-point gap and its covariant
+/// linearisation (two_body_contact).
+struct PointGap {
+  bool found = false;  ///< false: the other body's boundary has no closest point to it
+  double g = std::numeric_limits<double>::infinity();
+  Vec2 x = Vec2::Zero();       ///< deformed position
+  Vec2 normal = Vec2(0, 1);    ///< the obstacle's outward unit normal at the closest point
+  Vec2 tangent = Vec2(1, 0);   ///< unit tangent of the obstacle there, (n_y, −n_x) or dx_m/dξ
+  Vec2 foot = Vec2::Zero();    ///< the closest point
+  int foot_edge = -1;          ///< two bodies: its edge of the other boundary, and parameter
+  double foot_t = 0;
+  std::vector<int> dofs;       ///< global dofs: the point's body's, then the other body's
+  Eigen::VectorXd dg;          ///< ∂g/∂u at dofs
+  Eigen::MatrixXd d2g;         ///< ∂²g/∂u² at dofs (empty unless asked for)
+};
+
+/// Against a rigid obstacle; u holds the body's dofs (dof = 2·mode + component), `offset` the
+/// global index of its first.
+PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const Eigen::VectorXd& u,
+                         int offset, bool second);
+
+/// Against the deformed boundary of another body (its displacement set); offsets as above.
+PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
+                            const DeformableBoundary& master, int offset_s, int offset_m, bool second);
+
+}  // namespace hpcontact::contact

@@ -1,0 +1,207 @@
+// Multiplier constraints of exactly enforced pairs: their discretisation (collocation or mortar)
+// and their evaluation at a state — weighted gaps, gradients, forces and curvature terms.
+#include "hpcontact/model/contact_multipliers.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "hpcontact/basis/quadrature.hpp"
+#include "hpcontact/contact/point_gap.hpp"
+#include "hpcontact/model/contact_pairs.hpp"
+
+namespace hpcontact::model {
+
+namespace {
+
+/// a_qj = w_q L_j(t_q) of mortar points.
+std::vector<std::vector<std::pair<int, double>>> mortar_coefficients(
+    const contact::MultiplierNodes& nodes, const std::vector<contact::ContactPoint>& points) {
+  std::vector<std::vector<std::pair<int, double>>> coefficients;
+  Eigen::VectorXd L;
+  for (const auto& cp : points) {
+    nodes.shape(cp.edge, cp.t, L);
+    std::vector<std::pair<int, double>> a;
+    for (int i = 0; i < L.size(); ++i) a.emplace_back(nodes.edge_nodes[cp.edge][i], cp.weight * L(i));
+    coefficients.push_back(std::move(a));
+  }
+  return coefficients;
+}
+
+/// The mortar points of a two-body pair at the current state (both boundaries' displacements
+/// set): Gauss points on the segments of each edge.
+std::vector<contact::ContactPoint> segmented_points(const PairConstraints& c, const Body& body,
+                                                    const ContactPair& pair) {
+  std::vector<contact::ContactPoint> points;
+  for (int k = 0; k < static_cast<int>(c.edges.size()); ++k) {
+    const auto ends = pair.boundary->segments(k, *pair.other_boundary);
+    const int n_seg = static_cast<int>(ends.size()) - 1;
+    const int p = static_cast<int>(c.nodes.edge_points[k].size()) - 1;
+    const auto& rule = basis::gauss_legendre(std::max(c.segment_quadrature / n_seg, 2 * p + 2));
+    std::vector<double> t, w;
+    for (int s = 0; s < n_seg; ++s) {
+      const double mid = 0.5 * (ends[s] + ends[s + 1]), half = 0.5 * (ends[s + 1] - ends[s]);
+      for (int i = 0; i < rule.size(); ++i) {
+        t.push_back(mid + half * rule.points[i]);
+        w.push_back(half * rule.weights[i]);
+      }
+    }
+    auto pts = contact::contact_points_at(body.mesh, body.dofs, body.maps, c.edges[k], k, t, w,
+                                          body.thickness);
+    points.insert(points.end(), pts.begin(), pts.end());
+  }
+  return points;
+}
+
+}  // namespace
+
+std::shared_ptr<const PairConstraints> make_pair_constraints(const ContactPairSpec& spec,
+                                                             const Body& body,
+                                                             const std::vector<contact::ChainEdge>& chain,
+                                                             const std::vector<contact::ContactPoint>& points,
+                                                             bool two_bodies) {
+  auto c = std::make_shared<PairConstraints>();
+  c->rule = spec.constraint;
+  c->segmented = two_bodies && c->rule == ConstraintRule::mortar;
+  c->segment_quadrature = spec.quadrature;
+  for (const auto& ce : chain) c->edges.push_back(ce.edge);
+  c->nodes = contact::multiplier_nodes(body.mesh, body.dofs, body.maps, chain, body.thickness);
+  const int n = c->nodes.size();
+  c->weight = Eigen::VectorXd::Zero(n);
+  for (int j = 0; j < n; ++j) {
+    const auto& node = c->nodes.nodes[j];
+    auto at = contact::contact_points_at(body.mesh, body.dofs, body.maps, chain[node.edge].edge,
+                                         node.edge, {node.t}, {1.0}, body.thickness);
+    c->node_points.push_back(std::move(at.front()));
+  }
+  if (c->rule == ConstraintRule::collocation) {
+    c->points = c->node_points;
+    for (int j = 0; j < n; ++j) {
+      c->coefficients.push_back({{j, c->nodes.nodes[j].weight}});
+      c->weight(j) = c->nodes.nodes[j].weight;
+    }
+  } else {
+    c->points = points;
+    c->coefficients = mortar_coefficients(c->nodes, points);
+    for (const auto& a : c->coefficients)
+      for (const auto& [j, v] : a) c->weight(j) += v;
+  }
+  c->augmentation.resize(n);
+  for (int j = 0; j < n; ++j) {
+    if (spec.penalty > 0) {
+      c->augmentation(j) = spec.penalty;
+      continue;
+    }
+    const auto& m = body.material_of(c->nodes.nodes[j].element);
+    const double E = m.plane == material::Plane::strain
+                         ? m.youngs_modulus / (1 - m.poisson_ratio * m.poisson_ratio)
+                         : m.youngs_modulus;
+    c->augmentation(j) = E * c->nodes.nodes[j].stiffness_scale;
+  }
+  return c;
+}
+
+namespace {
+
+/// Adds v × (dofs, values) into a per-node gradient list.
+void accumulate(std::vector<std::pair<int, double>>& into, const std::vector<int>& dofs,
+                const Eigen::VectorXd& values, double v) {
+  for (size_t i = 0; i < dofs.size(); ++i)
+    if (values(i) != 0.0) into.emplace_back(dofs[i], v * values(i));
+}
+
+/// Sorts a gradient list by dof and sums repeated dofs.
+void merge(std::vector<std::pair<int, double>>& g) {
+  std::sort(g.begin(), g.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  size_t out = 0;
+  for (size_t i = 0; i < g.size(); ++i) {
+    if (out > 0 && g[out - 1].first == g[i].first) g[out - 1].second += g[i].second;
+    else g[out++] = g[i];
+  }
+  g.resize(out);
+}
+
+}  // namespace
+
+ConstraintState evaluate_constraints(const Discretization& d, const ContactPair& pair,
+                                     const Eigen::VectorXd& u, const Eigen::VectorXd& lambda,
+                                     Eigen::VectorXd* R, std::vector<Eigen::Triplet<double>>* t,
+                                     bool gradients) {
+  const PairConstraints& c = *pair.constraints;
+  const Body& body = d.bodies[pair.body];
+  const int n = c.size();
+  ConstraintState s;
+  s.G = Eigen::VectorXd::Zero(n);
+  s.found.assign(n, 0);
+  s.d_resultant.assign(n, Vec2::Zero());
+  s.dG_dfactor = Eigen::VectorXd::Zero(n);
+  if (gradients) s.dG.resize(n);
+  const Eigen::VectorXd ua = u.segment(body.dof_offset, body.dofs.n_dofs());
+  if (pair.other >= 0) {
+    const Body& other = d.bodies[pair.other];
+    pair.boundary->set_displacement(ua);
+    pair.other_boundary->set_displacement(u.segment(other.dof_offset, other.dofs.n_dofs()));
+  }
+  const bool second = t != nullptr;
+  // the points and their coefficients: fixed, or the segments of the current state
+  std::vector<contact::ContactPoint> seg_points;
+  std::vector<std::vector<std::pair<int, double>>> seg_coefficients;
+  if (c.segmented) {
+    seg_points = segmented_points(c, body, pair);
+    seg_coefficients = mortar_coefficients(c.nodes, seg_points);
+  }
+  const auto& points = c.segmented ? seg_points : c.points;
+  const auto& coefficients = c.segmented ? seg_coefficients : c.coefficients;
+  s.points.resize(points.size());
+  // The obstacle's displacement per unit factor, for ∂g/∂factor = −n·d of a moving obstacle.
+  const Vec2 moving = pair.moving ? pair.moving->direction() : Vec2::Zero();
+  for (size_t q = 0; q < points.size(); ++q) {
+    const auto& cp = points[q];
+    contact::PointGap pg;
+    if (pair.other < 0) {
+      pg = contact::rigid_point_gap(cp, *pair.obstacle, ua, body.dof_offset, second);
+    } else {
+      pg = contact::two_body_point_gap(cp, ua, *pair.other_boundary, body.dof_offset,
+                                       d.bodies[pair.other].dof_offset, second);
+    }
+    contact::PointState& ps = s.points[q];
+    ps.x = pg.x;
+    ps.gap = pg.g;
+    ps.normal = pg.normal;
+    ps.tau = pg.tangent;
+    ps.foot = pg.foot;
+    ps.foot_edge = pg.foot_edge;
+    ps.foot_t = pg.foot_t;
+    if (!pg.found) continue;
+    // the multiplier at the point, times its weight: λ_q = Σ_j a_qj λ_j [force]
+    double lambda_q = 0, w_q = 0;
+    for (const auto& [j, a] : coefficients[q]) {
+      lambda_q += a * lambda(j);
+      w_q += a;
+      s.G(j) += a * pg.g;
+      s.found[j] = 1;
+      s.d_resultant[j] += a * pg.normal;
+      s.dG_dfactor(j) -= a * pg.normal.dot(moving);
+      if (gradients) accumulate(s.dG[j], pg.dofs, pg.dg, a);
+    }
+    ps.pressure = w_q != 0 ? lambda_q / w_q : 0.0;
+    ps.traction = ps.pressure * pg.normal;
+    s.resultant += lambda_q * pg.normal;
+    if (R)
+      for (size_t i = 0; i < pg.dofs.size(); ++i) (*R)(pg.dofs[i]) -= lambda_q * pg.dg(i);
+    if (t && lambda_q != 0.0)
+      for (size_t a = 0; a < pg.dofs.size(); ++a)
+        for (size_t b = 0; b < pg.dofs.size(); ++b)
+          if (const double v = pg.d2g(a, b); v != 0.0) t->emplace_back(pg.dofs[a], pg.dofs[b], -lambda_q * v);
+  }
+  if (gradients)
+    for (auto& g : s.dG) merge(g);
+  if (c.segmented) s.segment_points = std::move(seg_points);
+  return s;
+}
+
+bool node_active(const PairConstraints& c, const ConstraintState& s, const Eigen::VectorXd& lambda,
+                 int j) {
+  return s.found[j] && lambda(j) - c.augmentation(j) * s.G(j) / c.weight(j) > 0;
+}
+
+}  // namespace hpcontact::model

@@ -1,0 +1,89 @@
+// Exact contact of a pair by multipliers: the pressure λ_j an unknown at each multiplier node,
+// the weighted gaps G_j = Σ_q a_qj g_N(x_q) as constraints, and the contact forces Σ_j λ_j ∇G_j.
+#pragma once
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include "hpcontact/contact/multiplier_nodes.hpp"
+#include "hpcontact/contact/penalty.hpp"
+#include "hpcontact/model/discretization.hpp"
+
+namespace hpcontact::model {
+
+struct ContactPair;
+
+/// The constraints of a pair enforced exactly: its multiplier nodes, the points where the gap is
+/// evaluated and how each point's gap enters each node's constraint:
+///   G_j = Σ_q a_qj g_N(x_q)   (the weighted gap of node j [length²]),
+///   the contact force on the bodies f_c = Σ_j λ_j ∇G_j = Σ_q (Σ_j a_qj λ_j) ∇g_N(x_q),
+/// λ_j the pressure at node j. Collocation: one point per node, a_jj = W_j (G_j = W_j g_N(x_j)).
+/// Mortar: the pair's Gauss points, a_qj = w_q L_j(t_q), so that G_j = ∫ L_j g_N ds and
+/// W_j = ∫ L_j ds. Between two bodies the pair's own body carries the nodes and the gap is
+/// measured against the other body's deformed boundary (one-sided: constraints on both sides
+/// would repeat one another and leave the pressure undetermined).
+struct PairConstraints {
+  ConstraintRule rule = ConstraintRule::mortar;
+  contact::MultiplierNodes nodes;
+  std::vector<contact::ContactPoint> points;                       ///< where g_N is evaluated
+  std::vector<contact::ContactPoint> node_points;                  ///< a point at each node
+  std::vector<std::vector<std::pair<int, double>>> coefficients;   ///< per point: (node j, a_qj)
+  Eigen::VectorXd weight;        ///< W_j [length]: ∫ λ ds ≈ Σ_j W_j λ_j
+  Eigen::VectorXd augmentation;  ///< ε_j [force/length³] of the active-set test λ_j − ε_j G_j/W_j > 0
+  /// Mortar between two bodies: the points are made at each evaluation, `segment_quadrature`
+  /// Gauss points on each segment of an edge between the parameters where the projection onto
+  /// the other body crosses one of its vertices (so that each integrand is smooth; `points`
+  /// then holds the unsegmented rule, for W_j only).
+  bool segmented = false;
+  int segment_quadrature = 0;
+  std::vector<int> edges;  ///< the mesh edge of each edge of the nodes (chain order)
+  int size() const { return nodes.size(); }
+};
+
+/// The constraints of a pair of the problem (its chained contact edges, points and body;
+/// `two_bodies`: against another body).
+std::shared_ptr<const PairConstraints> make_pair_constraints(const ContactPairSpec& spec,
+                                                             const Body& body,
+                                                             const std::vector<contact::ChainEdge>& chain,
+                                                             const std::vector<contact::ContactPoint>& points,
+                                                             bool two_bodies);
+
+/// A pair's constraints at a state (all dofs u, its multipliers lambda).
+struct ConstraintState {
+  Eigen::VectorXd G;         ///< weighted gap per node [length²]
+  std::vector<char> found;   ///< per node: a point of its support has a closest point
+  /// Per node: ∂G_j/∂u as (global dof, value), each dof once (only when asked for).
+  std::vector<std::vector<std::pair<int, double>>> dG;
+  /// Per point: position, gap, normal, and the multiplier there as its pressure
+  /// λ_h(x_q) = Σ_j a_qj λ_j / w_q with the traction λ_h n.
+  std::vector<contact::PointState> points;
+  Vec2 resultant = Vec2::Zero();   ///< ∫ λ_h n ds: the force the obstacle exerts on the pair's body
+  /// ∂resultant/∂λ_j (the normals held), per node.
+  std::vector<Vec2> d_resultant;
+  /// ∂G_j/∂(factor of the obstacle's displacement) for a moving rigid obstacle, per node.
+  Eigen::VectorXd dG_dfactor;
+  /// The points evaluated when they are made per state (segmented mortar), else empty: then
+  /// they are PairConstraints::points.
+  std::vector<contact::ContactPoint> segment_points;
+};
+
+/// Evaluates the constraints of `pair` at u and lambda; subtracts the contact forces from R (all
+/// dofs, the residual K u − f − f_c) when R is not null, adds the curvature part of their
+/// tangent, −Σ_q λ_q ∇²g_N(x_q), to t when t is not null, and fills the gradients dG when
+/// `gradients`.
+ConstraintState evaluate_constraints(const Discretization& d, const ContactPair& pair,
+                                     const Eigen::VectorXd& u, const Eigen::VectorXd& lambda,
+                                     Eigen::VectorXd* R, std::vector<Eigen::Triplet<double>>* t,
+                                     bool gradients);
+
+/// Whether node j is active: some point of it has a closest point and λ_j − ε_j G_j / W_j > 0
+/// (the semi-smooth Newton's active set of the complementarity function
+/// C_j = λ_j − max(0, λ_j − ε_j ĝ_j), ĝ_j = G_j / W_j, whose zeros are g ≥ 0, λ ≥ 0, λ g = 0).
+bool node_active(const PairConstraints& c, const ConstraintState& s, const Eigen::VectorXd& lambda,
+                 int j);
+
+}  // namespace hpcontact::model

@@ -1,0 +1,189 @@
+// Exact contact enforcement (augmented Lagrangian, multipliers at the Gauss–Lobatto nodes): the
+// contact patch tests to round-off, and answers that do not depend on the augmentation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "hpcontact/io/problem_reader.hpp"
+#include "hpcontact/model/contact_solve.hpp"
+#include "hpcontact/post/fields.hpp"
+
+using namespace hpcontact;
+
+namespace {
+
+// Two blocks 1 × 0.5 stacked: lower 2 elements along x, upper 3 (the issue's patch test); the
+// lower block's bottom held vertically, the upper's top pressed down 0.01, one node of each held
+// in x. E = 1e6, ν = 0: uniaxial compression, the interface pressure 1e6 · 0.01 / 1 = 1e4.
+const char* kStackedBlocks = R"(
+case: patch-stacked
+bodies:
+  - name: lower
+    material: {E: 1.0e6, nu: 0, plane: strain}
+    nodes: {1: [0, 0], 2: [0.5, 0], 3: [1, 0], 4: [0, 0.5], 5: [0.5, 0.5], 6: [1, 0.5]}
+    elements: {1: [1, 2, 5, 4], 2: [2, 3, 6, 5]}
+    edge_sets: {bottom: [[1, 2], [2, 3]], top: [[4, 5], [5, 6]]}
+    constraints: [{edges: [bottom], uy: 0}, {nodes: [1], ux: 0}]
+  - name: upper
+    material: {E: 1.0e6, nu: 0, plane: strain}
+    nodes: {11: [0, 0.5], 12: [0.3333333333333333, 0.5], 13: [0.6666666666666666, 0.5], 14: [1, 0.5],
+            15: [0, 1], 16: [0.3333333333333333, 1], 17: [0.6666666666666666, 1], 18: [1, 1]}
+    elements: {11: [11, 12, 16, 15], 12: [12, 13, 17, 16], 13: [13, 14, 18, 17]}
+    edge_sets: {bottom: [[11, 12], [12, 13], [13, 14]], top: [[15, 16], [16, 17], [17, 18]]}
+    constraints: [{edges: [top], uy: -0.01}, {nodes: [15], ux: 0}]
+contact:
+  - {body: upper, edges: [bottom], obstacle: {type: body, body: lower, edges: [top]},
+     enforcement: augmented-lagrangian}
+solver: {tolerance: 1e-12}
+)";
+
+// The same with matching meshes: the upper block of 2 elements too.
+const char* kMatchingUpper = R"(
+  - name: upper
+    material: {E: 1.0e6, nu: 0, plane: strain}
+    nodes: {11: [0, 0.5], 12: [0.5, 0.5], 14: [1, 0.5], 15: [0, 1], 16: [0.5, 1], 18: [1, 1]}
+    elements: {11: [11, 12, 16, 15], 12: [12, 14, 18, 16]}
+    edge_sets: {bottom: [[11, 12], [12, 14]], top: [[15, 16], [16, 18]]}
+    constraints: [{edges: [top], uy: -0.01}, {nodes: [15], ux: 0}]
+)";
+
+// Two blocks meeting on the inclined line y = 0.4 + 0.2 x, not matching; bottom and top
+// displaced by u = −1e-3 (x, y), the sides under a pressure of 1000: a hydrostatic stress of
+// −1000 in both bodies, so that the interface carries the uniform pressure 1000 and no shear.
+const char* kInclinedBlocks = R"(
+case: patch-inclined
+bodies:
+  - name: lower
+    material: {E: 1.0e6, nu: 0, plane: strain}
+    nodes: {1: [0, 0], 2: [0.5, 0], 3: [1, 0], 4: [0, 0.4], 5: [0.5, 0.5], 6: [1, 0.6]}
+    elements: {1: [1, 2, 5, 4], 2: [2, 3, 6, 5]}
+    edge_sets: {bottom: [[1, 2], [2, 3]], sides: [[3, 6], [4, 1]], top: [[4, 5], [5, 6]]}
+    constraints: [{edges: [bottom], ux: "-1e-3*x", uy: "-1e-3*y"}]
+    loads: [{edges: [sides], pressure: 1000}]
+  - name: upper
+    material: {E: 1.0e6, nu: 0, plane: strain}
+    nodes: {11: [0, 0.4], 12: [0.3333333333333333, 0.4666666666666667],
+            13: [0.6666666666666666, 0.5333333333333333], 14: [1, 0.6],
+            15: [0, 1], 16: [0.3333333333333333, 1], 17: [0.6666666666666666, 1], 18: [1, 1]}
+    elements: {11: [11, 12, 16, 15], 12: [12, 13, 17, 16], 13: [13, 14, 18, 17]}
+    edge_sets: {bottom: [[11, 12], [12, 13], [13, 14]], top: [[15, 16], [16, 17], [17, 18]],
+                sides: [[14, 18], [11, 15]]}
+    constraints: [{edges: [top], ux: "-1e-3*x", uy: "-1e-3*y"}]
+    loads: [{edges: [sides], pressure: 1000}]
+contact:
+  - {body: upper, edges: [bottom], obstacle: {type: body, body: lower, edges: [top]},
+     enforcement: augmented-lagrangian}
+solver: {tolerance: 1e-12}
+)";
+
+// A block on a rigid plane: pressed down 0.01, one node held in x; pressure 1e6 · 0.01 / 0.5.
+const char* kBlockOnPlane = R"(
+case: patch-rigid
+bodies:
+  - name: block
+    material: {E: 1.0e6, nu: 0, plane: strain}
+    nodes: {1: [0, 0], 2: [0.5, 0], 3: [1, 0], 4: [0, 0.5], 5: [0.5, 0.5], 6: [1, 0.5]}
+    elements: {1: [1, 2, 5, 4], 2: [2, 3, 6, 5]}
+    edge_sets: {bottom: [[1, 2], [2, 3]], top: [[4, 5], [5, 6]]}
+    constraints: [{edges: [top], uy: -0.01}, {nodes: [4], ux: 0}]
+contact:
+  - {body: block, edges: [bottom], obstacle: {type: plane, point: [0, 0], normal: [0, 1]},
+     enforcement: augmented-lagrangian}
+solver: {tolerance: 1e-12}
+)";
+
+// A block whose bottom lies on the inclined rigid plane y = 0.2 x, hydrostatic as above.
+const char* kBlockOnInclinedPlane = R"(
+case: patch-rigid-inclined
+bodies:
+  - name: block
+    material: {E: 1.0e6, nu: 0, plane: strain}
+    nodes: {1: [0, 0], 2: [0.5, 0.1], 3: [1, 0.2], 4: [0, 0.5], 5: [0.5, 0.6], 6: [1, 0.7]}
+    elements: {1: [1, 2, 5, 4], 2: [2, 3, 6, 5]}
+    edge_sets: {bottom: [[1, 2], [2, 3]], top: [[4, 5], [5, 6]], sides: [[3, 6], [4, 1]]}
+    constraints: [{edges: [top], ux: "-1e-3*x", uy: "-1e-3*y"}]
+    loads: [{edges: [sides], pressure: 1000}]
+contact:
+  - {body: block, edges: [bottom], obstacle: {type: plane, point: [0, 0], normal: [-0.2, 1]},
+     enforcement: augmented-lagrangian}
+solver: {tolerance: 1e-12}
+)";
+
+struct PatchResult {
+  double multiplier_deviation = 0;  ///< max |λ_j − p| / p over the active nodes
+  double stress_deviation = 0;      ///< max |−n·σ·n − p| / p over the contact points
+  int active_nodes = 0, nodes = 0;
+};
+
+PatchResult solve_patch(const std::string& yaml, int p, const std::string& rule, double pressure) {
+  const auto spec = io::parse_problem(yaml, "patch.yaml",
+                                      {"discretization.degree=" + std::to_string(p),
+                                       "contact[0].constraint=" + rule});
+  const auto d = model::discretize(spec);
+  const auto sol = model::solve_contact(spec, d);
+  EXPECT_TRUE(sol.converged) << sol.message;
+  PatchResult r;
+  const auto& c = sol.contact.at(0);
+  for (const auto& n : c.nodes) {
+    ++r.nodes;
+    if (!n.active) continue;
+    ++r.active_nodes;
+    r.multiplier_deviation = std::max(r.multiplier_deviation, std::abs(n.pressure - pressure) / pressure);
+  }
+  for (double s : c.stress_pressure)
+    r.stress_deviation = std::max(r.stress_deviation, std::abs(s - pressure) / pressure);
+  return r;
+}
+
+std::string replace_upper(const std::string& text, const std::string& upper) {
+  const auto a = text.find("  - name: upper"), b = text.find("contact:");
+  return text.substr(0, a) + upper.substr(1) + text.substr(b);
+}
+
+}  // namespace
+
+// The contact patch test: a uniform pressure shall be carried exactly — in the multiplier at
+// every node and in the pressure from the stresses at every contact point, to 1e-10 of it — for
+// p = 1…8, between non-matching and matching meshes, on a flat and an inclined interface
+// (mortar constraints, segmented at the other body's element boundaries), and on a flat and an
+// inclined rigid plane (both rules). With the seed's penalty the non-matching case is off by
+// 1e-3…2e-2 (issue 15).
+TEST(ExactContactPatch, UniformPressureToRoundOff) {
+  struct Case {
+    const char* name;
+    std::string yaml;
+    double pressure;
+    std::vector<std::string> rules;
+  };
+  const std::vector<Case> cases = {
+      {"stacked, non-matching", kStackedBlocks, 1e4, {"mortar"}},
+      {"stacked, matching", replace_upper(kStackedBlocks, kMatchingUpper), 1e4, {"mortar", "collocation"}},
+      {"inclined, non-matching", kInclinedBlocks, 1e3, {"mortar"}},
+      {"block on a plane", kBlockOnPlane, 2e4, {"mortar", "collocation"}},
+      {"block on an inclined plane", kBlockOnInclinedPlane, 1e3, {"mortar", "collocation"}},
+  };
+  for (const auto& c : cases)
+    for (const auto& rule : c.rules)
+      for (int p = 1; p <= 8; ++p) {
+        const PatchResult r = solve_patch(c.yaml, p, rule, c.pressure);
+        EXPECT_EQ(r.active_nodes, r.nodes) << c.name << ", " << rule << ", p = " << p;
+        EXPECT_LT(r.multiplier_deviation, 1e-10) << c.name << ", " << rule << ", p = " << p;
+        EXPECT_LT(r.stress_deviation, 1e-10) << c.name << ", " << rule << ", p = " << p;
+      }
+}
+
+// Between non-matching meshes the one-sided collocation of the gap at the nodes cannot carry a
+// uniform pressure (the other body's shape functions are integrated across their kinks): the
+// reason mortar is the rule between two bodies. Asserted so that a change which makes it pass
+// is noticed (and the documentation changed).
+TEST(ExactContactPatch, CollocationBetweenNonMatchingMeshesIsNotExact) {
+  const auto spec = io::parse_problem(kStackedBlocks, "patch.yaml",
+                                      {"discretization.degree=3", "contact[0].constraint=collocation"});
+  const auto d = model::discretize(spec);
+  const auto sol = model::solve_contact(spec, d);
+  double deviation = 0;
+  for (double s : sol.contact.at(0).stress_pressure) deviation = std::max(deviation, std::abs(s - 1e4) / 1e4);
+  EXPECT_GT(deviation, 1e-3);
+}
