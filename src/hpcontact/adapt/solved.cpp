@@ -1,11 +1,14 @@
 // Solving once and locating the zone ends a node can serve.
 #include "hpcontact/adapt/solved.hpp"
 
+#include <algorithm>
+
 #include <limits>
 #include <optional>
 #include <set>
 #include <string>
 
+#include "hpcontact/adapt/transfer.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
 #include "hpcontact/post/fields.hpp"
@@ -18,8 +21,11 @@ SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progres
   s->spec = spec;
   s->discretization = model::discretize(s->spec);
   model::require_held(s->spec, s->discretization);
-  s->solution = model::solve_contact(s->spec, s->discretization, progress,
-                                     previous ? previous->solution.load_factor : 0.0);
+  model::StartState start;
+  if (previous)
+    start = carry_over(previous->discretization, previous->solution, s->discretization,
+                       model::make_contact_pairs(s->spec, s->discretization));
+  s->solution = model::solve_contact(s->spec, s->discretization, progress, start);
   HPC_REQUIRE(s->solution.converged, NumericalError, spec.file, ": the solver stopped: ",
               s->solution.message);
   return s;

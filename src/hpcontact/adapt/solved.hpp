@@ -22,8 +22,8 @@ struct Solved {
 using SolvedPtr = std::shared_ptr<const Solved>;
 
 /// Discretises and solves a contact problem; NumericalError when the solver does not converge.
-/// `previous` (if not null) is a solve of the same problem on another mesh: force control starts
-/// from its load factor.
+/// `previous` (if not null) is a solve of the same problem on another mesh: the solve starts from
+/// its solution carried over (carry_over(): its load factor, displacements and pressures).
 SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progress = {},
                 const Solved* previous = nullptr);
 

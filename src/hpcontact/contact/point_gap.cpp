@@ -19,10 +19,12 @@ PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const
   pg.foot = pg.x - pg.g * pg.normal;
   pg.dofs.resize(2 * m);
   pg.dg.resize(2 * m);
+  pg.dt.resize(2 * m);
   for (int k = 0; k < m; ++k)
     for (int c = 0; c < 2; ++c) {
       pg.dofs[2 * k + c] = offset + 2 * cp.modes[k] + c;
       pg.dg(2 * k + c) = cp.N(k) * pg.normal(c);
+      pg.dt(2 * k + c) = cp.N(k) * pg.tangent(c);
     }
   if (second) {
     pg.d2g.resize(2 * m, 2 * m);
@@ -53,12 +55,14 @@ PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
   const int L = 2 * (ms + mm);
   pg.dofs.resize(L);
   pg.dg.resize(L);
+  pg.dt.resize(L);
   Eigen::VectorXd Gt = Eigen::VectorXd::Zero(L), Dn = Eigen::VectorXd::Zero(L);
   for (int k = 0; k < ms; ++k)
     for (int c = 0; c < 2; ++c) {
       pg.dofs[2 * k + c] = offset_s + 2 * cp.modes[k] + c;
       pg.dg(2 * k + c) = cp.N(k) * n(c);
       Gt(2 * k + c) = cp.N(k) * t(c);
+      pg.dt(2 * k + c) = cp.N(k) * pg.tangent(c);
     }
   for (int k = 0; k < mm; ++k)
     for (int c = 0; c < 2; ++c) {
@@ -67,6 +71,7 @@ PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
       pg.dg(j) = -foot.N(k) * n(c);
       Gt(j) = -foot.N(k) * t(c);
       Dn(j) = foot.dN(k) * n(c);
+      pg.dt(j) = -foot.N(k) * pg.tangent(c);
     }
   if (second) {
     const double a = t.squaredNorm(), kappa = master.curvature(foot), cc = a - pg.g * kappa;

@@ -28,6 +28,9 @@ struct PointGap {
   double foot_t = 0;
   std::vector<int> dofs;       ///< global dofs: the point's body's, then the other body's
   Eigen::VectorXd dg;          ///< ∂g/∂u at dofs
+  /// τ·∂(x − x_foot)/∂u at dofs, the foot held as a material point of the obstacle: the
+  /// tangential relative displacement of the point per unit dof (friction).
+  Eigen::VectorXd dt;
   Eigen::MatrixXd d2g;         ///< ∂²g/∂u² at dofs (empty unless asked for)
 };
 

@@ -487,7 +487,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
                                 results);
       };
     }
-    auto sol = model::solve_contact(spec, d, options.progress, 0, on_step);
+    auto sol = model::solve_contact(spec, d, options.progress, {}, on_step);
     if (!step_files.empty()) {
       post::write_pvd((fs::path(options.out_dir) / "solution.pvd").string(), step_files, step_times);
       if (!contact_files.empty())

@@ -460,8 +460,10 @@ class SpecBuilder {
       c.enforcement = node["enforcement"].Scalar() == "augmented-lagrangian"
                           ? Enforcement::augmented_lagrangian
                           : Enforcement::penalty;
-      c.constraint = node["constraint"].Scalar() == "collocation" ? ConstraintRule::collocation
-                                                                   : ConstraintRule::mortar;
+      const std::string rule = node["constraint"].Scalar();
+      c.constraint = rule == "collocation" ? ConstraintRule::collocation
+                     : rule == "mortar"    ? ConstraintRule::mortar
+                                           : ConstraintRule::automatic;
       if (node["penalty"]) c.penalty = number(node["penalty"]);
       else if (c.enforcement == Enforcement::penalty)
         source_.fail(node, item_path, "missing key 'penalty' (required by enforcement: penalty)");
@@ -480,10 +482,10 @@ class SpecBuilder {
         c.friction.where = source_.where(fr, item_path + ".friction");
         if (c.friction.law == "coulomb" && !fr["mu"])
           source_.fail(fr, item_path + ".friction", "missing key 'mu' (required by law: coulomb)");
-        if (c.friction.law != "none" && !fr["penalty"])
+        if (c.friction.law != "none" && !fr["penalty"] && c.enforcement == Enforcement::penalty)
           source_.fail(fr, item_path + ".friction",
                        "missing key 'penalty' (the tangential penalty eps_T, required by law: " +
-                           c.friction.law + ")");
+                           c.friction.law + " with enforcement: penalty)");
         if (fr["penalty"]) c.friction.penalty = number(fr["penalty"]);
       }
       c.where = source_.where(node, item_path);

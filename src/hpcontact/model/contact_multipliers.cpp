@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "hpcontact/basis/quadrature.hpp"
 #include "hpcontact/contact/point_gap.hpp"
@@ -60,7 +61,9 @@ std::shared_ptr<const PairConstraints> make_pair_constraints(const ContactPairSp
                                                              const std::vector<contact::ContactPoint>& points,
                                                              bool two_bodies) {
   auto c = std::make_shared<PairConstraints>();
-  c->rule = spec.constraint;
+  c->rule = spec.constraint != ConstraintRule::automatic ? spec.constraint
+            : two_bodies                                 ? ConstraintRule::mortar
+                                                         : ConstraintRule::collocation;
   c->segmented = two_bodies && c->rule == ConstraintRule::mortar;
   c->segment_quadrature = spec.quadrature;
   for (const auto& ce : chain) c->edges.push_back(ce.edge);
@@ -85,6 +88,11 @@ std::shared_ptr<const PairConstraints> make_pair_constraints(const ContactPairSp
     for (const auto& a : c->coefficients)
       for (const auto& [j, v] : a) c->weight(j) += v;
   }
+  if (spec.friction.law != "none") {
+    c->friction.kind = spec.friction.law == "stick" ? contact::FrictionLaw::Kind::stick
+                                                    : contact::FrictionLaw::Kind::coulomb;
+    c->friction.mu = spec.friction.mu;
+  }
   c->augmentation.resize(n);
   for (int j = 0; j < n; ++j) {
     if (spec.penalty > 0) {
@@ -97,6 +105,8 @@ std::shared_ptr<const PairConstraints> make_pair_constraints(const ContactPairSp
                          : m.youngs_modulus;
     c->augmentation(j) = E * c->nodes.nodes[j].stiffness_scale;
   }
+  c->tangential_augmentation =
+      spec.friction.penalty > 0 ? Eigen::VectorXd::Constant(n, spec.friction.penalty) : c->augmentation;
   return c;
 }
 
@@ -125,7 +135,7 @@ void merge(std::vector<std::pair<int, double>>& g) {
 ConstraintState evaluate_constraints(const Discretization& d, const ContactPair& pair,
                                      const Eigen::VectorXd& u, const Eigen::VectorXd& lambda,
                                      Eigen::VectorXd* R, std::vector<Eigen::Triplet<double>>* t,
-                                     bool gradients) {
+                                     bool gradients, const FrictionInputs& friction) {
   const PairConstraints& c = *pair.constraints;
   const Body& body = d.bodies[pair.body];
   const int n = c.size();
@@ -135,13 +145,19 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
   s.d_resultant.assign(n, Vec2::Zero());
   s.dG_dfactor = Eigen::VectorXd::Zero(n);
   if (gradients) s.dG.resize(n);
+  const bool tangential = c.has_friction() && friction.lambda_t;
+  if (tangential) {
+    s.GT = Eigen::VectorXd::Zero(n);
+    s.d_resultant_t.assign(n, Vec2::Zero());
+    if (gradients) s.dGT.resize(n);
+  }
   const Eigen::VectorXd ua = u.segment(body.dof_offset, body.dofs.n_dofs());
   if (pair.other >= 0) {
     const Body& other = d.bodies[pair.other];
     pair.boundary->set_displacement(ua);
     pair.other_boundary->set_displacement(u.segment(other.dof_offset, other.dofs.n_dofs()));
   }
-  const bool second = t != nullptr;
+  const bool second = t != nullptr && !std::getenv("HPC_NO_CURV");
   // the points and their coefficients: fixed, or the segments of the current state
   std::vector<contact::ContactPoint> seg_points;
   std::vector<std::vector<std::pair<int, double>>> seg_coefficients;
@@ -173,7 +189,16 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
     ps.foot_t = pg.foot_t;
     if (!pg.found) continue;
     // the multiplier at the point, times its weight: λ_q = Σ_j a_qj λ_j [force]
-    double lambda_q = 0, w_q = 0;
+    double lambda_q = 0, w_q = 0, lambda_t_q = 0;
+    // tangential slip since the last converged step: τ·Δ(x − x_foot), the foot a material point
+    double slip_q = 0;
+    if (tangential) {
+      for (size_t i = 0; i < pg.dofs.size(); ++i) {
+        const int dof = pg.dofs[i];
+        slip_q += pg.dt(i) * (u(dof) - (friction.u_committed ? (*friction.u_committed)(dof) : 0.0));
+      }
+      slip_q -= pg.tangent.dot(friction.obstacle_increment);
+    }
     for (const auto& [j, a] : coefficients[q]) {
       lambda_q += a * lambda(j);
       w_q += a;
@@ -182,26 +207,48 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
       s.d_resultant[j] += a * pg.normal;
       s.dG_dfactor(j) -= a * pg.normal.dot(moving);
       if (gradients) accumulate(s.dG[j], pg.dofs, pg.dg, a);
+      if (tangential) {
+        lambda_t_q += a * (*friction.lambda_t)(j);
+        s.GT(j) += a * slip_q;
+        s.d_resultant_t[j] -= a * pg.tangent;
+        if (gradients) accumulate(s.dGT[j], pg.dofs, pg.dt, a);
+      }
     }
     ps.pressure = w_q != 0 ? lambda_q / w_q : 0.0;
     ps.traction = ps.pressure * pg.normal;
     s.resultant += lambda_q * pg.normal;
-    if (R)
+    if (tangential) {
+      ps.t_t = w_q != 0 ? lambda_t_q / w_q : 0.0;
+      ps.g_t = slip_q;
+      ps.traction -= ps.t_t * pg.tangent;
+      s.resultant -= lambda_t_q * pg.tangent;
+      if (ps.pressure > 0)
+        ps.stick_slip = c.friction.kind == contact::FrictionLaw::Kind::coulomb &&
+                                std::abs(ps.t_t) >= (1 - 1e-9) * c.friction.mu * ps.pressure
+                            ? contact::StickSlip::slip
+                            : contact::StickSlip::stick;
+    }
+    if (R) {
       for (size_t i = 0; i < pg.dofs.size(); ++i) (*R)(pg.dofs[i]) -= lambda_q * pg.dg(i);
-    if (t && lambda_q != 0.0)
+      if (tangential)
+        for (size_t i = 0; i < pg.dofs.size(); ++i) (*R)(pg.dofs[i]) += lambda_t_q * pg.dt(i);
+    }
+    if (second && lambda_q != 0.0)
       for (size_t a = 0; a < pg.dofs.size(); ++a)
         for (size_t b = 0; b < pg.dofs.size(); ++b)
           if (const double v = pg.d2g(a, b); v != 0.0) t->emplace_back(pg.dofs[a], pg.dofs[b], -lambda_q * v);
   }
-  if (gradients)
+  if (gradients) {
     for (auto& g : s.dG) merge(g);
+    for (auto& g : s.dGT) merge(g);
+  }
   if (c.segmented) s.segment_points = std::move(seg_points);
   return s;
 }
 
 bool node_active(const PairConstraints& c, const ConstraintState& s, const Eigen::VectorXd& lambda,
                  int j) {
-  return s.found[j] && lambda(j) - c.augmentation(j) * s.G(j) / c.weight(j) > 0;
+  return s.found[j] && lambda(j) - c.augmentation(j) * s.G(j) / c.weight(j) >= 0;
 }
 
 }  // namespace hpcontact::model

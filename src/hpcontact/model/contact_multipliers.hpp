@@ -41,6 +41,13 @@ struct PairConstraints {
   bool segmented = false;
   int segment_quadrature = 0;
   std::vector<int> edges;  ///< the mesh edge of each edge of the nodes (chain order)
+  /// Friction at the nodes: a tangential multiplier λ_T,j (the traction along τ the other side
+  /// receives; this body receives −λ_T τ) against the weighted tangential slip since the last
+  /// converged step, G_T,j = Σ_q a_qj τ·Δ(x_q − x_foot) (stick: G_T,j = 0; Coulomb: slip where
+  /// |λ_T + c_T G_T/W| would exceed μ (λ_N − ε ĝ), then λ_T = μ λ_N sign(·)).
+  contact::FrictionLaw friction;
+  Eigen::VectorXd tangential_augmentation;  ///< c_T,j [force/length³]
+  bool has_friction() const { return friction.active(); }
   int size() const { return nodes.size(); }
 };
 
@@ -69,16 +76,32 @@ struct ConstraintState {
   /// The points evaluated when they are made per state (segmented mortar), else empty: then
   /// they are PairConstraints::points.
   std::vector<contact::ContactPoint> segment_points;
+  /// With friction: per node the weighted tangential slip since the last converged step
+  /// [length²], its gradient (when asked for) and ∂resultant/∂λ_T,j.
+  Eigen::VectorXd GT;
+  std::vector<std::vector<std::pair<int, double>>> dGT;
+  std::vector<Vec2> d_resultant_t;
+};
+
+/// What an evaluation with friction needs besides the state: the tangential multipliers, the
+/// dofs of the last converged step (all dofs; the slip is measured from there), and how far a
+/// rigid obstacle has moved since then.
+struct FrictionInputs {
+  const Eigen::VectorXd* lambda_t = nullptr;
+  const Eigen::VectorXd* u_committed = nullptr;
+  Vec2 obstacle_increment = Vec2::Zero();
 };
 
 /// Evaluates the constraints of `pair` at u and lambda; subtracts the contact forces from R (all
 /// dofs, the residual K u − f − f_c) when R is not null, adds the curvature part of their
 /// tangent, −Σ_q λ_q ∇²g_N(x_q), to t when t is not null, and fills the gradients dG when
-/// `gradients`.
+/// `gradients`. With friction (the pair's law and friction.lambda_t given) also the tangential
+/// slips, their gradients and forces (the tangent of τ's turning is left out: friction's Newton
+/// converges linearly where τ turns).
 ConstraintState evaluate_constraints(const Discretization& d, const ContactPair& pair,
                                      const Eigen::VectorXd& u, const Eigen::VectorXd& lambda,
                                      Eigen::VectorXd* R, std::vector<Eigen::Triplet<double>>* t,
-                                     bool gradients);
+                                     bool gradients, const FrictionInputs& friction = {});
 
 /// Whether node j is active: some point of it has a closest point and λ_j − ε_j G_j / W_j > 0
 /// (the semi-smooth Newton's active set of the complementarity function

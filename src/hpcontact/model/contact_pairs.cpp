@@ -76,7 +76,7 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
                   ".law: unknown friction law '", cs.friction.law, "' (expected none, stick or coulomb)");
       HPC_REQUIRE(cs.friction.mu >= 0, InputError, key, ".mu: the friction coefficient must be >= 0 (got ",
                   cs.friction.mu, ")");
-      HPC_REQUIRE(cs.friction.penalty > 0, InputError, key,
+      HPC_REQUIRE(cs.friction.penalty > 0 || (exact && cs.friction.penalty == 0), InputError, key,
                   ".penalty: the tangential penalty must be > 0 (got ", cs.friction.penalty, ")");
       pair.friction.kind = cs.friction.law == "stick" ? contact::FrictionLaw::Kind::stick
                                                       : contact::FrictionLaw::Kind::coulomb;
@@ -119,9 +119,6 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       pair.obstacle = pair.other_boundary;
     }
     if (exact) {
-      HPC_REQUIRE(cs.friction.law == "none", InputError, cs.where.str(),
-                  ".enforcement: friction is enforced by the penalty only so far; set enforcement: "
-                  "penalty for a pair with friction");
       pair.constraints = make_pair_constraints(cs, body, chain, pair.points, pair.other >= 0);
     }
     // An obstacle the body starts deep inside (more than 1 % of its size) is a wrong normal or
@@ -146,7 +143,7 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       pair.moving->set_load_factor(0);
       pair.obstacle = pair.moving;
     }
-    if (pair.friction.active()) {
+    if (pair.friction.active() && !exact) {
       pair.memory = std::make_shared<ContactPair::FrictionMemory>();
       pair.memory->points.resize(pair.points.size());
       pair.memory->other_points.resize(pair.other_points.size());

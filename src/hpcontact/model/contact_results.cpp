@@ -15,11 +15,24 @@
 
 namespace hpcontact::model {
 
+ConstraintState pair_constraint_state(const Discretization& d, const ContactPair& pair,
+                                      const Eigen::VectorXd& u, const Eigen::VectorXd& multipliers) {
+  const int m = pair.constraints->size();
+  const Eigen::VectorXd lambda = multipliers.head(m);
+  Eigen::VectorXd lambda_t;
+  FrictionInputs fi;
+  if (pair.constraints->has_friction() && multipliers.size() == 2 * m) {
+    lambda_t = multipliers.tail(m);
+    fi.lambda_t = &lambda_t;
+  }
+  return evaluate_constraints(d, pair, u, lambda, nullptr, nullptr, false, fi);
+}
+
 Vec2 contact_resultant(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u,
                        const Eigen::VectorXd* multipliers) {
   if (pair.constraints) {
     HPC_ASSERT(multipliers, "an exact pair's resultant needs its multipliers");
-    return evaluate_constraints(d, pair, u, *multipliers, nullptr, nullptr, false).resultant;
+    return pair_constraint_state(d, pair, u, *multipliers).resultant;
   }
   return pair_forces(d, pair, u, nullptr).resultant(pair);
 }
@@ -132,68 +145,41 @@ std::pair<Vec2, Vec2> boundary_position(const Body& body, int q, int le, double 
 }
 
 /// The zone ends of an exactly enforced pair: between neighbouring multiplier nodes of one edge
-/// of which one carries pressure and the other not. The end is placed by the asymptotic forms of
-/// frictionless contact at a smooth zone end — the pressure falls like √(b − s) on the closed
-/// side, the gap rises like (s − b)^{3/2} on the open side — fitted to the two nodes on each side
-/// (s the distance along the boundary), the mean of the fits that exist, within the two nodes.
+/// of which one carries pressure and the other not. The exact pressure λ and gap g both vanish at
+/// the end b (λ > 0, g = 0 before it; λ = 0, g > 0 beyond), so for any stiffness κ > 0
+///   φ(t) = g(t) − λ_h(t) / κ
+/// has its only root at b; with the discrete multiplier field λ_h and gap g its root (Pegasus)
+/// is the estimate. κ = E' p / h of the edge (the stiffness of the boundary over a node
+/// spacing): a fixed scale of the body, not the augmentation, so that the end is a function of
+/// the solution alone.
 ZoneEnds node_zone_ends(const Body& body, const ContactPair& pair,
-                        const std::vector<ContactResult::Node>& nodes, const Eigen::VectorXd& u) {
+                        const std::vector<ContactResult::Node>& nodes, const Eigen::VectorXd& u,
+                        const Eigen::VectorXd& lambda) {
   const PairConstraints& c = *pair.constraints;
   ZoneEnds z;
-  const auto& edge_nodes = c.nodes.edge_nodes;
-  // The nodes of the edges in chain order, with the edges they belong to.
-  for (size_t k = 0; k < edge_nodes.size(); ++k) {
-    const auto& en = edge_nodes[k];
+  for (size_t k = 0; k < c.nodes.edge_nodes.size(); ++k) {
+    const auto& en = c.nodes.edge_nodes[k];
+    const auto& edge = body.mesh.edge(pair.edges[k]);
+    const int q = edge.quads[0], le = edge.local_edge[0];
+    const auto& m = body.material_of(q);
+    const double E = m.plane == material::Plane::strain
+                         ? m.youngs_modulus / (1 - m.poisson_ratio * m.poisson_ratio)
+                         : m.youngs_modulus;
     const int p = static_cast<int>(en.size()) - 1;
-    for (int i = 0; i < p; ++i) {
-      const int a = en[i], b = en[i + 1];
-      if (nodes[a].active == nodes[b].active) continue;
-      // closed node, open node, their parameters, and the neighbours beyond them (same chain)
-      const bool a_closed = nodes[a].active;
-      const int ic = a_closed ? i : i + 1, io = a_closed ? i + 1 : i, dir = a_closed ? -1 : 1;
-      auto node_at = [&](int idx) -> int {
-        if (idx >= 0 && idx <= p) return en[idx];
-        // across the vertex into the neighbouring edge of the chain
-        for (size_t kk = 0; kk < edge_nodes.size(); ++kk) {
-          if (kk == k) continue;
-          const auto& other = edge_nodes[kk];
-          const int vertex = idx < 0 ? en[0] : en[p];
-          for (size_t m = 0; m < other.size(); ++m)
-            if (other[m] == vertex) {
-              const int step = (m == 0) ? 1 : -1;
-              const int off = idx < 0 ? -idx : idx - p;
-              const int mm = static_cast<int>(m) + step * off;
-              if (mm >= 0 && mm < static_cast<int>(other.size())) return other[mm];
-            }
-        }
-        return -1;
-      };
-      const int closed = en[ic], open = en[io];
-      const int closed2 = node_at(ic + dir), open2 = node_at(io - dir);
-      const double h = (nodes[open].X - nodes[closed].X).norm();
-      std::vector<double> fits;  // distance of the end from the closed node
-      if (closed2 >= 0 && nodes[closed2].active && nodes[closed2].pressure > nodes[closed].pressure) {
-        const double d2 = (nodes[closed].X - nodes[closed2].X).norm();
-        const double p1 = nodes[closed].pressure, p2 = nodes[closed2].pressure;
-        fits.push_back(d2 * p1 * p1 / (p2 * p2 - p1 * p1));
-      }
-      if (open2 >= 0 && !nodes[open2].active && nodes[open].gap > 0 && nodes[open2].gap > nodes[open].gap) {
-        const double d2 = (nodes[open2].X - nodes[open].X).norm();
-        const double r = std::pow(nodes[open].gap / nodes[open2].gap, 2.0 / 3.0);
-        // (h − e) / (h + d2 − e) = r  ⇒  e = (h − r (h + d2)) / (1 − r)
-        fits.push_back((h - r * (h + d2)) / (1 - r));
-      }
-      double e = 0.5 * h;
-      if (!fits.empty()) {
-        e = 0;
-        for (double f : fits) e += f / fits.size();
-      }
-      e = std::clamp(e, 0.0, h);
-      // the parameter on the edge, linear between the two nodes' parameters
-      const double tc = c.nodes.edge_points[k][ic], to = c.nodes.edge_points[k][io];
-      const double t = tc + (to - tc) * (h > 0 ? e / h : 0.5);
-      const auto& edge = body.mesh.edge(pair.edges[k]);
-      const auto [X, x] = boundary_position(body, edge.quads[0], edge.local_edge[0], t, u);
+    const double kappa = E * p / (body.mesh.node(edge.v1) - body.mesh.node(edge.v0)).norm();
+    auto phi = [&](double t) {
+      return gap_at(body, *pair.obstacle, q, le, t, u, nullptr) -
+             c.nodes.interpolate(static_cast<int>(k), t, lambda) / kappa;
+    };
+    for (size_t i = 0; i + 1 < en.size(); ++i) {
+      if (nodes[en[i]].active == nodes[en[i + 1]].active) continue;
+      const double ta = c.nodes.edge_points[k][i], tb = c.nodes.edge_points[k][i + 1];
+      const double fa = phi(ta), fb = phi(tb);
+      double t_end = 0.5 * (ta + tb);
+      if ((fa < 0) != (fb < 0)) t_end = pegasus_root(phi, ta, tb, fa, fb, 1e-14);
+      else if (std::abs(fa) < std::abs(fb)) t_end = ta;
+      else t_end = tb;
+      const auto [X, x] = boundary_position(body, q, le, t_end, u);
       z.X.push_back(X);
       z.x.push_back(x);
     }
@@ -222,7 +208,7 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
   ConstraintState s;
   if (pair.constraints) {
     HPC_ASSERT(multipliers, "an exact pair's results need its multipliers");
-    s = evaluate_constraints(d, pair, u, *multipliers, nullptr, nullptr, false);
+    s = pair_constraint_state(d, pair, u, *multipliers);
   }
   const std::vector<contact::ContactPoint>& points =
       !pair.constraints          ? pair.points
@@ -237,6 +223,7 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       ContactResult::Node n;
       std::tie(n.X, n.x) = boundary_position(body, cp.element, cp.local_edge, cp.t, u);
       n.pressure = (*multipliers)(j);
+      if (c.has_friction() && multipliers->size() == 2 * c.size()) n.tangential = (*multipliers)(c.size() + j);
       n.gap = s.found[j] ? s.G(j) / c.weight(j) : std::numeric_limits<double>::infinity();
       n.active = n.pressure > 0;
       res.p_max = std::max(res.p_max, n.pressure);
@@ -255,7 +242,7 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
   }
   for (const auto& ps : res.states)
     if (std::isfinite(ps.gap)) res.max_penetration = std::max(res.max_penetration, -ps.gap);
-  ZoneEnds own = pair.constraints ? node_zone_ends(body, pair, res.nodes, u)
+  ZoneEnds own = pair.constraints ? node_zone_ends(body, pair, res.nodes, u, multipliers->head(pair.constraints->size()))
                                   : zone_ends(body, pair.points, res.states, *pair.obstacle, pair, u);
   res.gamma_star = std::move(own.X);
   res.gamma_star_deformed = std::move(own.x);

@@ -48,6 +48,7 @@ struct ContactResult {
   struct Node {
     Vec2 X, x;          ///< undeformed and deformed position
     double pressure = 0;  ///< λ_j
+    double tangential = 0;  ///< λ_T,j with friction: the tangential traction (along τ on the other side)
     double gap = 0;       ///< the weighted gap G_j / W_j (collocation: g_N at the node)
     bool active = false;  ///< λ_j > 0
   };
@@ -89,6 +90,11 @@ private:
 /// its points' states, pressures from the stresses, resultant, Γ*, half width.
 ContactResult evaluate_contact(const Discretization& d, const ContactPair& pair,
                                const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers = nullptr);
+
+/// The constraints of an exactly enforced pair at u with all its multipliers (normal, then
+/// tangential with friction), the tangential slips measured from the undeformed state.
+ConstraintState pair_constraint_state(const Discretization& d, const ContactPair& pair,
+                                      const Eigen::VectorXd& u, const Eigen::VectorXd& multipliers);
 
 /// ∫ traction ds on the pair's body at the state u (and its multipliers when it is enforced
 /// exactly).

@@ -17,7 +17,7 @@
 namespace hpcontact::model {
 
 NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d,
-                                const ProgressFn& progress, double initial_factor,
+                                const ProgressFn& progress, const StartState& start,
                                 const StepFn& on_step) {
   const SolverSpec& ss = spec.solver;
   auto pairs = make_contact_pairs(spec, d);
@@ -178,7 +178,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
 
   // The first factor: 1 (the displacements as prescribed) or, under force control, a factor
   // the caller expects to be close (the previous mesh's, in an adaptive loop).
-  const double first = ss.target_resultant && initial_factor > 0 ? initial_factor : 1.0;
+  const double first = ss.target_resultant && start.factor > 0 ? start.factor : 1.0;
   double lambda = 0;
   // A failed run keeps the last converged state, marked not converged.
   auto failed = [&]() {
@@ -196,6 +196,16 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   // that friction holds them in the first load step already.
   system.set_factors(0, 0);
   system.commit(x);
+  // A warm start (an adaptive loop's previous solution): its dofs and multipliers, at the
+  // factor force control starts from; for exactly enforced pairs without friction (whose path
+  // it would skip; the penalty keeps the seed's solves from the undeformed state).
+  const bool exact = std::all_of(pairs.begin(), pairs.end(),
+                                 [](const ContactPair& p) { return p.constraints != nullptr; });
+  const bool warm = start.u.size() == d.n_dofs && !system.has_friction() && exact && !pairs.empty();
+  if (warm) {
+    system.set_factors(first, first);
+    x = system.unknowns(start.u, start.multipliers);
+  }
   if (ss.control == "arc-length") {
     // Prescribed displacements first (loads at 0), then the arc-length path of the loads.
     if (d.prescribed.cwiseAbs().maxCoeff() > 0 &&
@@ -234,7 +244,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     }
   } else if (ss.stages.empty() && ss.target_resultant && !pairs.empty() && pairs.front().constraints) {
     // Force control of an exactly enforced pair: the factor is one more unknown of Newton's
-    // system, its equation the target resultant (bordered), solved from the start at once.
+    // system, its equation the target resultant (bordered), from the start at once.
     const auto& tr = *ss.target_resultant;
     system.set_factors(first, first);
     system.set_force_target(std::make_pair(tr.component, tr.value));

@@ -52,12 +52,22 @@ using StepFn = std::function<void(const Eigen::VectorXd& u, const NonlinearSolut
                                   const std::vector<Eigen::VectorXd>& multipliers)>;
 
 
+/// Where a solve starts: from nothing (the default), or from a state close to the answer (the
+/// previous mesh's solution in an adaptive loop, carried onto this discretisation).
+struct StartState {
+  /// > 0: force control starts at this factor instead of 1.
+  double factor = 0;
+  /// All dofs of this discretisation, and per pair its multipliers (as NonlinearSolution
+  /// holds them); empty: zero.
+  Eigen::VectorXd u;
+  std::vector<Eigen::VectorXd> multipliers;
+};
+
 /// Solves the (nonlinear) contact problem with load steps and Newton's method; with
-/// solver.target_resultant, finds the load factor by the secant method.
-/// `initial_factor` > 0 starts the force control there instead of at 1 (a guess close to the
-/// answer, e.g. the previous mesh's factor in an adaptive loop, saves secant iterations).
+/// solver.target_resultant, finds the load factor: as one more unknown of Newton's system when
+/// the first pair is enforced exactly, else by the secant method over load-controlled solves.
 NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d,
-                                const ProgressFn& progress = {}, double initial_factor = 0,
+                                const ProgressFn& progress = {}, const StartState& start = {},
                                 const StepFn& on_step = {});
 
 /// The Newton tangent of the contact problem at a solution, on the unknowns of its solve:

@@ -18,15 +18,21 @@ ContactSystem::ContactSystem(const Discretization& d, const std::vector<ContactP
       finite_(d),
       tangent_(tangent),
       n_u_(op_.n_unknowns) {
+  // per exact pair: its normal multipliers, then (with friction) its tangential ones
   for (const auto& pair : pairs_) {
     z_offset_.push_back(pair.constraints ? n_z_ : -1);
-    if (pair.constraints) n_z_ += pair.constraints->size();
+    if (pair.constraints) n_z_ += pair.constraints->size() * (pair.constraints->has_friction() ? 2 : 1);
   }
   gamma_ = Eigen::VectorXd::Zero(n_z_);
   for (size_t k = 0; k < pairs_.size(); ++k)
-    if (const auto& c = pairs_[k].constraints)
+    if (const auto& c = pairs_[k].constraints) {
       gamma_.segment(z_offset_[k], c->size()) = c->augmentation.cwiseProduct(c->weight);
+      if (c->has_friction())
+        gamma_.segment(z_offset_[k] + c->size(), c->size()) =
+            c->tangential_augmentation.cwiseProduct(c->weight);
+    }
   K_prescribed_ = op_.K * d_.prescribed;
+  u_committed_ = Eigen::VectorXd::Zero(d_.n_dofs);
 }
 
 void ContactSystem::set_factors(double displacements, double loads) {
@@ -54,9 +60,12 @@ double ContactSystem::loads_factor(const Eigen::VectorXd& x) const {
   return target_ ? x(size() - 1) : lambda_f_;
 }
 
-void ContactSystem::commit(const Eigen::VectorXd& x) const {
+void ContactSystem::commit(const Eigen::VectorXd& x) {
   if (!has_friction()) return;
   const Eigen::VectorXd u = full(x);
+  // exact friction measures slips from here
+  u_committed_ = u;
+  factor_committed_ = displacement_factor(x);
   for (const auto& pair : pairs_)
     if (pair.memory) commit_friction(pair, pair_forces(d_, pair, u, nullptr));
 }
@@ -65,7 +74,7 @@ Eigen::VectorXd ContactSystem::load_vector() const { return op_.restrict(d_, op_
 
 bool ContactSystem::has_friction() const {
   for (const auto& pair : pairs_)
-    if (pair.memory) return true;
+    if (pair.memory || (pair.constraints && pair.constraints->has_friction())) return true;
   return false;
 }
 
@@ -74,7 +83,7 @@ Eigen::VectorXd ContactSystem::unknowns(const Eigen::VectorXd& u,
   Eigen::VectorXd x = Eigen::VectorXd::Zero(size());
   x.head(n_u_) = op_.restrict(d_, u);
   for (size_t k = 0; k < pairs_.size() && k < multipliers.size(); ++k)
-    if (z_offset_[k] >= 0 && multipliers[k].size() == pairs_[k].constraints->size())
+    if (z_offset_[k] >= 0 && multipliers[k].size() == n_multipliers(k))
       x.segment(n_u_ + z_offset_[k], multipliers[k].size()) = multipliers[k];
   if (target_) x(size() - 1) = lambda_;
   return x;
@@ -83,7 +92,7 @@ Eigen::VectorXd ContactSystem::unknowns(const Eigen::VectorXd& u,
 std::vector<Eigen::VectorXd> ContactSystem::multipliers(const Eigen::VectorXd& x) const {
   std::vector<Eigen::VectorXd> m(pairs_.size());
   for (size_t k = 0; k < pairs_.size(); ++k)
-    if (z_offset_[k] >= 0) m[k] = x.segment(n_u_ + z_offset_[k], pairs_[k].constraints->size());
+    if (z_offset_[k] >= 0) m[k] = x.segment(n_u_ + z_offset_[k], n_multipliers(k));
   return m;
 }
 
@@ -130,6 +139,15 @@ void ContactSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve
   solve::SparseMatrix Kw(size(), size());
   Kw.setFromTriplets(W.begin(), W.end());
   *K = Kw + Kc;
+}
+
+double ContactSystem::admissible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const {
+  if (!target_) return 1;
+  const double a = x(size() - 1), da = dx(size() - 1);
+  if (!(std::abs(a) > 0)) return 1;
+  // α + τ Δα within [α/2, 2α]
+  const double limit = da > 0 ? std::abs(a) : 0.5 * std::abs(a);
+  return std::abs(da) > limit ? limit / std::abs(da) : 1.0;
 }
 
 void ContactSystem::factorize(solve::LinearSolver& sparse, const solve::SparseMatrix& K) {
@@ -179,7 +197,16 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
     const PairConstraints& c = *pair.constraints;
     const int o = n_u_ + z_offset_[k];
     const Eigen::VectorXd lambda = x.segment(o, c.size());
-    const ConstraintState s = evaluate_constraints(d_, pair, u, lambda, &R, t, T != nullptr);
+    const bool tangential = c.has_friction();
+    const Eigen::VectorXd lambda_t = tangential ? Eigen::VectorXd(x.segment(o + c.size(), c.size()))
+                                                : Eigen::VectorXd();
+    FrictionInputs fi;
+    if (tangential) {
+      fi.lambda_t = &lambda_t;
+      fi.u_committed = &u_committed_;
+      if (pair.moving) fi.obstacle_increment = (alpha - factor_committed_) * pair.moving->direction();
+    }
+    const ConstraintState s = evaluate_constraints(d_, pair, u, lambda, &R, t, T != nullptr, fi);
     if (states) (*states)[k] = s.points;
     int active_nodes = 0;
     for (int j = 0; j < c.size(); ++j) {
@@ -203,19 +230,27 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
         T->emplace_back(o + j, size() - 1, c.augmentation(j) * s.dG_dfactor(j));
     }
     points_in_contact_ += active_nodes;
+    if (tangential) tangential_rows(c, s, lambda, lambda_t, o, r, T, target_ ? &z_rows : nullptr);
     if (target_ && k == 0) {
       // The target row: s·F_c − F, s the sign of the resultant's component; held (Δα = 0)
       // while no node carries force.
       const int comp = target_->first, row = size() - 1;
       const double F = s.resultant(comp), sign = F < 0 ? -1.0 : 1.0;
       if (active_nodes == 0) {
-        r(row) = 0;
-        if (T) T->emplace_back(row, row, 1.0);
+        // No node carries force: the factor grows (as if the force grew with it, F ∝ α: the
+        // step doubles α). Never a solution: the residual is the whole target.
+        r(row) = -target_->second;
+        if (T) T->emplace_back(row, row, target_->second / std::max(std::abs(alpha), 1e-300));
       } else {
         r(row) = sign * F - target_->second;
-        if (T)
+        if (T) {
           for (int j = 0; j < c.size(); ++j)
             if (const double v = sign * s.d_resultant[j](comp); v != 0.0) T->emplace_back(row, o + j, v);
+          if (tangential)
+            for (int j = 0; j < c.size(); ++j)
+              if (const double v = sign * s.d_resultant_t[j](comp); v != 0.0)
+                T->emplace_back(row, o + c.size() + j, v);
+        }
       }
     }
   }
@@ -238,6 +273,48 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
       if (cu(i) != 0.0) T->emplace_back(i, col, cu(i));
     for (const auto& e : z_rows)
       if (const double up = d_.prescribed(e.col()); up != 0.0) T->emplace_back(e.row(), col, e.value() * up);
+  }
+}
+
+void ContactSystem::tangential_rows(const PairConstraints& c, const ConstraintState& s,
+                                    const Eigen::VectorXd& lambda, const Eigen::VectorXd& lambda_t,
+                                    int o, Eigen::VectorXd& r, Triplets* T, Triplets* z_rows) const {
+  const int m = c.size();
+  for (int j = 0; j < m; ++j) {
+    const int row = o + m + j;
+    const double W = c.weight(j), cT = c.tangential_augmentation(j);
+    enum class State { open, stick, slip } state = State::open;
+    double sign = 1;
+    if (node_active(c, s, lambda, j)) {
+      state = State::stick;
+      if (c.friction.kind == contact::FrictionLaw::Kind::coulomb) {
+        // the trial traction against the augmented normal pressure
+        const double trial = lambda_t(j) + cT * s.GT(j) / W;
+        const double bound = c.friction.mu * (lambda(j) - c.augmentation(j) * s.G(j) / W);
+        if (std::abs(trial) > bound) {
+          state = State::slip;
+          sign = trial < 0 ? -1.0 : 1.0;
+        }
+      }
+    }
+    switch (state) {
+      case State::open: r(row) = W * lambda_t(j); break;
+      case State::stick: r(row) = cT * s.GT(j); break;
+      case State::slip: r(row) = W * (lambda_t(j) - c.friction.mu * sign * lambda(j)); break;
+    }
+    if (!T) continue;
+    for (const auto& [dof, v] : s.dGT[j]) {
+      // force column ∂r_u/∂λ_T = +∂G_T/∂u (the body receives −λ_T τ), and the row's u-part
+      const int i = op_.unknown(d_, dof);
+      if (i >= 0) {
+        T->emplace_back(i, row, v);
+        T->emplace_back(row, i, state == State::stick ? cT * v : 0.0);
+      } else if (z_rows && state == State::stick) {
+        z_rows->emplace_back(row, dof, cT * v);
+      }
+    }
+    if (state != State::stick) T->emplace_back(row, row, W);
+    if (state == State::slip) T->emplace_back(row, o + j, -W * c.friction.mu * sign);
   }
 }
 

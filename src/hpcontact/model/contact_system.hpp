@@ -57,8 +57,9 @@ public:
   double displacement_factor(const Eigen::VectorXd& x) const;
   double loads_factor(const Eigen::VectorXd& x) const;
 
-  /// After a converged load step at x: the friction histories take its anchors and slips.
-  void commit(const Eigen::VectorXd& x) const;
+  /// After a converged load step at x: the friction histories take its anchors and slips (and
+  /// exact friction measures its slips from x).
+  void commit(const Eigen::VectorXd& x);
   /// The load vector on the unknowns (what a unit load factor applies).
   Eigen::VectorXd load_vector() const;
   double displacement_factor() const { return lambda_; }
@@ -72,6 +73,12 @@ public:
   int size() const override { return n_u_ + n_z_; }
   /// The number of displacement unknowns (the multipliers follow them).
   int n_displacements() const { return n_u_; }
+  /// The multipliers of pair k: its nodes' normal pressures, then with friction their
+  /// tangential tractions (0 for a penalty pair).
+  int n_multipliers(size_t k) const {
+    const auto& c = pairs_[k].constraints;
+    return c ? c->size() * (c->has_friction() ? 2 : 1) : 0;
+  }
 
   /// All dofs from the unknowns (condensed internal modes zero; see solution()).
   Eigen::VectorXd full(const Eigen::VectorXd& x) const;
@@ -86,6 +93,9 @@ public:
 
   void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve::SparseMatrix* K) override;
   void factorize(solve::LinearSolver& sparse, const solve::SparseMatrix& K) override;
+  /// Under force control the factor changes by at most a factor 2 per Newton step: the active
+  /// set follows the load instead of jumping between far too small and far too large zones.
+  double admissible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const override;
   Eigen::VectorXd solve(const solve::LinearSolver& sparse, const Eigen::VectorXd& b) const override;
 
 private:
@@ -105,6 +115,13 @@ private:
   solve::SparseMatrix finite_difference_tangent(const Eigen::VectorXd& x,
                                                 const PairStates* undisturbed) const;
 
+  /// The rows of an exact pair's tangential multipliers (offset o of its normal ones): open
+  /// nodes W λ_T = 0, sticking ones c_T G_T = 0, slipping ones W (λ_T − μ s λ_N) = 0; their
+  /// u-parts of sticking rows on prescribed dofs into z_rows (for ∂/∂α) if not null.
+  void tangential_rows(const PairConstraints& c, const ConstraintState& s,
+                       const Eigen::VectorXd& lambda, const Eigen::VectorXd& lambda_t, int o,
+                       Eigen::VectorXd& r, Triplets* T, Triplets* z_rows) const;
+
   const Discretization& d_;
   const std::vector<ContactPair>& pairs_;
   mutable int points_in_contact_ = 0;
@@ -121,8 +138,9 @@ private:
   std::optional<std::pair<int, double>> target_;  ///< force control: component, value
   Eigen::VectorXd gamma_;      ///< augmentation of each row of z (ε_j W_j; 0 for α)
   solve::SaddlePointSolver saddle_;
-  /// The prescribed displacements restricted to… all dofs (for ∂/∂α), and K times them.
-  Eigen::VectorXd K_prescribed_;
+  Eigen::VectorXd K_prescribed_;   ///< K times the prescribed displacements (for ∂/∂α)
+  Eigen::VectorXd u_committed_;    ///< all dofs at the last converged step (exact friction)
+  double factor_committed_ = 0;    ///< the displacement factor there
 };
 
 /// The system on the path of the loads' factor (arc-length), the prescribed displacements held.

@@ -203,8 +203,8 @@ enum class Enforcement { augmented_lagrangian, penalty };
 /// Where an exact constraint is imposed: at the multiplier nodes (the Gauss–Lobatto points of
 /// each contact edge: g_N(x_j) ≥ 0), or weighted by each node's polynomial over its edges
 /// (mortar: ∫ L_j g_N ds ≥ 0, integrated on segments between the other body's element
-/// boundaries).
-enum class ConstraintRule { mortar, collocation };
+/// boundaries); auto: collocation against a rigid obstacle, mortar against another body.
+enum class ConstraintRule { automatic, mortar, collocation };
 
 /// A contact boundary of a body against a rigid obstacle or another body.
 struct ContactPairSpec {
@@ -212,7 +212,7 @@ struct ContactPairSpec {
   std::vector<std::string> edge_sets;  ///< its contact edges
   ObstacleSpec obstacle;
   Enforcement enforcement = Enforcement::penalty;
-  ConstraintRule constraint = ConstraintRule::mortar;
+  ConstraintRule constraint = ConstraintRule::automatic;
   /// eps_N [force/length³]: the penalty; with augmented_lagrangian the augmentation (0: the
   /// default E p² / h at each node), a parameter of convergence speed, not of the answer.
   double penalty = 0;

@@ -63,6 +63,10 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
       return report;
     }
     dx = system.solve(solver, -r);
+    if (const double tau = system.admissible_step(x, dx); tau < 1) {
+      dx *= tau;
+      ++report.damped_steps;
+    }
     if (options.line_search) {
       // Backtracking on |R|: the full correction unless it fails to reduce the residual, else
       // the first of ½, ¼, ... that does (or the best of them). The full step is evaluated

@@ -27,6 +27,11 @@ public:
   virtual Eigen::VectorXd solve(const LinearSolver& sparse, const Eigen::VectorXd& b) const {
     return sparse.solve(b);
   }
+  /// The fraction τ ∈ (0, 1] of the correction dx at x that the system admits (a trust region on
+  /// some unknowns); Newton takes τ dx.
+  virtual double admissible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const {
+    return 1;
+  }
 };
 
 struct NewtonOptions {
@@ -49,6 +54,7 @@ struct SolveReport {
   int iterations = 0;
   int backtracks = 0;  ///< corrections halved because the residual was not finite there
   int line_searches = 0;  ///< corrections shortened by the line search
+  int damped_steps = 0;   ///< corrections shortened to what the system admits
   std::vector<double> residual_history;  ///< ||R|| before each iteration, and at the end
   int singular_row = -1;  ///< status singular: the unknown whose pivot vanished, if known
   bool ok() const { return status == SolveStatus::converged; }
