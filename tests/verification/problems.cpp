@@ -133,6 +133,20 @@ model::ProblemSpec quarter_circle_2x2(int p) {
   return spec;
 }
 
+model::ProblemSpec quarter_circle_2x2_loaded(int p) {
+  auto spec = quarter_circle_2x2(p);
+  auto& b = spec.bodies[0];
+  b.elements[3] = {9, 8, 5, 6};  // element 4, was (5, 6, 9, 8): the same quad from node 9
+  add_edge_set(b, "zone", {{1, 2}});
+  model::EdgeLoadSpec load;
+  load.edge_sets = {"zone"};
+  load.kind = model::LoadKind::pressure;
+  load.value = {500, 0};
+  b.edge_loads = {load};
+  b.body_force = {300, -200};
+  return spec;
+}
+
 }  // namespace hpcontact::test_problems
 
 namespace hpcontact::test_problems {

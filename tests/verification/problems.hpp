@@ -30,6 +30,12 @@ void hold_as_bar(model::BodySpec& b, double tx, double ty);
 /// ux = 0 on "symmetry", uy = -0.01 on "centre"; no contact (a linear problem).
 model::ProblemSpec quarter_circle_2x2(int p);
 
+/// quarter_circle_2x2 stressed and with shared edges of opposite directions: a pressure of 500
+/// on the arc edge 1–2 (the Hertz contact zone), a body force (300, −200) per volume, and
+/// element 4 given as (9, 8, 5, 6), so that its edges to elements 2 (5–6) and 3 (5–8) run
+/// against theirs and their odd edge modes carry the orientation sign.
+model::ProblemSpec quarter_circle_2x2_loaded(int p);
+
 }  // namespace hpcontact::test_problems
 
 namespace hpcontact::test_problems {
