@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "hpcontact/fem/edge_load.hpp"
+#include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "hpcontact/model/linear_solve.hpp"
 #include "hpcontact/post/fields.hpp"
@@ -102,6 +103,32 @@ TEST(StaticCondensation, SameDisplacementsAsFullSolve) {
     EXPECT_GT(internal, 1e-4 * a.u.cwiseAbs().maxCoeff());
     EXPECT_LT((a.u - b.u).norm(), 1e-10 * a.u.norm()) << "p = " << p;
   }
+}
+
+// The nonlinear solver's condensation (model::solve_contact, which recovers the internal modes
+// with the loads' factor) gives the full solve's displacements (1e-10 relative) on the
+// stressed quarter circle at p = 5, stopped at loads factor 0.4 with the displacements at 1;
+// and both are the linear superposition u(1, 0) + 0.4 (u(1, 1) − u(1, 0)) of linear solves.
+TEST(StaticCondensation, NewtonRecoversInternalModesUnderTheLoadFactor) {
+  auto spec = test_problems::quarter_circle_2x2_loaded(5);
+  spec.solver.stages = {{1, 0.4, 2}};
+  const auto d = model::discretize(spec);
+  std::vector<Eigen::VectorXd> u;
+  for (bool condense : {false, true}) {
+    spec.discretization.condense = condense;
+    const auto sol = model::solve_contact(spec, d);
+    ASSERT_TRUE(sol.converged) << sol.message;
+    EXPECT_DOUBLE_EQ(sol.loads_factor, 0.4);
+    u.push_back(sol.u);
+  }
+  EXPECT_LT((u[0] - u[1]).norm(), 1e-10 * u[0].norm());
+  auto unloaded = test_problems::quarter_circle_2x2_loaded(5);
+  unloaded.bodies[0].edge_loads.clear();
+  unloaded.bodies[0].body_force = {0, 0};
+  const auto u_loaded = model::solve_linear(d, {}).u;
+  const auto u_unloaded = model::solve_linear(model::discretize(unloaded), {}).u;
+  const Eigen::VectorXd expected = u_unloaded + 0.4 * (u_loaded - u_unloaded);
+  EXPECT_LT((u[1] - expected).norm(), 1e-10 * expected.norm());
 }
 
 // Elements of different degree share an edge at the lower degree (minimum rule), and the
