@@ -173,7 +173,7 @@ TEST(FiniteStrainPatch, SmallLoadsGiveLinearElasticity) {
 // The analytic tangent of the whole nonlinear system — Neo-Hooke internal forces, penalty
 // contact against the displaced rigid axle with its curvature terms — equals central differences
 // of the residual at the converged state of the axle-in-ring examples: max |difference| below
-// 1e-5 of max |K| (the bound; measured values printed).
+// 1e-7 of max |K| (measured 1.6e-9 and 8.5e-9: the differences' truncation and round-off).
 TEST(FiniteStrainTangent, AxleInRingAgreesWithCentralDifferences) {
   for (const char* name : {"ring2-p4.yaml", "ring12-p4.yaml"}) {
     const auto spec = io::read_problem(std::string(HPC_SOURCE_DIR) + "/examples/axle-ring/" + name);
@@ -182,6 +182,6 @@ TEST(FiniteStrainTangent, AxleInRingAgreesWithCentralDifferences) {
     ASSERT_TRUE(sol.converged) << sol.message;
     const double mismatch = test_problems::tangent_mismatch(spec, d, sol);
     std::printf("%s: max |K_analytic - K_differences| / max |K| = %.3g\n", name, mismatch);
-    EXPECT_LT(mismatch, 1e-5) << name;
+    EXPECT_LT(mismatch, 1e-7) << name;
   }
 }

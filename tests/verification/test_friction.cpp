@@ -14,7 +14,8 @@ using namespace hpcontact;
 
 // Friction: the analytic tangent (stick: ε_T G_T G_Tᵀ; slip: −μ s ε_N G_T G_nᵀ, not symmetric)
 // equals central differences of the residual, friction histories fixed, at the converged end
-// of the two-bar examples (two bodies, both sides' points anchored): < 1e-5 of max |K|.
+// of the two-bar examples (two bodies, both sides' points anchored): < 2e-6 of max |K| (measured
+// 2.2e-7 with stick, 1.8e-7 with Coulomb).
 TEST(FrictionTangent, TwoBarsAgreeWithCentralDifferences) {
   for (const char* name : {"stick.yaml", "coulomb.yaml"}) {
     const auto spec = io::read_problem(std::string(HPC_SOURCE_DIR) + "/examples/two-bars/" + name,
@@ -26,13 +27,14 @@ TEST(FrictionTangent, TwoBarsAgreeWithCentralDifferences) {
     const double mismatch = test_problems::tangent_mismatch(spec, d, sol, &asymmetry);
     std::printf("%s: max |K_analytic - K_differences| / max |K| = %.3g, asymmetry %.3g\n", name,
                 mismatch, asymmetry);
-    EXPECT_LT(mismatch, 1e-5) << name;
+    EXPECT_LT(mismatch, 2e-6) << name;
   }
 }
 
 // Friction against a rigid plane: the distorted patch pressed onto y = 0 (top uy = -0.002),
 // then sheared by a traction on its top; Coulomb mu = 0.2 with partial slip, and full stick.
-// The analytic tangent (penalty_contact's friction terms) equals central differences: < 1e-5.
+// The analytic tangent (penalty_contact's friction terms) equals central differences: < 5e-7
+// of max |K| (measured 4.3e-8 with stick, 8.9e-9 with Coulomb).
 TEST(FrictionTangent, PatchOnRigidPlaneAgreesWithCentralDifferences) {
   for (const char* law : {"stick", "coulomb"}) {
     auto spec = test_problems::distorted_patch(4);
@@ -67,7 +69,7 @@ TEST(FrictionTangent, PatchOnRigidPlaneAgreesWithCentralDifferences) {
     const double mismatch = test_problems::tangent_mismatch(spec, d, sol);
     std::printf("patch on plane, %s (%d slipping of %zu): max |K_analytic - K_differences| / max |K| = %.3g\n",
                 law, slipping, sol.contact.front().states.size(), mismatch);
-    EXPECT_LT(mismatch, 1e-5) << law;
+    EXPECT_LT(mismatch, 5e-7) << law;
   }
 }
 
