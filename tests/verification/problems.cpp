@@ -3,7 +3,9 @@
 
 #include <cmath>
 
+#include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/model/contact_solve.hpp"
+#include "hpcontact/model/discretization.hpp"
 
 namespace hpcontact::test_problems {
 
@@ -206,6 +208,19 @@ model::ProblemSpec lame_quarter(int n_r, int n_theta) {
 }  // namespace hpcontact::test_problems
 
 namespace hpcontact::test_problems {
+
+Vec2 edge_displacement(const model::Body& body, int q, int le, double t, const Eigen::VectorXd& u) {
+  const auto& es = body.dofs.element(q);
+  Eigen::VectorXd N(es.n_modes());
+  const auto r = fem::edge_reference_point(le, t);
+  es.evaluate(r[0], r[1], N.data(), nullptr, nullptr);
+  Vec2 v = Vec2::Zero();
+  for (int a = 0; a < es.n_modes(); ++a) {
+    const int dof = body.dof_offset + 2 * es.modes[a];
+    v += N(a) * Vec2(u(dof), u(dof + 1));
+  }
+  return v;
+}
 
 double tangent_mismatch(const model::ProblemSpec& spec, const model::Discretization& d,
                         const model::NonlinearSolution& sol, double* asymmetry) {

@@ -3,6 +3,9 @@
 
 #include <string>
 
+#include <Eigen/Dense>
+
+#include "hpcontact/geometry/vec2.hpp"
 #include "hpcontact/model/problem_spec.hpp"
 
 namespace hpcontact::test_problems {
@@ -47,11 +50,16 @@ model::ProblemSpec lame_quarter(int n_r, int n_theta);
 }  // namespace hpcontact::test_problems
 
 namespace hpcontact::model {
+struct Body;
 struct Discretization;
 struct NonlinearSolution;
 }  // namespace hpcontact::model
 
 namespace hpcontact::test_problems {
+
+/// The displacement of a body's solution u (all dofs) at local edge le, parameter t of element
+/// q, from the element's shape functions (to compare the traces of two neighbours).
+Vec2 edge_displacement(const model::Body& body, int q, int le, double t, const Eigen::VectorXd& u);
 
 /// max |K_analytic − K_differences| / max |K_analytic| of the nonlinear system at a converged
 /// solution, K_differences the plain central differences of the residual

@@ -18,20 +18,6 @@ using namespace hpcontact;
 
 namespace {
 
-/// Displacement of body 0 at local edge le, parameter t of element q.
-Vec2 displacement(const model::Body& body, int q, int le, double t, const Eigen::VectorXd& u) {
-  const auto& es = body.dofs.element(q);
-  Eigen::VectorXd N(es.n_modes());
-  const auto r = fem::edge_reference_point(le, t);
-  es.evaluate(r[0], r[1], N.data(), nullptr, nullptr);
-  Vec2 v = Vec2::Zero();
-  for (int a = 0; a < es.n_modes(); ++a) {
-    const int dof = body.dof_offset + 2 * es.modes[a];
-    v += N(a) * Vec2(u(dof), u(dof + 1));
-  }
-  return v;
-}
-
 /// The Hertz quarter refined `steps` times towards node 2 (on the arc), degrees by layer.
 model::ProblemSpec graded(int steps, double factor) {
   auto spec = test_problems::quarter_circle_2x2(4);
@@ -69,7 +55,8 @@ TEST(HpMesh, RefinementIsConformingAndContinuous) {
           tb = -t;
         const Vec2 xb = fem::edge_geometry(body.maps[qb], lb, tb, nullptr, nullptr);
         ASSERT_LT((xa - xb).norm(), 1e-12) << "factor " << factor << " edge " << e;
-        EXPECT_LT((displacement(body, qa, la, t, u) - displacement(body, qb, lb, tb, u)).norm(),
+        EXPECT_LT((test_problems::edge_displacement(body, qa, la, t, u) -
+                   test_problems::edge_displacement(body, qb, lb, tb, u)).norm(),
                   1e-12)
             << "factor " << factor << " edge " << e << " t " << t;
       }

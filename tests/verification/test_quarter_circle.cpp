@@ -36,20 +36,6 @@ TEST(DofNumbering, TrunkSpaceCounts) {
 
 namespace {
 
-/// The displacement at local edge le, parameter t of element q (from the shape functions).
-Vec2 edge_displacement(const model::Body& body, int q, int le, double t, const Eigen::VectorXd& u) {
-  const auto& es = body.dofs.element(q);
-  Eigen::VectorXd N(es.n_modes());
-  const auto r = fem::edge_reference_point(le, t);
-  es.evaluate(r[0], r[1], N.data(), nullptr, nullptr);
-  Vec2 v = Vec2::Zero();
-  for (int a = 0; a < es.n_modes(); ++a) {
-    const int dof = body.dof_offset + 2 * es.modes[a];
-    v += N(a) * Vec2(u(dof), u(dof + 1));
-  }
-  return v;
-}
-
 /// max over the interior edges and points along them of the jump of u between the two
 /// elements, and the number of interior edges traversed in opposite directions by them.
 double max_jump(const model::Body& body, const Eigen::VectorXd& u, int* opposite) {
@@ -66,8 +52,8 @@ double max_jump(const model::Body& body, const Eigen::VectorXd& u, int* opposite
       const Vec2 xa = fem::edge_geometry(body.maps[qa], la, t, nullptr, nullptr);
       const Vec2 xb = fem::edge_geometry(body.maps[qb], lb, tb, nullptr, nullptr);
       EXPECT_LT((xa - xb).norm(), 1e-12) << "edge " << e;
-      jump = std::max(jump, (edge_displacement(body, qa, la, t, u) -
-                             edge_displacement(body, qb, lb, tb, u)).norm());
+      jump = std::max(jump, (test_problems::edge_displacement(body, qa, la, t, u) -
+                             test_problems::edge_displacement(body, qb, lb, tb, u)).norm());
     }
   }
   return jump;
