@@ -18,6 +18,11 @@ void add_node(model::BodySpec& b, int id, double x, double y);
 void add_element(model::BodySpec& b, int id, int n1, int n2, int n3, int n4);
 void add_edge_set(model::BodySpec& b, const std::string& name, std::vector<std::array<int, 2>> edges);
 
+/// Gives element `element_id` its nodes from `node_id` on (the same quad, counter-clockwise
+/// still): its edges to neighbours that keep their order then run against theirs, so that odd
+/// edge modes carry the orientation sign there.
+void start_element_at(model::BodySpec& b, int element_id, int node_id);
+
 /// The square [0,2]² as 2×2 quadrilaterals with the centre node moved to (1.2, 0.75) and the
 /// mid-side nodes moved off their straight positions: a distorted patch. Edge set "boundary"
 /// holds its 8 boundary edges; "left", "right", "bottom", "top" the sides.
