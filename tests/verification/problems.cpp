@@ -1,9 +1,12 @@
 // Construction of the verification problems.
 #include "problems.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/model/contact_solve.hpp"
+#include "hpcontact/model/discretization.hpp"
 
 namespace hpcontact::test_problems {
 
@@ -30,6 +33,13 @@ void add_edge_set(model::BodySpec& b, const std::string& name, std::vector<std::
   s.name = name;
   s.edges = std::move(edges);
   b.edge_sets.push_back(s);
+}
+
+void start_element_at(model::BodySpec& b, int element_id, int node_id) {
+  const auto e = std::find(b.element_ids.begin(), b.element_ids.end(), element_id);
+  auto& nodes = b.elements.at(e - b.element_ids.begin());
+  const auto first = std::find(nodes.begin(), nodes.end(), node_id);
+  std::rotate(nodes.begin(), first, nodes.end());
 }
 
 model::ProblemSpec distorted_patch(int p) {
@@ -133,6 +143,20 @@ model::ProblemSpec quarter_circle_2x2(int p) {
   return spec;
 }
 
+model::ProblemSpec quarter_circle_2x2_loaded(int p) {
+  auto spec = quarter_circle_2x2(p);
+  auto& b = spec.bodies[0];
+  start_element_at(b, 4, 9);  // element 4, was (5, 6, 9, 8): (9, 8, 5, 6)
+  add_edge_set(b, "zone", {{1, 2}});
+  model::EdgeLoadSpec load;
+  load.edge_sets = {"zone"};
+  load.kind = model::LoadKind::pressure;
+  load.value = {500, 0};
+  b.edge_loads = {load};
+  b.body_force = {300, -200};
+  return spec;
+}
+
 }  // namespace hpcontact::test_problems
 
 namespace hpcontact::test_problems {
@@ -192,6 +216,19 @@ model::ProblemSpec lame_quarter(int n_r, int n_theta) {
 }  // namespace hpcontact::test_problems
 
 namespace hpcontact::test_problems {
+
+Vec2 edge_displacement(const model::Body& body, int q, int le, double t, const Eigen::VectorXd& u) {
+  const auto& es = body.dofs.element(q);
+  Eigen::VectorXd N(es.n_modes());
+  const auto r = fem::edge_reference_point(le, t);
+  es.evaluate(r[0], r[1], N.data(), nullptr, nullptr);
+  Vec2 v = Vec2::Zero();
+  for (int a = 0; a < es.n_modes(); ++a) {
+    const int dof = body.dof_offset + 2 * es.modes[a];
+    v += N(a) * Vec2(u(dof), u(dof + 1));
+  }
+  return v;
+}
 
 double tangent_mismatch(const model::ProblemSpec& spec, const model::Discretization& d,
                         const model::NonlinearSolution& sol, double* asymmetry) {

@@ -2,31 +2,21 @@
 // displacement continuous across every interior edge for any dofs, degrees rising by layer.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <string>
 
 #include "hpcontact/adapt/geometric_refinement.hpp"
+#include "hpcontact/adapt/hp.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/edge_load.hpp"
+#include "hpcontact/io/problem_reader.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "problems.hpp"
 
 using namespace hpcontact;
 
 namespace {
-
-/// Displacement of body 0 at local edge le, parameter t of element q.
-Vec2 displacement(const model::Body& body, int q, int le, double t, const Eigen::VectorXd& u) {
-  const auto& es = body.dofs.element(q);
-  Eigen::VectorXd N(es.n_modes());
-  const auto r = fem::edge_reference_point(le, t);
-  es.evaluate(r[0], r[1], N.data(), nullptr, nullptr);
-  Vec2 v = Vec2::Zero();
-  for (int a = 0; a < es.n_modes(); ++a) {
-    const int dof = body.dof_offset + 2 * es.modes[a];
-    v += N(a) * Vec2(u(dof), u(dof + 1));
-  }
-  return v;
-}
 
 /// The Hertz quarter refined `steps` times towards node 2 (on the arc), degrees by layer.
 model::ProblemSpec graded(int steps, double factor) {
@@ -65,7 +55,8 @@ TEST(HpMesh, RefinementIsConformingAndContinuous) {
           tb = -t;
         const Vec2 xb = fem::edge_geometry(body.maps[qb], lb, tb, nullptr, nullptr);
         ASSERT_LT((xa - xb).norm(), 1e-12) << "factor " << factor << " edge " << e;
-        EXPECT_LT((displacement(body, qa, la, t, u) - displacement(body, qb, lb, tb, u)).norm(),
+        EXPECT_LT((test_problems::edge_displacement(body, qa, la, t, u) -
+                   test_problems::edge_displacement(body, qb, lb, tb, u)).norm(),
                   1e-12)
             << "factor " << factor << " edge " << e << " t " << t;
       }
@@ -109,4 +100,37 @@ TEST(HpMesh, LayersCountRingsAroundTheCentre) {
   EXPECT_EQ(count[2], 4);  // the pieces of the first step
   EXPECT_EQ(count[3], 2);  // the top elements, which share nodes with the first step's pieces
   EXPECT_EQ(layers.size(), 12u);
+}
+
+// The adaptive hp loop shall give the elements at its refinement centre (the node it placed
+// on Γ*) the minimum degree and every layer of elements around them one degree more (seed
+// §4.7, DESIGN.md): on examples/hertz/hp.yaml with two refinement steps, every element's degree
+// is min_degree + its layer, and the layers reach at least 3.
+TEST(HpMesh, AdaptiveDegreesRiseByOnePerLayer) {
+  const auto spec = io::read_problem(std::string(HPC_SOURCE_DIR) + "/examples/hertz/hp.yaml",
+                                     {"adapt.steps=2"});
+  adapt::HpOptions o;
+  o.factor = spec.adapt.factor;
+  o.steps = spec.adapt.steps;
+  o.rising_degree = spec.adapt.rising_degree;
+  o.min_degree = spec.adapt.min_degree;
+  const auto out = adapt::refine_towards_zone_ends(spec, o);
+  ASSERT_TRUE(out.converged) << out.message;
+  ASSERT_EQ(out.history.size(), 3u);
+  const auto& last = out.last->spec.bodies[0];
+  ASSERT_EQ(out.history.back().centres.size(), 1u);
+  const Vec2 centre = out.history.back().centres.front();
+  int centre_id = -1;
+  for (size_t i = 0; i < last.nodes.size(); ++i)
+    if ((Vec2(last.nodes[i][0], last.nodes[i][1]) - centre).norm() < 1e-9) centre_id = last.node_ids[i];
+  ASSERT_GE(centre_id, 0);
+  int deepest = 0;
+  for (const auto& [id, layer] : adapt::element_layers(last, {centre_id})) {
+    ASSERT_TRUE(last.element_degrees.count(id)) << "element " << id;
+    const auto p = last.element_degrees.at(id);
+    EXPECT_EQ(p[0], o.min_degree + layer) << "element " << id << " layer " << layer;
+    EXPECT_EQ(p[1], o.min_degree + layer) << "element " << id << " layer " << layer;
+    deepest = std::max(deepest, layer);
+  }
+  EXPECT_GE(deepest, 3);
 }

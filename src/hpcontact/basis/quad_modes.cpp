@@ -2,6 +2,7 @@
 #include "hpcontact/basis/quad_modes.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "hpcontact/basis/legendre.hpp"
 #include "hpcontact/core/error.hpp"
@@ -25,12 +26,16 @@ int HierarchicQuad::n_modes() const {
 
 void HierarchicQuad::evaluate(double xi, double eta, double* N, double* dN_dxi,
                               double* dN_deta) const {
-  HPC_ASSERT(p_xi >= 1 && p_eta >= 1, "HierarchicQuad: degrees must be >= 1 (got p_xi = ", p_xi,
-             ", p_eta = ", p_eta, ")");
+  // Always checked, not only in debug builds: a degree outside these bounds would read 1D values
+  // below that were never computed (a silent wrong basis), and the check is five comparisons
+  // against the O(p²) work of an evaluation.
+  HPC_REQUIRE(p_xi >= 1 && p_eta >= 1, std::logic_error,
+              "HierarchicQuad: degrees must be >= 1 (got p_xi = ", p_xi, ", p_eta = ", p_eta, ")");
   for (int e = 0; e < 4; ++e) {
-    [[maybe_unused]] const int own = (e % 2 == 0) ? p_xi : p_eta;  // E1, E3 along xi; E2, E4 eta
-    HPC_ASSERT(edge_degree[e] >= 1 && edge_degree[e] <= own, "HierarchicQuad: edge_degree[", e,
-               "] = ", edge_degree[e], " must lie in [1, ", own, "]");
+    const int own = (e % 2 == 0) ? p_xi : p_eta;  // E1, E3 along xi; E2, E4 eta
+    HPC_REQUIRE(edge_degree[e] >= 1 && edge_degree[e] <= own, std::logic_error,
+                "HierarchicQuad: edge_degree[", e, "] = ", edge_degree[e], " must lie in [1, ", own,
+                "]");
   }
 
   // Every mode is a product a[i](xi) b[j](eta) of 1D hierarchic functions (eq. 2.57–2.59):

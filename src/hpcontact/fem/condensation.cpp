@@ -39,11 +39,11 @@ CondensedElement condense(const Eigen::MatrixXd& K, const Eigen::VectorXd& f, in
   return c;
 }
 
-Eigen::VectorXd CondensedElement::recover(const Eigen::VectorXd& u_external) const {
+Eigen::VectorXd CondensedElement::recover(const Eigen::VectorXd& u_external, double load_factor) const {
   Eigen::VectorXd u(external.size() + internal.size());
   for (size_t r = 0; r < external.size(); ++r) u(external[r]) = u_external(r);
   if (!internal.empty()) {
-    const Eigen::VectorXd ui = Kii_inv_fi - Kii_inv_Kie * u_external;
+    const Eigen::VectorXd ui = load_factor * Kii_inv_fi - Kii_inv_Kie * u_external;
     for (size_t r = 0; r < internal.size(); ++r) u(internal[r]) = ui(r);
   }
   return u;

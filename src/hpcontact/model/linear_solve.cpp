@@ -107,8 +107,8 @@ void ElasticOperator::recover_internal(const Discretization& d, Eigen::VectorXd&
     const Body& body = d.bodies[c.body];
     Eigen::VectorXd ue(ce.external.size());
     for (size_t a = 0; a < ce.external.size(); ++a) ue(a) = u(body.global_dof(c.q, ce.external[a]));
-    const Eigen::VectorXd ui = lambda * ce.Kii_inv_fi - ce.Kii_inv_Kie * ue;
-    for (size_t a = 0; a < ce.internal.size(); ++a) u(body.global_dof(c.q, ce.internal[a])) = ui(a);
+    const Eigen::VectorXd local = ce.recover(ue, lambda);
+    for (int a : ce.internal) u(body.global_dof(c.q, a)) = local(a);
   }
 }
 

@@ -16,6 +16,11 @@ double von_mises(double sxx, double syy, double szz, double sxy) {
                    3 * sxy * sxy);
 }
 
+std::array<double, 2> principal_stresses(double sxx, double syy, double sxy) {
+  const double c = 0.5 * (sxx + syy), R = std::hypot(0.5 * (sxx - syy), sxy);
+  return {c + R, c - R};
+}
+
 PointResult evaluate(const model::Body& body, int q, double xi, double eta, const Eigen::VectorXd& u) {
   const auto pv = fem::point_values(body.dofs.element(q), body.maps[q], xi, eta);
   const Eigen::VectorXd ue = body.element_coefficients(q, u);
@@ -35,10 +40,9 @@ PointResult evaluate(const model::Body& body, int q, double xi, double eta, cons
   r.stress = ps.stress;
   r.stress_zz = ps.stress_zz;
   r.von_mises = von_mises(r.stress(0), r.stress(1), r.stress_zz, r.stress(2));
-  const double c = 0.5 * (r.stress(0) + r.stress(1));
-  const double R = std::hypot(0.5 * (r.stress(0) - r.stress(1)), r.stress(2));
-  r.principal_1 = c + R;
-  r.principal_2 = c - R;
+  const auto principal = principal_stresses(r.stress(0), r.stress(1), r.stress(2));
+  r.principal_1 = principal[0];
+  r.principal_2 = principal[1];
   return r;
 }
 

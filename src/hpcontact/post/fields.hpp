@@ -1,6 +1,7 @@
 // Displacement, strain and stress of a solution anywhere in an element, and derived measures.
 #pragma once
 
+#include <array>
 #include <functional>
 
 #include <Eigen/Dense>
@@ -24,8 +25,13 @@ struct PointResult {
 /// corner of 180°) the strain is that of a point just inside.
 PointResult evaluate(const model::Body& body, int q, double xi, double eta, const Eigen::VectorXd& u);
 
-/// von Mises stress from sxx, syy, szz, sxy.
+/// von Mises stress from sxx, syy, szz, sxy:
+///   √(½ ((sxx − syy)² + (syy − szz)² + (szz − sxx)²) + 3 sxy²).
 double von_mises(double sxx, double syy, double szz, double sxy);
+
+/// The in-plane principal stresses {σ1, σ2}, σ1 ≥ σ2, of (sxx, syy, sxy): c ± R with
+/// c = (sxx + syy)/2, R = √(((sxx − syy)/2)² + sxy²) (the centre and radius of Mohr's circle).
+std::array<double, 2> principal_stresses(double sxx, double syy, double sxy);
 
 /// U = ½ B(u, u) = ½ ∫ eps^T D eps t dA over all bodies (seed eq. 2.31); for a finite-strain
 /// body ∫ W(F) t dA over the reference body.

@@ -69,6 +69,21 @@ TEST(Condensation, CondensedSolvePlusRecoveryEqualsFullSolve) {
   }
 }
 
+// Under the load λ f the condensed load is λ f_c and the recovery with load factor λ shall give
+// the full solution of K u = λ f (to 1e-13 relative), for λ = 0, 0.37 and −2.
+TEST(Condensation, RecoveryUnderALoadFactor) {
+  const int n_modes = 9, n_internal = 4, n = 2 * n_modes;
+  const Eigen::MatrixXd K = random_spd(n, 41);
+  const Eigen::VectorXd f = random_vector(n, 42);
+  const fem::CondensedElement c = fem::condense(K, f, n_modes, n_internal);
+  for (double lambda : {0.0, 0.37, -2.0}) {
+    const Eigen::VectorXd u_full = K.llt().solve(lambda * f);
+    const Eigen::VectorXd u_e = c.K.llt().solve(lambda * c.f);
+    EXPECT_LE((c.recover(u_e, lambda) - u_full).norm(), 1e-13 * std::max(1.0, u_full.norm()))
+        << "lambda " << lambda;
+  }
+}
+
 // With no internal modes condensation shall be the identity.
 TEST(Condensation, NoInternalModesIsIdentity) {
   const Eigen::MatrixXd K = random_spd(8, 99);

@@ -162,3 +162,85 @@ TEST(Hyperelastic, NeoHookeUniaxialClosedForm) {
     EXPECT_NEAR(s.W, 0.5 * mu * (l1 * l1 - 1) - mu * std::log(l1), 1e-12 * mu);
   }
 }
+
+namespace {
+
+/// Lamé's constants of E, ν (the laws' own parameters).
+struct Lame {
+  double lambda, mu;
+};
+Lame lame_of(double E, double nu) {
+  return {E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))};
+}
+
+/// The Cauchy stress (xx, yy, xy) and σ_zz of `law` at F, from the law's own parameters.
+Voigt cauchy_of(const LinearElastic& m, Law law, const Eigen::Matrix2d& F, double* zz) {
+  return cauchy_stress(hyperelastic_state(m, law, F), F, zz);
+}
+
+}  // namespace
+
+// The Cauchy stress of both laws in plane-strain uniaxial stretch F = diag(s, 1) shall equal
+// the closed forms derived here by hand (s = 0.6 … 1.8, ν = 0.3), to 1e-13 of μ:
+//  - Neo-Hooke: σ = (μ/J)(b − I) + (λ ln J / J) I with b = F Fᵀ (push-forward of
+//    S = μ(I − C⁻¹) + λ ln J C⁻¹: F C⁻¹ Fᵀ = I, F Fᵀ = b). With J = s, b = diag(s², 1, 1):
+//    σxx = μ (s² − 1)/s + λ ln s / s,  σyy = σzz = λ ln s / s,  σxy = 0.
+//  - St. Venant–Kirchhoff: E = diag(e, 0, 0), e = (s² − 1)/2, S = λ e I + 2μ E, σ = F S Fᵀ / J:
+//    σxx = s² (λ + 2μ) e / s = s (λ + 2μ) e,  σyy = σzz = λ e / s,  σxy = 0.
+// The 1/J of the push-forward shows here (J = s ≠ 1).
+TEST(HyperelasticCauchy, UniaxialStretchClosedForms) {
+  const double E = 1000, nu = 0.3;
+  const auto m = elastic(E, nu);
+  const auto [lambda, mu] = lame_of(E, nu);
+  for (double s : {0.6, 0.9, 1.25, 1.8}) {
+    Eigen::Matrix2d F = Eigen::Matrix2d::Identity();
+    F(0, 0) = s;
+    const double e = (s * s - 1) / 2;
+    struct Expected {
+      Law law;
+      double xx, yy, zz;
+    };
+    for (const auto& x : {Expected{Law::neo_hooke, mu * (s * s - 1) / s + lambda * std::log(s) / s,
+                                   lambda * std::log(s) / s, lambda * std::log(s) / s},
+                          Expected{Law::saint_venant_kirchhoff, s * (lambda + 2 * mu) * e,
+                                   lambda * e / s, lambda * e / s}}) {
+      double zz = 0;
+      const Voigt sigma = cauchy_of(m, x.law, F, &zz);
+      EXPECT_NEAR(sigma(0), x.xx, 1e-13 * mu) << law_name(x.law) << " s " << s;
+      EXPECT_NEAR(sigma(1), x.yy, 1e-13 * mu) << law_name(x.law) << " s " << s;
+      EXPECT_NEAR(sigma(2), 0, 1e-13 * mu) << law_name(x.law) << " s " << s;
+      EXPECT_NEAR(zz, x.zz, 1e-13 * mu) << law_name(x.law) << " s " << s;
+    }
+  }
+}
+
+// The Cauchy stress of both laws in simple shear F = [[1, γ], [0, 1]] (J = 1) shall equal the
+// closed forms derived here by hand (γ = 0.1 … 1), to 1e-13 of μ:
+//  - Neo-Hooke: b − I = [[γ², γ], [γ, 0]], ln J = 0: σxx = μ γ², σyy = 0, σxy = μ γ, σzz = 0
+//    (the normal stress σxx − σyy = μ γ² of the Poynting effect).
+//  - St. Venant–Kirchhoff: C = [[1, γ], [γ, 1 + γ²]], E = ½ [[0, γ], [γ, γ²]], tr E = γ²/2,
+//    S = [[λγ²/2, μγ], [μγ, (λ/2 + μ) γ²]], σ = F S Fᵀ:
+//    σxx = S11 + 2γ S12 + γ² S22 = (λ/2 + 2μ) γ² + (λ/2 + μ) γ⁴,
+//    σxy = S12 + γ S22 = μ γ + (λ/2 + μ) γ³,  σyy = S22 = (λ/2 + μ) γ²,  σzz = S33 = λ γ²/2.
+TEST(HyperelasticCauchy, SimpleShearClosedForms) {
+  const double E = 1000, nu = 0.3;
+  const auto m = elastic(E, nu);
+  const auto [lambda, mu] = lame_of(E, nu);
+  for (double g : {0.1, 0.4, 1.0, -0.7}) {
+    Eigen::Matrix2d F = Eigen::Matrix2d::Identity();
+    F(0, 1) = g;
+    const double g2 = g * g;
+    double zz = 0;
+    Voigt sigma = cauchy_of(m, Law::neo_hooke, F, &zz);
+    EXPECT_NEAR(sigma(0), mu * g2, 1e-13 * mu) << "neo-hooke γ " << g;
+    EXPECT_NEAR(sigma(1), 0, 1e-13 * mu) << "neo-hooke γ " << g;
+    EXPECT_NEAR(sigma(2), mu * g, 1e-13 * mu) << "neo-hooke γ " << g;
+    EXPECT_NEAR(zz, 0, 1e-13 * mu) << "neo-hooke γ " << g;
+    sigma = cauchy_of(m, Law::saint_venant_kirchhoff, F, &zz);
+    EXPECT_NEAR(sigma(0), (lambda / 2 + 2 * mu) * g2 + (lambda / 2 + mu) * g2 * g2, 1e-13 * mu)
+        << "svk γ " << g;
+    EXPECT_NEAR(sigma(1), (lambda / 2 + mu) * g2, 1e-13 * mu) << "svk γ " << g;
+    EXPECT_NEAR(sigma(2), mu * g + (lambda / 2 + mu) * g2 * g, 1e-13 * mu) << "svk γ " << g;
+    EXPECT_NEAR(zz, lambda * g2 / 2, 1e-13 * mu) << "svk γ " << g;
+  }
+}

@@ -1,0 +1,447 @@
+#!/usr/bin/python3
+"""Mutation testing: does the test suite catch plausible one-line bugs, and by a property?
+
+usage: mutate.py [--build DIR] [--jobs N] [--only ID[,ID...]] [--quick | --full] [--list] [--out FILE]
+
+Each entry of MUTATIONS below changes one line of the library (a wrong sign, factor, index or
+bound someone could write). For each, the script replaces the line, rebuilds (incremental Ninja
+with ccache: one object and the links), runs the fast suite (what `make test` runs: `ctest -LE
+slow`), puts the file back and records which tests failed. The suite runs in two parts: the C++
+tests (unit, verification, fuzz replays; ~25 s on 2 cores), then the command-line and Python
+tests (labels cli, python; ~95 s) — the second part only when it can change the verdict (no
+property test has failed in the first, or the mutation's property tests are command-line ones),
+unless --full. Test processes run with a 4 GB address-space limit and a 120 s timeout (a mutant
+can loop or allocate without bound on a machine others share). The file is restored in
+a `finally` (also on Ctrl-C or SIGTERM), and a copy of the original is kept in
+DIR/mutate-backup/ while a mutation is applied, so that a run killed outright is repaired by the
+next start. At the end the build is brought back to the sources as they are.
+
+Every mutation names the tests that check a property it breaks (`expect`: a closed form, a patch
+test, a convergence rate, a symmetry, a tangent against differences); it counts as caught only
+when one of them fails. A mutation caught by other tests alone (a snapshot, a run that stops
+converging) is reported as "other only"; one caught by nothing as "SURVIVED". The table:
+
+  id | module | file:line | mutation | verdict | property tests failed | other tests failed
+
+--quick leaves out the command-line and Python tests altogether; --full runs them for every
+mutation (then "other tests failed" lists every failing test). --only runs some mutations;
+--list prints them. A run of all 33 takes about 30 min on 2 cores (--full: about 80 min). Exit status 0 when every mutation run
+was caught by a property test, 1 otherwise, 2 on a usage error.
+
+Left out on purpose: model/contact_solve.cpp and contact/penalty.cpp, two_body.cpp (being
+rewritten), and mutations that cannot change a result (e.g. the predictor's length in the
+arc-length method, which the corrector's constraint overrides).
+"""
+import argparse
+import dataclasses
+import os
+import re
+import resource
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+@dataclasses.dataclass
+class Mutation:
+    id: str
+    module: str
+    path: str      # relative to the repository root
+    old: str       # the exact text of the line's change (must occur once in the file)
+    new: str
+    what: str      # the bug, in words
+    expect: list   # property tests that must catch it (ctest names or pytest node ids)
+
+
+S = "src/hpcontact/"
+MUTATIONS = [
+    # basis
+    Mutation("legendre-bonnet", "basis", S + "basis/legendre.cpp",
+             "L[n] = ((2 * n - 1) * x * L[n - 1] - (n - 1) * L[n - 2]) / n;",
+             "L[n] = ((2 * n - 1) * x * L[n - 1] - (n - 1) * L[n - 2]) / (n + 1);",
+             "Bonnet's recursion divided by n + 1",
+             ["Legendre.RecursionMatchesClosedForms", "IntegratedLegendre.EqualsIntegralOfLegendre"]),
+    Mutation("hierarchic-derivative", "basis", S + "basis/legendre.cpp",
+             "if (dN) dN[k] = std::sqrt(0.5 * (2 * k - 1)) * L_km1;",
+             "if (dN) dN[k] = std::sqrt(0.5 * (2 * k + 1)) * L_km1;",
+             "derivative of the bubble modes with sqrt((2k+1)/2)",
+             ["Hierarchic1D.DerivativeMatchesFiniteDifference", "HierarchicQuad.GradientsMatchFiniteDifferences",
+              "PatchTest.DirichletConstantStressOnDistortedMesh"]),
+    Mutation("edge-orientation-sign", "basis", S + "basis/quad_modes.cpp",
+             "return (edge_reversed[e] && k % 2 == 1) ? -1.0 : 1.0;",
+             "return 1.0;",
+             "odd edge modes of a reversed edge keep their sign",
+             ["DofNumbering.MinimumRuleKeepsConformity", "HpMesh.RefinementIsConformingAndContinuous",
+              "HierarchicQuad.ReversedEdgeFlipsOddModes", "PolynomialReproduction.HarmonicGradientFieldOfDegreeP"]),
+    Mutation("gauss-weight", "basis", S + "basis/quadrature.cpp",
+             "const double w = 2.0 / D;",
+             "const double w = 2.0 / D * (1 + 1e-6);",
+             "Gauss–Legendre weights off by a relative 1e-6",
+             ["GaussLegendre.ExactForMonomialsUpToDegree2nMinus1", "GaussLegendre.ClosedFormsForSmallN",
+              "GaussLegendre.SymmetricAscendingWeightsSumToTwo"]),
+    # geometry
+    Mutation("blending-jacobian", "geometry", S + "geometry/blending.cpp",
+             "    x_eta -= 0.5 * D;",
+             "    x_eta += 0.5 * D;",
+             "the E1 edge term's eta-derivative with the wrong sign",
+             ["BlendingQuad.JacobianMatchesFiniteDifferences", "ElementMapProperties.JacobianMatchesFiniteDifferences"]),
+    Mutation("arc-tangent", "geometry", S + "geometry/curve.cpp",
+             "return r_ * (t1_ - t0_) * Vec2(-std::sin(t), std::cos(t));",
+             "return r_ * Vec2(-std::sin(t), std::cos(t));",
+             "the arc's tangent without the chain-rule factor t1 - t0",
+             ["CircularArc.DerivativesMatchFiniteDifferences", "CircularArc.QuarterCircleLength",
+              "BlendingQuad.AnnularSectorAreaIsExact"]),
+    # fem
+    Mutation("stiffness-coupling", "fem", S + "fem/elasticity.cpp",
+             "K.topRightCorner(n, n) = d12 * XY + d33 * XY.transpose();",
+             "K.topRightCorner(n, n) = d12 * XY + d33 * XY;",
+             "the shear part of the xy block not transposed",
+             ["ElementStiffness.HierarchicStraightSidedRigidBodyNullSpace", "ElementStiffness.EnergyOfConstantStrain",
+              "PatchTest.NeumannUniformTensionOnDistortedMesh"]),
+    Mutation("jacobian-weight", "fem", S + "fem/element_values.cpp",
+             "ev.JxW(k) = rule.weights[i] * rule.weights[j] * det;",
+             "ev.JxW(k) = rule.weights[i] * rule.weights[i] * det;",
+             "quadrature weight w_i w_i instead of w_i w_j",
+             ["PatchTest.DirichletConstantStressOnDistortedMesh", "ElementStiffness.EnergyOfConstantStrain"]),
+    Mutation("edge-normal", "fem", S + "fem/edge_load.cpp",
+             "if (normal) *normal = (le < 2 ? Vec2(T.y(), -T.x()) : Vec2(-T.y(), T.x())) / len;",
+             "if (normal) *normal = (le < 1 ? Vec2(T.y(), -T.x()) : Vec2(-T.y(), T.x())) / len;",
+             "the outward normal of local edge E2 turned inwards",
+             ["EdgeLoadProperties.UniformPressureOnStraightEdge", "EdgeLoadProperties.UniformPressureOnCircularArc"]),
+    Mutation("edge-degree-direction", "fem", S + "fem/dof_map.cpp",
+             "pe = (edge.local_edge[s] % 2 == 0) ? deg[0] : deg[1];  // E1, E3 run along xi",
+             "pe = (edge.local_edge[s] % 2 == 0) ? deg[1] : deg[0];  // E1, E3 run along xi",
+             "an edge's degree taken from the element's other direction",
+             ["DofNumbering.MinimumRuleKeepsConformity", "DofMapProperties.MinimumRuleOnSharedEdges"]),
+    Mutation("geometric-stiffness", "fem", S + "fem/finite_strain.cpp",
+             "G += XY + XY.transpose();",
+             "G += XY;",
+             "the geometric stiffness's S12 term not symmetrised",
+             ["FiniteStrainTangent.AxleInRingAgreesWithCentralDifferences",
+              "FiniteStrainElement.TangentAndForceAgreeWithFiniteDifferences"]),
+    Mutation("condensation-recovery", "fem", S + "fem/condensation.cpp",
+             "const Eigen::VectorXd ui = load_factor * Kii_inv_fi - Kii_inv_Kie * u_external;",
+             "const Eigen::VectorXd ui = load_factor * Kii_inv_fi + Kii_inv_Kie * u_external;",
+             "internal modes recovered with the coupling's sign flipped",
+             ["StaticCondensation.SameDisplacementsAsFullSolve",
+              "Condensation.CondensedSolvePlusRecoveryEqualsFullSolve", "Condensation.RecoveryUnderALoadFactor"]),
+    # material
+    Mutation("cauchy-1-over-J", "material", S + "material/hyperelastic.cpp",
+             "const Eigen::Matrix2d sigma = F * S * F.transpose() / state.J;",
+             "const Eigen::Matrix2d sigma = F * S * F.transpose();",
+             "Cauchy stress without the 1/J of the push-forward",
+             ["HyperelasticCauchy.UniaxialStretchClosedForms",
+              "FiniteStrainPatch.HomogeneousDeformationIsExact"]),
+    Mutation("neo-hooke-tangent", "material", S + "material/hyperelastic.cpp",
+             "const double c = 2 * (mu - lambda * lnJ);",
+             "const double c = 2 * (mu + lambda * lnJ);",
+             "Neo-Hooke tangent with the wrong sign of λ ln J",
+             ["Hyperelastic.TangentIsDerivativeOfStress",
+              "FiniteStrainElement.TangentAndForceAgreeWithFiniteDifferences"]),
+    Mutation("shear-modulus", "material", S + "material/linear_elastic.cpp",
+             "D << c * (1 - nu), c * nu, 0, c * nu, c * (1 - nu), 0, 0, 0, c * (1 - 2 * nu) / 2;",
+             "D << c * (1 - nu), c * nu, 0, c * nu, c * (1 - nu), 0, 0, 0, c * (1 - 2 * nu);",
+             "plane-strain shear modulus 2G",
+             ["Lame.PostProcessedStressesAreLames", "LinearElastic.PlaneStrainMatrix"]),
+    Mutation("sigma-zz", "material", S + "material/linear_elastic.cpp",
+             "return plane == Plane::strain ? poisson_ratio * (sigma(0) + sigma(1)) : 0.0;",
+             "return plane == Plane::strain ? poisson_ratio * sigma(0) : 0.0;",
+             "plane-strain σzz without σyy",
+             ["Lame.PostProcessedStressesAreLames", "LinearElastic.OutOfPlaneStress"]),
+    # contact
+    Mutation("slip-update-sign", "contact", S + "contact/friction.cpp",
+             "r.slip = g_t - r.traction / law.eps_t;",
+             "r.slip = g_t + r.traction / law.eps_t;",
+             "the slip of the return mapping with the wrong sign",
+             ["ReturnMap.SpringSliderClosedForm", "FrictionPath.LoadShearUnloadFollowsTheClosedForm"]),
+    Mutation("friction-dt-dp", "contact", S + "contact/friction.cpp",
+             "r.dt_dp = std::copysign(law.mu, trial);",
+             "r.dt_dp = law.mu;",
+             "slip tangent's dt/dp without the sign of the traction",
+             ["ReturnMap.SpringSliderClosedForm", "FrictionTangent.TwoBarsAgreeWithCentralDifferences"]),
+    Mutation("circle-curvature", "contact", S + "contact/obstacle.cpp",
+             "if (dnormal_dx) *dnormal_dx = r > 0 ? Mat2(s * (Mat2::Identity() - e * e.transpose()) / r) : Mat2::Zero();",
+             "if (dnormal_dx) *dnormal_dx = r > 0 ? Mat2(s * (Mat2::Identity() - e * e.transpose()) / (2 * r)) : Mat2::Zero();",
+             "the rigid circle's dn/dx halved",
+             ["ContactTangent.AnalyticEqualsFiniteDifference", "RigidObstacle.DiscAndHoleGaps"]),
+    Mutation("displaced-obstacle", "contact", S + "contact/obstacle.cpp",
+             "return base_->gap(x - lambda_ * d_, normal, dnormal_dx);",
+             "return base_->gap(x + lambda_ * d_, normal, dnormal_dx);",
+             "a displaced obstacle moved the opposite way",
+             ["RigidObstacle.PlaneAndDisplacedPlaneGaps", "RigidObstacle.DiscAndHoleGaps"]),
+    Mutation("contact-weight", "contact", S + "contact/contact_boundary.cpp",
+             "cp.weight = rule.weights[i] * ds_dt * thickness;",
+             "cp.weight = rule.weights[i] * thickness;",
+             "contact quadrature weight without the edge's ds/dt",
+             ["FrictionPath.LoadShearUnloadFollowsTheClosedForm"]),
+    Mutation("deformable-normal", "contact", S + "contact/deformable_boundary.cpp",
+             "bp.normal = (e.local_edge < 2 ? Vec2(T.y(), -T.x()) : Vec2(-T.y(), T.x())).normalized();",
+             "bp.normal = (e.local_edge < 1 ? Vec2(T.y(), -T.x()) : Vec2(-T.y(), T.x())).normalized();",
+             "the deformed boundary's normal on local edge E2 turned inwards",
+             ["DeformableBoundary.GapToADeformedSquareIsTheSignedDistance"]),
+    # solve
+    Mutation("arc-length-constraint", "solve", S + "solve/arc_length.cpp",
+             "c = u.squaredNorm() - dl * dl;",
+             "c = u.squaredNorm() - 2 * dl * dl;",
+             "arc-length constraint with the wrong factor on Δl²",
+             ["ArcLength.EveryStepKeepsItsLengthOnTheEquilibriumPath"]),
+    Mutation("arc-length-root", "solve", S + "solve/arc_length.cpp",
+             "const bool first = d1.dot(Dx) >= d2.dot(Dx);",
+             "const bool first = d1.dot(Dx) <= d2.dot(Dx);",
+             "the constraint's root that turns back along the path",
+             ["ArcLength.EveryStepKeepsItsLengthOnTheEquilibriumPath"]),
+    Mutation("singular-pivot", "solve", S + "solve/linear_solver.cpp",
+             "constexpr double singular_pivot_ratio = 1e-11;",
+             "constexpr double singular_pivot_ratio = 1e-20;",
+             "a pivot of round-off size accepted as regular",
+             ["LinearSolver.RoundOffSingularMatrixIsANumericalError"]),
+    Mutation("newton-tolerance", "solve", S + "solve/newton.cpp",
+             "if (rn == 0.0 || (it > 0 && rn <= options.tolerance * scale)) {",
+             "if (rn == 0.0 || (it > 0 && rn <= 1e4 * options.tolerance * scale)) {",
+             "Newton stops at 1e4 × its tolerance",
+             ["FiniteStrainPatch.HomogeneousDeformationIsExact", "FiniteStrainPatch.RigidRotationIsStressFree"]),
+    # adapt
+    Mutation("hp-split-position", "adapt", S + "adapt/geometric_refinement.cpp",
+             "const double t = m.edge(e).v0 == c_index ? -1 + 2 * factor : 1 - 2 * factor;",
+             "const double t = m.edge(e).v0 == c_index ? -1 + factor : 1 - factor;",
+             "geometric refinement splits edges at factor/2 instead of factor",
+             ["HpMesh.NewBoundaryNodesLieOnTheCircleAndEdgeSetsFollow"]),
+    Mutation("hp-degree-by-layer", "adapt", S + "adapt/hp.cpp",
+             "const int p = options.min_degree + std::max(layer, 0);",
+             "const int p = options.min_degree + std::max(layer - 1, 0);",
+             "hp degrees rise one layer late",
+             ["HpMesh.AdaptiveDegreesRiseByOnePerLayer"]),
+    Mutation("rp-track-parameter", "adapt", S + "adapt/boundary_track.cpp",
+             "return std::atan2(cross(axis_, r), axis_.dot(r));",
+             "return std::atan2(-cross(axis_, r), axis_.dot(r));",
+             "rp's angle along a circle measured the wrong way round",
+             ["BoundaryTrack.NodeOnTheArcMovesAlongTheCircle",
+              "BoundaryTrack.MovedNodeStaysOnTheCircleAndTheMeshStaysValid"]),
+    # post
+    Mutation("von-mises-shear", "post", S + "post/fields.cpp",
+             "                   3 * sxy * sxy);",
+             "                   2 * sxy * sxy);",
+             "von Mises with 2 σxy² instead of 3 σxy²",
+             ["VonMises.HandValues", "Lame.PostProcessedStressesAreLames",
+              "cli:tests/cli/test_vtu_output.py::test_stress_fields_of_lame_cylinder"]),
+    Mutation("principal-order", "post", S + "post/fields.cpp",
+             "const double c = 0.5 * (sxx + syy), R = std::hypot(0.5 * (sxx - syy), sxy);",
+             "const double c = 0.5 * (sxx + syy), R = std::hypot(0.5 * (sxx + syy), sxy);",
+             "Mohr's radius from the mean instead of the half difference",
+             ["PrincipalStresses.HandValues", "Lame.PostProcessedStressesAreLames"]),
+    Mutation("strain-energy-half", "post", S + "post/fields.cpp",
+             "U += 0.5 * body.thickness * ev.JxW(k) * eps.col(k).dot(D * eps.col(k));",
+             "U += body.thickness * ev.JxW(k) * eps.col(k).dot(D * eps.col(k));",
+             "linear strain energy without the ½",
+             ["Lame.ExponentialConvergenceInP", "Lame.EnergyDifferenceEqualsErrorNorm",
+              "ContactSolve.StrainEnergyIsHalfTheWorkOfTheForces"]),
+    Mutation("pressure-error-norm", "post", S + "post/pressure_error.cpp",
+             "e.e_L2 = 100 * std::sqrt(diff2 / ref2);",
+             "e.e_L2 = 100 * diff2 / ref2;",
+             "relative L2 pressure error without the square root",
+             ["PressureErrors.HertzAgainstShtayermanMatchesBruteForce", "PressureErrors.ExactAndScaled"]),
+]
+
+
+class Interrupted(Exception):
+    pass
+
+
+def on_signal(signum, frame):
+    raise Interrupted(f"signal {signum}")
+
+
+def line_of(text, needle):
+    return text[: text.index(needle)].count("\n") + 1
+
+
+# A mutant can make a test allocate without bound (measured: 14 GB before this limit) on a
+# machine others share; the suite's largest process needs 30 MB resident. Address space per
+# process of a test run (virtual: thread stacks and allocator arenas count too).
+MEMORY_LIMIT = 4 << 30
+
+
+def limit_memory():
+    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
+
+
+def run(cmd, cwd, log, limited=False):
+    """Runs cmd in its own process group, appends its output to log; returns (exit status,
+    output). If this script is interrupted meanwhile, the group it started (ctest and the tests
+    it runs, or the build) is ended by its id."""
+    proc = subprocess.Popen(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            start_new_session=True, preexec_fn=limit_memory if limited else None)
+    try:
+        out, _ = proc.communicate()
+    except BaseException:
+        os.killpg(proc.pid, signal.SIGTERM)
+        try:
+            proc.wait(timeout=20)
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+        raise
+    with open(log, "a") as f:
+        f.write(f"$ {' '.join(cmd)}\n{out}\n")
+    return proc.returncode, out
+
+
+def failed_tests(output):
+    """ctest's failed tests, with the failing pytest node ids inside the cli and python tests."""
+    names = []
+    section = output.split("The following tests FAILED:", 1)
+    if len(section) == 2:
+        for line in section[1].splitlines():
+            m = re.match(r"\s*\d+ - (\S+) \(", line)
+            if m:
+                names.append(m.group(1))
+    # pytest -q's summary lines, e.g. "FAILED ../../tests/cli/test_x.py::test_y - AssertionError"
+    pytest = sorted({m.group(1) for m in re.finditer(
+        r"^FAILED (?:\.\./)*(tests/(?:cli|python)/\S+?)(?: - .*)?$", output, re.M)})
+    for group in ("cli", "python"):
+        if group in names:
+            names.remove(group)
+            inner = [f"{group}:{n}" for n in pytest if n.startswith(f"tests/{group}/")]
+            names.extend(inner or [group])
+    return names
+
+
+def restore_leftovers(backup_dir):
+    """Puts back files a killed earlier run left mutated."""
+    if not os.path.isdir(backup_dir):
+        return
+    for dirpath, _, files in os.walk(backup_dir):
+        for name in files:
+            saved = os.path.join(dirpath, name)
+            rel = os.path.relpath(saved, backup_dir)
+            print(f"restoring {rel} from an interrupted run", file=sys.stderr)
+            shutil.copyfile(saved, os.path.join(ROOT, rel))
+            os.remove(saved)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"), help="configured build folder")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
+    ap.add_argument("--only", help="comma-separated mutation ids")
+    ap.add_argument("--quick", action="store_true", help="leave out the cli and python tests")
+    ap.add_argument("--full", action="store_true",
+                    help="run the cli and python tests for every mutation, not only where needed")
+    ap.add_argument("--list", action="store_true", help="list the mutations and exit")
+    ap.add_argument("--out", help="also write the table (Markdown) to this file")
+    args = ap.parse_args()
+
+    chosen = MUTATIONS
+    if args.only:
+        ids = args.only.split(",")
+        unknown = [i for i in ids if i not in {m.id for m in MUTATIONS}]
+        if unknown:
+            print(f"unknown mutation ids: {', '.join(unknown)}", file=sys.stderr)
+            return 2
+        chosen = [m for m in MUTATIONS if m.id in ids]
+    # Every mutation must apply to the sources as they are: exactly one occurrence.
+    for m in chosen:
+        text = open(os.path.join(ROOT, m.path)).read()
+        if text.count(m.old) != 1:
+            print(f"{m.id}: the text to change occurs {text.count(m.old)} times in {m.path}",
+                  file=sys.stderr)
+            return 2
+    if args.list:
+        for m in chosen:
+            text = open(os.path.join(ROOT, m.path)).read()
+            print(f"{m.id:24} {m.path}:{line_of(text, m.old)}  {m.what}")
+        return 0
+    if not os.path.exists(os.path.join(args.build, "build.ninja")):
+        print(f"{args.build} is not a configured Ninja build (run `make build` first)", file=sys.stderr)
+        return 2
+
+    backup_dir = os.path.join(args.build, "mutate-backup")
+    restore_leftovers(backup_dir)
+    signal.signal(signal.SIGTERM, on_signal)
+    signal.signal(signal.SIGINT, on_signal)  # the children run in their own groups: Ctrl-C is ours
+    log = os.path.join(args.build, "mutate.log")
+    open(log, "w").close()
+    # --timeout: for the tests without their own (the C++ ones: 12 s at most unmutated).
+    ctest = ["ctest", "-j", str(args.jobs), "--timeout", "120", "--output-on-failure"]
+    cpp_tests = ctest + ["-LE", "slow|cli|python"]   # unit, verification, fuzz replays: ~25 s
+    end_to_end = ctest + ["-L", "cli|python", "-LE", "slow"]  # the command line, Python: ~95 s
+    suite = ("ctest -LE 'slow|cli|python'" if args.quick else
+             "ctest -LE slow" + ("" if args.full else " (cli, python only where needed: see --help)"))
+    build = ["cmake", "--build", args.build, "-j", str(args.jobs)]
+
+    status, out = run(build, ROOT, log)
+    if status != 0:
+        print("the unmutated sources do not build; see " + log, file=sys.stderr)
+        return 2
+    rows = []
+    start = time.time()
+    try:
+        for k, m in enumerate(chosen, 1):
+            path = os.path.join(ROOT, m.path)
+            original = open(path, "rb").read()
+            text = original.decode()
+            where = f"{m.path.removeprefix(S)}:{line_of(text, m.old)}"
+            t0 = time.time()
+            saved = os.path.join(backup_dir, m.path)
+            os.makedirs(os.path.dirname(saved), exist_ok=True)
+            shutil.copyfile(path, saved)
+            try:
+                with open(path, "w") as f:
+                    f.write(text.replace(m.old, m.new))
+                status, _ = run(build, ROOT, log)
+                if status != 0:
+                    verdict, props, others = "no build", [], []
+                else:
+                    failed = []
+                    stages = [cpp_tests]
+                    if not args.quick:
+                        stages.append(end_to_end)
+                    for stage, cmd in enumerate(stages):
+                        # The end-to-end tests only when they can decide the verdict: no property
+                        # test has failed yet, or the mutation's property tests are among them.
+                        if stage == 1 and not args.full and any(t in m.expect for t in failed) and \
+                                not any(t.startswith(("cli:", "python:")) for t in m.expect):
+                            break
+                        status, out = run(cmd, args.build, log, limited=True)
+                        found = failed_tests(out)
+                        if status != 0 and not found:
+                            found = ["(ctest failed: see mutate.log)"]
+                        failed += found
+                    props = [t for t in failed if t in m.expect]
+                    others = [t for t in failed if t not in m.expect]
+                    verdict = "caught" if props else ("other only" if others else "SURVIVED")
+            finally:
+                with open(path, "wb") as f:
+                    f.write(original)
+                os.remove(saved)
+            rows.append((m, where, verdict, props, others))
+            print(f"[{k}/{len(chosen)}] {m.id}: {verdict} ({time.time() - t0:.0f} s)"
+                  f"{': ' + ', '.join(props) if props else ''}", flush=True)
+    except (KeyboardInterrupt, Interrupted) as e:
+        print(f"interrupted ({e or 'Ctrl-C'}); the mutated file is restored", file=sys.stderr)
+    finally:
+        run(build, ROOT, log)  # the build matches the sources again
+
+    def cell(names, limit=4):
+        shown = ", ".join(names[:limit])
+        return shown + (f" (+{len(names) - limit} more)" if len(names) > limit else "")
+
+    lines = [f"{len(rows)} mutations, {time.time() - start:.0f} s, suite: {suite}", "",
+             "| id | module | where | mutation | verdict | property tests failed | other tests failed |",
+             "|---|---|---|---|---|---|---|"]
+    for m, where, verdict, props, others in rows:
+        lines.append(f"| {m.id} | {m.module} | {where} | {m.what} | {verdict} | {cell(props)} | "
+                     f"{len(others)}{': ' + cell(others, 3) if others else ''} |")
+    table = "\n".join(lines)
+    print("\n" + table)
+    if args.out:
+        with open(args.out, "w") as f:
+            f.write(table + "\n")
+    return 0 if rows and all(r[2] == "caught" for r in rows) and len(rows) == len(chosen) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
