@@ -166,7 +166,8 @@ TEST(FrictionPath, LoadShearUnloadFollowsTheClosedForm) {
   double worst_t = 0, worst_u = 0;
   int steps = 0, slipping_steps = 0;
   const auto on_step = [&](const Eigen::VectorXd& u, const model::NonlinearSolution::PathPoint& pp,
-                           const std::vector<model::ContactPair>& pairs) {
+                           const std::vector<model::ContactPair>& pairs,
+                           const std::vector<Eigen::VectorXd>&) {
     const auto x = closed_form(pp.displacements, pp.loads);
     const auto r = model::evaluate_contact(d, pairs.front(), u);
     ++steps;
@@ -185,7 +186,7 @@ TEST(FrictionPath, LoadShearUnloadFollowsTheClosedForm) {
     }
     seen.push_back({pp.displacements, pp.loads, r.states.front().t_t, r.states.front().slip});
   };
-  const auto sol = model::solve_contact(spec, d, {}, 0, on_step);
+  const auto sol = model::solve_contact(spec, d, {}, {}, on_step);
   ASSERT_TRUE(sol.converged) << sol.message;
   std::printf("sheared block: %d steps (%d slipping), max |pressure or t_T − closed form| %.3g, "
               "max |slip or slide − closed form| %.3g\n", steps, slipping_steps, worst_t, worst_u);
