@@ -213,7 +213,7 @@ py::object pressure_curve(const Result& res) {
   py::dict out;
   out["x"] = to_numpy(c->x);
   out["pressure_from_stress"] = to_numpy(c->from_stress);
-  out["pressure_penalty"] = to_numpy(c->penalty);
+  out[c->multiplier ? "pressure_multiplier" : "pressure_penalty"] = to_numpy(c->penalty);
   out["hertz"] = to_numpy(c->hertz);
   out["shtayerman"] = to_numpy(c->shtayerman);
   if (!c->reference.empty()) out["reference"] = to_numpy(c->reference);

@@ -71,7 +71,7 @@ from hpc_run import StudyError, check_labelled, csv_number, read_columns, run_ca
 
 HERTZ_MESH = os.path.join(ROOT, "scripts", "hertz_mesh.py")
 METHODS = ("h", "p", "rp", "hp")
-TOP_KEYS = {"study", "title", "control", "reference", "pressure_reference", "curves"}
+TOP_KEYS = {"study", "title", "control", "set", "reference", "pressure_reference", "curves"}
 CURVE_KEYS = {"label", "method", "missing", "case", "mesh", "cells", "degrees", "p", "set",
               "fit_last", "expect_fail", "quick", "seed", "history"}
 QUICK_KEYS = {"degrees", "cells", "fit_last"}
@@ -136,6 +136,10 @@ def load_study(path, quick):
         raise StudyError(where("control.v: the downward displacement of the centre plane, > 0"))
     if control["type"] == "displacement" and "v" not in control:
         raise StudyError(where("control: type displacement needs v"))
+    common = data.setdefault("set", [])
+    if not isinstance(common, list) or not all(isinstance(x, str) and "=" in x for x in common):
+        raise StudyError(where("set: a list of \"key=value\" strings, for every run"))
+    control["set"] = common
 
     ref = data.get("reference")
     if not isinstance(ref, dict) or set(ref) - {"case", "degrees", "quick"}:
@@ -245,14 +249,16 @@ def uy_constraint(problem, path):
 
 
 def control_sets(problem, path, control):
-    """--set overrides that apply the study's load control to a problem."""
+    """--set overrides that apply the study's load control (and its common `set`) to a problem."""
+    common = list(control.get("set", []))
     if control["type"] == "force":
         if "target_resultant" not in (problem.get("solver") or {}):
             raise StudyError(f"{path}: force control needs solver.target_resultant in the problem")
-        return []
+        return common
     b, i, _ = uy_constraint(problem, path)
     solver = {k: v for k, v in (problem.get("solver") or {}).items() if k != "target_resultant"}
-    return [f"solver={json.dumps(solver)}", f"bodies[{b}].constraints[{i}].uy={-control['v']!r}"]
+    return common + [f"solver={json.dumps(solver)}",
+                     f"bodies[{b}].constraints[{i}].uy={-control['v']!r}"]
 
 
 def make_mesh(args, cells, case, reference, path):
@@ -355,6 +361,7 @@ def run_one(hpcontact, point, out):
 
 def penalty_energy(run_dir):
     """U_penalty = sum over contact Gauss points of p_N <-g> / 2 w |dX/dxi|, from contact.csv
+    (0 with exact enforcement, which has no penalty spring)
     (rows: `quadrature` Gauss-Legendre points per contact edge, edge after edge; the edge's
     Jacobian is recovered from a polynomial fit of the points' reference positions X, Y over
     the Gauss abscissae). None where that does not apply (several pairs, a body obstacle,
@@ -362,6 +369,9 @@ def penalty_energy(run_dir):
     try:
         inp = read_yaml(os.path.join(run_dir, "input.yaml"))
         pairs = inp.get("contact") or []
+        if pairs and all(c.get("enforcement", "augmented-lagrangian") == "augmented-lagrangian"
+                         for c in pairs):
+            return 0.0  # exact contact stores no energy in a penalty
         if len(pairs) != 1 or pairs[0]["obstacle"]["type"] == "body":
             return None
         n = int(pairs[0].get("quadrature", 50))

@@ -123,7 +123,8 @@ def yaml_text(args, bottom_x, left_y, comment, right_t=None):
             "      - {edges: [centre], uy: -0.02}", "",
             "contact:", "  - body: cylinder", "    edges: [contact]",
             "    obstacle: {type: plane, point: [0, 0], normal: [0, 1]}",
-            "    penalty: 2.1e8", "    quadrature: 50",
+            *(["    enforcement: penalty", "    penalty: 2.1e8"] if args.enforcement == "penalty" else []),
+            "    quadrature: 50",
             "    compare: {radius: 10, force: 70000" +
             (f", reference: {args.reference}" if args.reference else "") + "}", "",
             "discretization:", f"  method: {args.method}"]
@@ -202,6 +203,10 @@ def main():
     ap.add_argument("--degree", type=int, default=8)
     ap.add_argument("--element", default="Q8")
     ap.add_argument("--case", default="hertz-mesh")
+    ap.add_argument("--enforcement", choices=["augmented-lagrangian", "penalty"],
+                    default="augmented-lagrangian",
+                    help="the contact's enforcement: exact (the program's default, no penalty "
+                         "written) or the seed's penalty eps_N = 2.1e8 = 1000 E")
     ap.add_argument("--reference", help="compare.reference CSV to name in the file")
     ap.add_argument("--contact-extent", type=float, default=4.0,
                     help="arc edges starting below this x are contact edges")

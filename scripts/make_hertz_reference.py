@@ -23,8 +23,11 @@ ROOT = HERE.parent
 
 
 def source_commit():
-    """The commit of the sources the reference is made with (its provenance), or 'unknown'."""
-    r = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=HERE, capture_output=True, text=True)
+    """The commit of the sources the reference is made with (its provenance; '-dirty' when the
+    work tree has uncommitted changes, the commit that adds this file then holds them), or
+    'unknown'."""
+    r = subprocess.run(["git", "describe", "--always", "--dirty", "--abbrev=7"], cwd=HERE,
+                       capture_output=True, text=True)
     return r.stdout.strip() if r.returncode == 0 else "unknown"
 
 
@@ -33,9 +36,9 @@ def mesh(at, degree, layers, factor, path):
         [sys.executable, str(HERE / "hertz_mesh.py"), "graded", "--at", repr(at), "--degree",
          str(degree), "--layers", str(layers), "--factor", str(factor), "--case",
          "hertz-reference"], check=True, capture_output=True, text=True).stdout
-    header = ("# Hertz overkill reference: the 2x2 problem of p5/p8/p15.yaml (same load, material,\n"
-              "# penalty and contact quadrature) on a mesh graded towards the end of the contact\n"
-              "# zone, with a node on it (found by scripts/make_hertz_reference.py). Its pressure.csv is\n"
+    header = ("# Hertz overkill reference: the 2x2 problem of p5/p8/p15.yaml (same load and material,\n"
+              "# exact contact enforcement) on a mesh graded towards the end of the contact zone, with\n"
+              "# a node on it (found by scripts/make_hertz_reference.py). Its pressure.csv is\n"
               "# examples/hertz/reference-pressure.csv.\n"
               f"# Provenance: snapshot: {source_commit()} (this program's output, not an independent value); it is checked\n"
               "# against Hertz's peak pressure and Shtayerman's half width by tests/cli/test_hertz.py.\n")

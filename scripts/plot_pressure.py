@@ -37,8 +37,10 @@ def main(argv):
     fig, ax = plt.subplots(figsize=(7, 4.5))
     ax.plot(xb, [p / p0 for p in cols["hertz"]], "k--", lw=1.2, label="Hertz")
     ax.plot(xb, [p / p0 for p in cols["shtayerman"]], "k:", lw=1.5, label="Shtayerman")
-    ax.plot(xb, [p / p0 for p in cols["pressure_penalty"]], color="0.7", lw=0.8,
-            label="FE, penalty traction")
+    # the pressure the method carries: the multiplier (exact enforcement) or the penalty traction
+    method = "pressure_multiplier" if "pressure_multiplier" in cols else "pressure_penalty"
+    ax.plot(xb, [p / p0 for p in cols[method]], color="0.55", lw=0.9,
+            label="FE, multiplier" if method == "pressure_multiplier" else "FE, penalty traction")
     ax.plot(xb, [p / p0 for p in cols["pressure_from_stress"]], "C0", lw=1.8,
             label="FE, from stresses")
     ax.set_xlabel("x / b (Hertz)")

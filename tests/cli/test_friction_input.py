@@ -32,9 +32,25 @@ def test_bad_friction_input(hpcontact, root, tmp_path, settings, message, code):
     ("{law: stick}", "missing key 'penalty'"),
 ])
 def test_friction_missing_key(hpcontact, root, tmp_path, friction, message):
+    """With the seed's penalty (enforcement: penalty) the tangential penalty is required; exact
+    friction needs none (test_exact_friction_needs_no_tangential_penalty)."""
     case = tmp_path / "case.yaml"
     text = open(os.path.join(root, STICK)).read()
     case.write_text(text.replace("friction: {law: stick, penalty: 1.0e8}", "friction: " + friction))
-    r = hpcontact("run", case, "--out", tmp_path / "out", "-q")
+    r = hpcontact("run", case, "--out", tmp_path / "out", "-q",
+                  "--set", "contact[0].enforcement=penalty")
     assert r.returncode == 1
     assert message in r.stderr, r.stderr
+
+
+def test_exact_friction_needs_no_tangential_penalty(hpcontact, root, tmp_path):
+    """Exact stick (the default enforcement) without friction.penalty: the augmentation of the
+    stick rows defaults to the normal one; the run converges and reports stick at every node."""
+    case = tmp_path / "case.yaml"
+    text = open(os.path.join(root, STICK)).read()
+    case.write_text(text.replace("friction: {law: stick, penalty: 1.0e8}", "friction: {law: stick}"))
+    r = hpcontact("run", case, "--out", tmp_path / "out", "-q")
+    assert r.returncode == 0, r.stderr
+    with open(tmp_path / "out" / "contact.csv") as f:
+        states = {line.rsplit(",", 1)[1].strip() for line in f.readlines()[1:]}
+    assert states == {"stick"}, states

@@ -31,8 +31,9 @@ def reference_run(hpcontact, root, tmp_path_factory):
 def test_reference_reproduces_its_curve(reference_run, root):
     """reference.yaml, run again, gives the committed reference-pressure.csv, and its node on the
     end of the contact zone is where the solution puts Γ* (the mesh was made that way).
-    The CSV is a snapshot: 62c9a39 (this program's output, by scripts/make_hertz_reference.py);
-    the independent check beside it is test_reference_against_closed_forms."""
+    The CSV is a snapshot (this program's output, by scripts/make_hertz_reference.py, the commit
+    named in reference.yaml); the independent checks beside it are
+    test_reference_against_closed_forms and test_reference_equals_an_independent_exact_code."""
     tmp_path, s = reference_run
     x_new, p_new = read_curve(tmp_path / "pressure.csv")
     x_ref, p_ref = read_curve(os.path.join(root, HERTZ, "reference-pressure.csv"))
@@ -59,6 +60,18 @@ def test_reference_against_closed_forms(reference_run):
     assert abs(c["resultant"][1] - 35000) < 35
 
 
+def test_reference_equals_an_independent_exact_code(reference_run):
+    """The converged model with exact contact: strain energy within 2e-6 of 7696.565 N mm and
+    the centre plane's displacement within 1e-5 of 0.487397 mm, the values of an independent
+    exact-contact (active-set, no penalty) code for this model (issue 15). Measured
+    7696.56682 (+2.4e-7) and 0.4873975 (+4.8e-7 mm); the seed's penalty eps_N = 1000 E moved
+    them by -1.0e-4 and +1.4e-4."""
+    s = reference_run[1]
+    assert abs(s["strain_energy"] / 7696.565 - 1) < 2e-6, s["strain_energy"]
+    centre = 0.02 * s["load_factor"]  # the prescribed uy = -0.02 of the centre plane, scaled
+    assert abs(centre - 0.487397) < 1e-5, centre
+
+
 def test_p_examples_converge_to_the_reference(hpcontact, root, tmp_path):
     """p5, p8, p15 as they are: the seed's DOF (tensor space on the 2x2 mesh), the resultant
     F/2 within 0.1 %, and the pressure error against the reference falling with p."""
@@ -76,10 +89,16 @@ def test_p_examples_converge_to_the_reference(hpcontact, root, tmp_path):
 
 
 def test_bilateral_equals_unilateral(hpcontact, root, tmp_path):
-    """Two equal cylinders (bilateral.yaml: both sides' Gauss points against the other's deformed
-    boundary, half weight each, half the penalty on the gap between the bodies) give the
-    unilateral p8.yaml result: the pressure from stresses within 1e-6 of p0 everywhere on
-    [0, 1.5 b] (measured 8.6e-7), the same energy per cylinder and the same load factor."""
+    """Two equal cylinders (bilateral.yaml: exact contact, the upper cylinder's multiplier nodes
+    against the lower one's deformed boundary, mortar on segments) against the unilateral
+    p8.yaml: the same energy per cylinder and load factor to 1e-5 (measured 2.2e-5 and 9.7e-6
+    with mortar on both; 3e-6 and 2e-6 with collocation on both), the pressure from stresses
+    within 1e-2 of p0 on [0, 1.5 b] (measured 4e-3, at the axis and the zone end, and not falling
+    with p: 3.7e-3 at p = 12 and 16). One-sided enforcement carries the pressure along the lower
+    cylinder's deformed normal, which at a node of the discrete interface is tilted by the
+    surfaces' crossing there, so the symmetric pair is not quite the unilateral problem (the
+    seed's two-sided penalty averages the tilt away; two-sided exact constraints would repeat
+    one another)."""
     uni = run(hpcontact, root, "p8.yaml", tmp_path / "uni")
     bil = run(hpcontact, root, "bilateral.yaml", tmp_path / "bil")
     assert bil["converged"] and bil["dofs"] == 2 * uni["dofs"]
@@ -87,17 +106,20 @@ def test_bilateral_equals_unilateral(hpcontact, root, tmp_path):
     _, pb = read_curve(tmp_path / "bil" / "pressure.csv")
     p0 = uni["contact"]["hertz_peak_pressure"]
     assert len(pu) == len(pb)
-    assert max(abs(a - b) for a, b in zip(pu, pb)) < 1e-6 * p0
-    assert abs(bil["strain_energy"] - 2 * uni["strain_energy"]) < 1e-8 * bil["strain_energy"]
-    assert abs(bil["load_factor"] / uni["load_factor"] - 1) < 1e-8
+    assert max(abs(a - b) for a, b in zip(pu, pb)) < 1e-2 * p0
+    assert abs(bil["strain_energy"] - 2 * uni["strain_energy"]) < 1e-4 * bil["strain_energy"]
+    assert abs(bil["load_factor"] / uni["load_factor"] - 1) < 1e-4
     assert abs(bil["contact"]["resultant"][1] - 35000) < 35
 
 
 def test_bilateral_rp_moves_a_node_of_each_body_and_equals_rp8(hpcontact, root, tmp_path):
     """rp between two bodies (bilateral-rp.yaml): the zone end on each body gets its own node
     (node 2 of the upper and of the lower cylinder), the two ends are mirror images, and the
-    result equals the unilateral rp8.yaml: zone end within 1e-6 mm (measured 3.8e-7), pressure
-    from stresses within 1e-4 of p0 (measured 6e-6; the meshes differ by the 1e-8 tolerance)."""
+    result equals the unilateral rp8.yaml: zone end within 1e-6 mm (measured 8e-8), energy per
+    cylinder and load factor within 1e-8 (measured 1e-10), the multiplier within 1e-5 of p0
+    (2.3e-7) and the pressure from stresses within 1e-4 of p0 (measured 4e-7) except at the zone
+    end itself, where it jumps from one element's stress to the next and the two runs' ends
+    differ by 1e-7 mm (the meshes follow their own located ends to the 1e-8 tolerance)."""
     uni = run(hpcontact, root, "rp8.yaml", tmp_path / "uni")
     bil = run(hpcontact, root, "bilateral-rp.yaml", tmp_path / "bil")
     assert bil["converged"] and bil["adapt"]["converged"]
@@ -106,12 +128,22 @@ def test_bilateral_rp_moves_a_node_of_each_body_and_equals_rp8(hpcontact, root, 
     upper, lower = bil["contact"]["gamma_star"], bil["contact"]["gamma_star_other"]
     assert len(upper) == len(lower) == 1
     assert abs(upper[0][0] - lower[0][0]) < 1e-7 and abs(upper[0][1] + lower[0][1]) < 1e-7
-    assert abs(upper[0][0] - uni["contact"]["gamma_star"][0][0]) < 1e-6
-    _, pu = read_curve(tmp_path / "uni" / "pressure.csv")
-    _, pb = read_curve(tmp_path / "bil" / "pressure.csv")
+    end = uni["contact"]["gamma_star"][0][0]
+    assert abs(upper[0][0] - end) < 1e-6
+    assert abs(bil["strain_energy"] / (2 * uni["strain_energy"]) - 1) < 1e-8
+    assert abs(bil["load_factor"] / uni["load_factor"] - 1) < 1e-8
     p0 = uni["contact"]["hertz_peak_pressure"]
-    assert len(pu) == len(pb)
-    assert max(abs(a - b) for a, b in zip(pu, pb)) < 1e-4 * p0
+    with open(tmp_path / "uni" / "pressure.csv") as f:
+        ru = list(csv.DictReader(f))
+    with open(tmp_path / "bil" / "pressure.csv") as f:
+        rb = list(csv.DictReader(f))
+    assert len(ru) == len(rb)
+    assert max(abs(float(a["pressure_multiplier"]) - float(b["pressure_multiplier"]))
+               for a, b in zip(ru, rb)) < 1e-5 * p0
+    away = [(a, b) for a, b in zip(ru, rb) if abs(float(a["x"]) - end) > 1e-5]
+    assert len(away) >= len(ru) - 2
+    assert max(abs(float(a["pressure_from_stress"]) - float(b["pressure_from_stress"]))
+               for a, b in away) < 1e-4 * p0
 
 
 def test_obstacle_the_body_starts_inside_is_refused(hpcontact, root, tmp_path):

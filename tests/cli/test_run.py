@@ -147,14 +147,16 @@ def test_hertz_run_writes_contact_curve(hpcontact, root, tmp_path):
     assert lines[0] == ("pair,X,Y,x,y,gap,pressure,pressure_from_stress,tangential_gap,"
                         "tangential_traction,slip,state")
     assert {line.rsplit(",", 1)[1] for line in lines[1:]} <= {"open", "contact"}  # frictionless
-    assert len(lines) == 1 + 2 * 50
+    # a row per multiplier node: 8 + 1 Gauss-Lobatto points on each of the 2 contact edges,
+    # their shared vertex once (exact enforcement against a rigid plane: collocation)
+    assert len(lines) == 1 + 2 * 8 + 1
     # the comparison with the closed forms: its keys, and its curves on [0, 1.5 b_Hertz]
     for key in ("e_L2_hertz_percent", "e_L2_shtayerman_percent", "e_seed_hertz_percent",
                 "e_seed_shtayerman_percent", "hertz_half_width", "shtayerman_half_width"):
         assert key in s["contact"], key
     assert abs(s["contact"]["hertz_half_width"] - 1.96524) < 1e-5
     curve = (tmp_path / "pressure.csv").read_text().splitlines()
-    assert curve[0] == "x,pressure_from_stress,pressure_penalty,hertz,shtayerman"
+    assert curve[0] == "x,pressure_from_stress,pressure_multiplier,hertz,shtayerman"
     # 1001 uniform samples, plus each end of the contact zone (the kink a reference must keep)
     ends = [g for g in s["contact"]["gamma_star"] if 0 < g[0] < 1.5 * 1.96524]
     assert len(curve) == 1002 + len(ends)

@@ -135,19 +135,23 @@ def test_hertz_p5_resultant(hertz_p5):
 
 
 def test_contact_arrays_equal_contact_csv(hertz_p5, hertz_p5_file, hpcontact_exe, tmp_path):
-    """result.contact() has a row per contact Gauss point (edges of the contact set × the
-    quadrature of the input), and its columns equal contact.csv of a command-line run of the
-    same case: numbers to 1e-12 relative beyond the 12 digits the file keeps, states exactly."""
+    """result.contact() has a row per multiplier node of the contact set (exact enforcement
+    against a rigid plane: the p + 1 Gauss-Lobatto points of each of its edges, a shared vertex
+    once), and its columns equal contact.csv of a command-line run of the same case: numbers to
+    1e-12 relative beyond the 12 digits the file keeps, states exactly."""
     with open(hertz_p5_file) as f:
         spec = yaml.safe_load(f)
     pair = spec["contact"][0]
     body = next(b for b in spec["bodies"] if b["name"] == pair["body"])
-    n_points = sum(len(body["edge_sets"][s]) for s in pair["edges"]) * pair["quadrature"]
+    n_edges = sum(len(body["edge_sets"][s]) for s in pair["edges"])
+    p = spec["discretization"]["degree"]
+    n_points = n_edges * p + 1  # one chain of edges
 
     table = hertz_p5.contact()
     assert all(len(v) == n_points for v in table.values())
     assert set(table["state"]) <= {"open", "contact"}
-    assert (table["state"] == "contact").sum() == (table["gap"] <= 0).sum() > 0
+    closed = (table["gap"] <= 0) | (table["pressure"] > 0)
+    assert (table["state"] == "contact").sum() == closed.sum() > 0
 
     r = subprocess.run([hpcontact_exe, "run", hertz_p5_file, "--out", str(tmp_path), "-q"],
                        capture_output=True, text=True, timeout=300)
@@ -165,12 +169,14 @@ def test_contact_arrays_equal_contact_csv(hertz_p5, hertz_p5_file, hpcontact_exe
 
 
 def test_displacement_at_contact_points(hertz_p5):
-    """At the contact Gauss points (on the curved boundary, located by inverting the blending
-    map) displacement() equals contact()'s x − X, evaluated by the contact code, to round-off."""
+    """At the contact points (the multiplier nodes on the curved boundary, located by inverting
+    the blending map) displacement() equals contact()'s x − X, evaluated by the contact code, to
+    round-off: 1e-10 of the largest displacement, since the nodes at element corners invert to
+    reference coordinates ±1 only to ~1e-12 (measured 9.6e-12 relative)."""
     table = hertz_p5.contact()
     u = hertz_p5.displacement(np.c_[table["X"], table["Y"]])
     moved = np.c_[table["x"] - table["X"], table["y"] - table["Y"]]
-    assert np.abs(u - moved).max() < 1e-13 * np.abs(moved).max()
+    assert np.abs(u - moved).max() < 1e-10 * np.abs(moved).max()
 
 
 def test_pressure_curve_equals_pressure_csv(hertz_p5_file, tmp_path):

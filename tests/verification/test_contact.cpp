@@ -99,7 +99,7 @@ double tangent_mismatch(const model::Discretization& d, model::ContactPair pair,
 // on a converged Hertz state (relative difference < 1e-8, the accuracy of the differences), for the plane and for a rigid circle,
 // whose curvature term (g dn/dx) the analytic tangent includes.
 TEST(ContactTangent, AnalyticEqualsFiniteDifference) {
-  const auto spec = io::read_problem(example("p5.yaml"));
+  const auto spec = io::read_problem(example("p5.yaml"), {"contact[0].enforcement=penalty"});
   const auto result = driver::run_problem(spec, {});
   const auto& d = result.discretization;
   auto pairs = model::make_contact_pairs(spec, d);
@@ -181,7 +181,7 @@ TEST(ContactSolve, RigidCurveObstacleEqualsPlaneAndCircle) {
 // |difference| below 2e-8 of max |K| (measured 1.5e-9 and 1.2e-9).
 TEST(ContactTangent, SeedFiniteDifferenceTangentEqualsAnalytic) {
   for (const char* name : {"p5.yaml", "p8.yaml"}) {
-    const auto spec = io::read_problem(example(name));
+    const auto spec = io::read_problem(example(name), {"contact[0].enforcement=penalty"});
     const auto d = model::discretize(spec);
     const auto sol = model::solve_contact(spec, d);
     ASSERT_TRUE(sol.converged) << sol.message;
@@ -199,8 +199,9 @@ TEST(ContactTangent, SeedFiniteDifferenceTangentEqualsAnalytic) {
 // Newton with the seed's finite-difference tangent reaches the same solution as with the
 // analytic one (the residual is the same; only the path differs): displacements within 1e-8.
 TEST(ContactTangent, FiniteDifferenceTangentGivesTheSameSolution) {
-  const auto an = io::read_problem(example("p5.yaml"));
-  const auto fd = io::read_problem(example("p5.yaml"), {"solver.tangent=finite-difference"});
+  const auto an = io::read_problem(example("p5.yaml"), {"contact[0].enforcement=penalty"});
+  const auto fd = io::read_problem(example("p5.yaml"), {"contact[0].enforcement=penalty",
+                                                        "solver.tangent=finite-difference"});
   const auto a = driver::run_problem(an, {});
   const auto b = driver::run_problem(fd, {});
   ASSERT_TRUE(b.summary.converged);
@@ -208,10 +209,11 @@ TEST(ContactTangent, FiniteDifferenceTangentGivesTheSameSolution) {
 }
 
 // Clapeyron's theorem: the strain energy of a converged Hertz solution (p = 8 and 15, force
-// control) shall equal half the work of the forces on the body, U = ½ (P v + Σ_i w_i p_i u_y,i):
+// control) shall equal half the work of the forces on the body, U = ½ (P v + Σ_j W_j λ_j u_y,j):
 // the centre line's reaction −P (vertical equilibrium with the contact resultant P) on its
-// displacement −v, and the plane's pressure p_i at contact point i (weight w_i) on that point's
-// displacement u_y,i; the symmetry line's reaction does no work (ux = 0 there). Forces and
+// displacement −v, and the plane's pressure λ_j at multiplier node j (weight W_j; exact contact
+// collocated at the nodes) on that node's displacement u_y,j; the symmetry line's reaction does
+// no work (ux = 0 there). Forces and
 // displacements only, not the stresses the energy integrates: to 1e-12 relative (measured
 // 2e-14; the same quadratures on both sides). This checks the energies the convergence study
 // extrapolates its U_ref from (tests/cli/test_convergence_study.py).
@@ -223,12 +225,15 @@ TEST(ContactSolve, StrainEnergyIsHalfTheWorkOfTheForces) {
     ASSERT_TRUE(sol.converged) << sol.message;
     const auto& body = d.bodies[0];
     const auto& pair = sol.pairs.front();
-    const auto r = model::evaluate_contact(d, pair, sol.u);
+    const auto r = model::evaluate_contact(d, pair, sol.u, sol.multipliers_of(0));
+    // The forces on the body: exact contact (collocation on the plane) W_j λ_j at its nodes,
+    // the penalty w_i p_i at its Gauss points.
+    ASSERT_TRUE(pair.constraints);
     double P = 0, contact_work = 0;
-    for (size_t i = 0; i < pair.points.size(); ++i) {
-      const double w = pair.points[i].weight, p = r.states[i].pressure;
+    for (size_t i = 0; i < r.states.size(); ++i) {
+      const double w = pair.constraints->weight(static_cast<int>(i)), p = r.states[i].pressure;
       P += w * p;
-      contact_work += w * p * (r.states[i].x.y() - pair.points[i].X.y());
+      contact_work += w * p * (r.states[i].x.y() - r.X[i].y());
     }
     const int centre = body.dof_offset + 2 * body.dofs.vertex_mode(body.mesh.node_index(7)) + 1;
     const double v = -sol.u(centre);

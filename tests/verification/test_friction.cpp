@@ -19,7 +19,7 @@ using namespace hpcontact;
 TEST(FrictionTangent, TwoBarsAgreeWithCentralDifferences) {
   for (const char* name : {"stick.yaml", "coulomb.yaml"}) {
     const auto spec = io::read_problem(std::string(HPC_SOURCE_DIR) + "/examples/two-bars/" + name,
-                                       {"discretization.degree=[6, 3]"});
+                                       {"discretization.degree=[6, 3]", "contact[0].enforcement=penalty"});
     const auto d = model::discretize(spec);
     const auto sol = model::solve_contact(spec, d);
     ASSERT_TRUE(sol.converged) << sol.message;
@@ -50,6 +50,7 @@ TEST(FrictionTangent, PatchOnRigidPlaneAgreesWithCentralDifferences) {
     shear.value = {0.00012 * E, 0.0};
     b.edge_loads = {shear};
     model::ContactPairSpec c;
+    c.enforcement = model::Enforcement::penalty;
     c.body = b.name;
     c.edge_sets = {"bottom"};
     c.obstacle.kind = model::ObstacleKind::plane;
@@ -107,6 +108,7 @@ model::ProblemSpec sheared_block(double delta, double e, double b_x) {
   b.body_force = {b_x, 0};
   spec.bodies.push_back(b);
   model::ContactPairSpec c;
+  c.enforcement = model::Enforcement::penalty;
   c.body = "block";
   c.edge_sets = {"bottom"};
   c.obstacle.kind = model::ObstacleKind::plane;

@@ -287,7 +287,7 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Names of the body's edge sets that may come into contact.", .min_items = 1},
       {.path = "contact[].obstacle", .type = T::section, .required = true,
        .doc = "What the body's edges touch: a rigid obstacle or another body."},
-      {.path = "contact[].enforcement", .type = T::choice, .default_yaml = "penalty",
+      {.path = "contact[].enforcement", .type = T::choice, .default_yaml = "augmented-lagrangian",
        .doc = "augmented-lagrangian: the contact condition exactly (g_N >= 0, pressure >= 0, "
               "pressure × g_N = 0), the pressure an unknown at the multiplier nodes (the p + 1 "
               "Gauss-Lobatto points of each contact edge of trace degree p), found with the "

@@ -93,18 +93,15 @@ std::shared_ptr<const PairConstraints> make_pair_constraints(const ContactPairSp
                                                     : contact::FrictionLaw::Kind::coulomb;
     c->friction.mu = spec.friction.mu;
   }
-  c->augmentation.resize(n);
+  c->scale.resize(n);
   for (int j = 0; j < n; ++j) {
-    if (spec.penalty > 0) {
-      c->augmentation(j) = spec.penalty;
-      continue;
-    }
     const auto& m = body.material_of(c->nodes.nodes[j].element);
     const double E = m.plane == material::Plane::strain
                          ? m.youngs_modulus / (1 - m.poisson_ratio * m.poisson_ratio)
                          : m.youngs_modulus;
-    c->augmentation(j) = E * c->nodes.nodes[j].stiffness_scale;
+    c->scale(j) = E * c->nodes.nodes[j].stiffness_scale;
   }
+  c->augmentation = spec.penalty > 0 ? Eigen::VectorXd::Constant(n, spec.penalty) : c->scale;
   c->tangential_augmentation =
       spec.friction.penalty > 0 ? Eigen::VectorXd::Constant(n, spec.friction.penalty) : c->augmentation;
   return c;
@@ -248,7 +245,7 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
 
 bool node_active(const PairConstraints& c, const ConstraintState& s, const Eigen::VectorXd& lambda,
                  int j) {
-  return s.found[j] && lambda(j) - c.augmentation(j) * s.G(j) / c.weight(j) >= 0;
+  return s.found[j] && lambda(j) - c.scale(j) * s.G(j) / c.weight(j) >= 0;
 }
 
 }  // namespace hpcontact::model

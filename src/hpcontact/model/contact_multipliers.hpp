@@ -33,7 +33,14 @@ struct PairConstraints {
   std::vector<contact::ContactPoint> node_points;                  ///< a point at each node
   std::vector<std::vector<std::pair<int, double>>> coefficients;   ///< per point: (node j, a_qj)
   Eigen::VectorXd weight;        ///< W_j [length]: ∫ λ ds ≈ Σ_j W_j λ_j
-  Eigen::VectorXd augmentation;  ///< ε_j [force/length³] of the active-set test λ_j − ε_j G_j/W_j > 0
+  /// κ_j = E' p² / h [force/length³] of the node's edge: the scale of the complementarity
+  /// function (the active-set test λ_j − κ_j G_j/W_j ≥ 0, the row κ_j G_j of an active node):
+  /// a property of the body, so that neither the active set nor the answer depends on an input
+  /// parameter.
+  Eigen::VectorXd scale;
+  /// ε_j [force/length³]: the augmentation of the factorised tangent, ε_j W_j ∇ĝ_j ∇ĝ_jᵀ per
+  /// active node (the input's penalty, else κ_j): conditioning, not the answer.
+  Eigen::VectorXd augmentation;
   /// Mortar between two bodies: the points are made at each evaluation, `segment_quadrature`
   /// Gauss points on each segment of an edge between the parameters where the projection onto
   /// the other body crosses one of its vertices (so that each integrand is smooth; `points`
@@ -46,7 +53,7 @@ struct PairConstraints {
   /// converged step, G_T,j = Σ_q a_qj τ·Δ(x_q − x_foot) (stick: G_T,j = 0; Coulomb: slip where
   /// |λ_T + c_T G_T/W| would exceed μ (λ_N − ε ĝ), then λ_T = μ λ_N sign(·)).
   contact::FrictionLaw friction;
-  Eigen::VectorXd tangential_augmentation;  ///< c_T,j [force/length³]
+  Eigen::VectorXd tangential_augmentation;  ///< ε_T,j, as `augmentation` for the stick rows
   bool has_friction() const { return friction.active(); }
   int size() const { return nodes.size(); }
 };
@@ -103,9 +110,11 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
                                      Eigen::VectorXd* R, std::vector<Eigen::Triplet<double>>* t,
                                      bool gradients, const FrictionInputs& friction = {});
 
-/// Whether node j is active: some point of it has a closest point and λ_j − ε_j G_j / W_j > 0
+/// Whether node j is active: some point of it has a closest point and λ_j − κ_j G_j / W_j ≥ 0
 /// (the semi-smooth Newton's active set of the complementarity function
-/// C_j = λ_j − max(0, λ_j − ε_j ĝ_j), ĝ_j = G_j / W_j, whose zeros are g ≥ 0, λ ≥ 0, λ g = 0).
+/// C_j = λ_j − max(0, λ_j − κ_j ĝ_j), ĝ_j = G_j / W_j, whose zeros are g ≥ 0, λ ≥ 0, λ g = 0;
+/// a node touching without pressure counts as active, so a body that rests on its support is
+/// held from the first iteration).
 bool node_active(const PairConstraints& c, const ConstraintState& s, const Eigen::VectorXd& lambda,
                  int j);
 

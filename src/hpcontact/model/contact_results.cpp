@@ -3,6 +3,8 @@
 #include "hpcontact/model/contact_results.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <optional>
 #include <cmath>
 #include <limits>
 
@@ -31,7 +33,7 @@ ConstraintState pair_constraint_state(const Discretization& d, const ContactPair
 Vec2 contact_resultant(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u,
                        const Eigen::VectorXd* multipliers) {
   if (pair.constraints) {
-    HPC_ASSERT(multipliers, "an exact pair's resultant needs its multipliers");
+    if (!multipliers) throw std::invalid_argument("contact_resultant: an exact pair needs its multipliers");
     return pair_constraint_state(d, pair, u, *multipliers).resultant;
   }
   return pair_forces(d, pair, u, nullptr).resultant(pair);
@@ -85,6 +87,38 @@ double stress_pressure(const Body& body, int q, int le, double t, const Vec2& N,
   const Vec2 n = body.finite_strain() ? Vec2(ps.F.inverse().transpose() * N).normalized() : N;
   const Eigen::Vector3d& sig = ps.stress;
   return -(n.x() * n.x() * sig(0) + n.y() * n.y() * sig(1) + 2 * n.x() * n.y() * sig(2));
+}
+
+/// −n·σ·n at multiplier node j of an exactly enforced pair. A node on a vertex lies on two
+/// edges' elements: the stress is taken in the one whose map is regular at that corner, since
+/// where two edges of one smooth curve meet the element there has a 180° corner, its Jacobian
+/// vanishes at the corner and its stresses are singular. Where no element is regular at the
+/// corner, 1e-3 of the edge inside it.
+double node_stress_pressure(const Body& body, const ContactPair& pair, int j, const Eigen::VectorXd& u) {
+  const PairConstraints& c = *pair.constraints;
+  struct Candidate {
+    int q, le;
+    double t, regularity;
+  };
+  std::optional<Candidate> best;
+  for (size_t k = 0; k < c.nodes.edge_nodes.size(); ++k)
+    for (size_t i = 0; i < c.nodes.edge_nodes[k].size(); ++i) {
+      if (c.nodes.edge_nodes[k][i] != j) continue;
+      const auto& edge = body.mesh.edge(pair.edges[k]);
+      const int q = edge.quads[0], le = edge.local_edge[0];
+      const double t = c.nodes.edge_points[k][i];
+      const auto r = fem::edge_reference_point(le, t);
+      Mat2 J;
+      body.maps[q].map(r[0], r[1], &J);
+      const double regularity = std::abs(J.determinant()) / std::max(J.squaredNorm(), 1e-300);
+      if (!best || regularity > best->regularity) best = Candidate{q, le, t, regularity};
+    }
+  if (!best) return 0;
+  double t = best->t;
+  if (best->regularity < 1e-6) t = std::clamp(t, -1 + 1e-3, 1 - 1e-3);
+  Vec2 normal;
+  fem::edge_geometry(body.maps[best->q], best->le, t, &normal, nullptr);
+  return stress_pressure(body, best->q, best->le, t, normal, u);
 }
 
 /// The ends of the contact zone along the contact points of one body (the states' gaps change
@@ -207,41 +241,62 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
   ContactResult res;
   ConstraintState s;
   if (pair.constraints) {
-    HPC_ASSERT(multipliers, "an exact pair's results need its multipliers");
+    if (!multipliers) throw std::invalid_argument("evaluate_contact: an exact pair's results need its multipliers");
     s = pair_constraint_state(d, pair, u, *multipliers);
-  }
-  const std::vector<contact::ContactPoint>& points =
-      !pair.constraints          ? pair.points
-      : s.segment_points.empty() ? pair.constraints->points
-                                 : s.segment_points;
-  if (pair.constraints) {
+    // One state per multiplier node, where the method carries the pressure: λ_j, the weighted
+    // gap, the node's mean normal; the largest penetration is the pointwise one over the points
+    // the gap is integrated on.
     const PairConstraints& c = *pair.constraints;
-    res.states = s.points;
+    for (const auto& ps : s.points)
+      if (std::isfinite(ps.gap)) res.max_penetration = std::max(res.max_penetration, -ps.gap);
     res.resultant = s.resultant;
+    const bool friction = c.has_friction() && multipliers->size() == 2 * c.size();
     for (int j = 0; j < c.size(); ++j) {
       const auto& cp = c.node_points[j];
       ContactResult::Node n;
       std::tie(n.X, n.x) = boundary_position(body, cp.element, cp.local_edge, cp.t, u);
       n.pressure = (*multipliers)(j);
-      if (c.has_friction() && multipliers->size() == 2 * c.size()) n.tangential = (*multipliers)(c.size() + j);
+      if (friction) n.tangential = (*multipliers)(c.size() + j);
       n.gap = s.found[j] ? s.G(j) / c.weight(j) : std::numeric_limits<double>::infinity();
-      n.active = n.pressure > 0;
+      // the solver's own active set (a round-off pressure on an open node is no contact)
+      n.active = node_active(c, s, multipliers->head(c.size()), j) && n.pressure >= 0;
       res.p_max = std::max(res.p_max, n.pressure);
       res.nodes.push_back(n);
+      contact::PointState ps;
+      ps.x = n.x;
+      ps.gap = n.gap;
+      ps.pressure = n.pressure;
+      if (s.d_resultant[j].norm() > 0) ps.normal = s.d_resultant[j].normalized();
+      ps.tau = Vec2(ps.normal.y(), -ps.normal.x());
+      ps.traction = n.pressure * ps.normal;
+      if (friction) {
+        if (s.d_resultant_t[j].norm() > 0) ps.tau = -s.d_resultant_t[j].normalized();
+        ps.t_t = n.tangential;
+        ps.traction -= n.tangential * ps.tau;
+        if (n.active)
+          ps.stick_slip = c.friction.kind == contact::FrictionLaw::Kind::coulomb &&
+                                  std::abs(n.tangential) >= (1 - 1e-9) * c.friction.mu * n.pressure
+                              ? contact::StickSlip::slip
+                              : contact::StickSlip::stick;
+      }
+      res.states.push_back(ps);
+      res.X.push_back(n.X);
+      res.stress_pressure.push_back(node_stress_pressure(body, pair, j, u));
     }
   } else {
     PairForces f = pair_forces(d, pair, u, nullptr);
     res.resultant = f.resultant(pair);
     res.states = std::move(f.states);
     res.other_states = std::move(f.other_states);
-    for (const auto& ps : res.states) res.p_max = std::max(res.p_max, ps.pressure);
+    for (const auto& ps : res.states) {
+      res.p_max = std::max(res.p_max, ps.pressure);
+      if (std::isfinite(ps.gap)) res.max_penetration = std::max(res.max_penetration, -ps.gap);
+    }
+    for (const auto& cp : pair.points) {
+      res.X.push_back(cp.X);
+      res.stress_pressure.push_back(stress_pressure(body, cp.element, cp.local_edge, cp.t, cp.normal, u));
+    }
   }
-  for (const auto& cp : points) {
-    res.X.push_back(cp.X);
-    res.stress_pressure.push_back(stress_pressure(body, cp.element, cp.local_edge, cp.t, cp.normal, u));
-  }
-  for (const auto& ps : res.states)
-    if (std::isfinite(ps.gap)) res.max_penetration = std::max(res.max_penetration, -ps.gap);
   ZoneEnds own = pair.constraints ? node_zone_ends(body, pair, res.nodes, u, multipliers->head(pair.constraints->size()))
                                   : zone_ends(body, pair.points, res.states, *pair.obstacle, pair, u);
   res.gamma_star = std::move(own.X);

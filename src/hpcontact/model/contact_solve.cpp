@@ -108,6 +108,18 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     };
   };
 
+  // Why a Newton solve failed, with the inverted element or the unknown whose pivot vanished.
+  auto failure_reason = [&](const solve::SolveReport& rep) {
+    std::string why = rep.message;
+    if (rep.status == solve::SolveStatus::not_finite && !system.failure().empty())
+      why += " (" + system.failure() + ")";
+    if (rep.status == solve::SolveStatus::singular) {
+      const std::string where = explain_singular(d, rep.singular_row);
+      if (!where.empty()) why += " (" + where + ")";
+    }
+    return why;
+  };
+
   // Load steps along the path parameter from `from` to `target` (factors(s) gives the
   // factors), halving a step that does not converge (at most max_cuts times in a row) and
   // doubling it again, up to the nominal step, after two steps in a row converged.
@@ -144,13 +156,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
         continue;
       }
       in_a_row = 0;
-      std::string why = rep.message;
-      if (rep.status == solve::SolveStatus::not_finite && !system.failure().empty())
-        why += " (" + system.failure() + ")";
-      if (rep.status == solve::SolveStatus::singular) {
-        const std::string where = explain_singular(d, rep.singular_row);
-        if (!where.empty()) why += " (" + where + ")";
-      }
+      const std::string why = failure_reason(rep);
       // A tangent made singular by a body that only contact holds (its constraints leave a
       // rigid motion free) stays singular on a shorter step: no cuts then.
       bool structural = false;
@@ -206,6 +212,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     system.set_factors(first, first);
     x = system.unknowns(start.u, start.multipliers);
   }
+  bool secant = ss.target_resultant.has_value();  // force control by the secant on full solves
   if (ss.control == "arc-length") {
     // Prescribed displacements first (loads at 0), then the arc-length path of the loads.
     if (d.prescribed.cwiseAbs().maxCoeff() > 0 &&
@@ -242,50 +249,59 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       sol.message = rep.message;
       return failed();
     }
-  } else if (ss.stages.empty() && ss.target_resultant && !pairs.empty() && pairs.front().constraints) {
-    // Force control of an exactly enforced pair: the factor is one more unknown of Newton's
-    // system, its equation the target resultant (bordered), from the start at once.
-    const auto& tr = *ss.target_resultant;
-    system.set_factors(first, first);
-    system.set_force_target(std::make_pair(tr.component, tr.value));
-    x.conservativeResize(system.size());
-    x(system.size() - 1) = first;
-    no.reference_norm = std::max(system.force_scale(x), tr.value);
-    const auto rep = solve::newton(system, x, no, newton_progress());
-    sol.newton_iterations += rep.iterations;
-    if (!rep.ok()) {
-      sol.message = "force control (factor and contact pressures one Newton system) did not "
-                    "converge: " + rep.message;
-      x.setZero();
-      return failed();
-    }
-    const double alpha = system.displacement_factor(x);
-    system.set_force_target(std::nullopt);
-    x.conservativeResize(system.size());
-    system.set_factors(alpha, alpha);
-    converged = {alpha, alpha};
-    record(alpha, alpha, rep.iterations, 0.0);
-    ++sol.load_steps;
-    std::ostringstream os;
-    os << "force control: factor " << alpha << ", " << rep.iterations << " Newton iterations, |R| "
-       << rep.residual_history.front() << " -> " << rep.residual_history.back();
-    say(os.str());
-  } else if (ss.stages.empty()) {
-    if (!advance_to(0.0, first)) return failed();
   } else {
-    Factors start;
-    for (const auto& stage : ss.stages) {
-      const Factors end{stage.displacements, stage.loads};
-      auto along = [&](double s) {
-        return Factors{start.displacements + s * (end.displacements - start.displacements),
-                       start.loads + s * (end.loads - start.loads)};
-      };
-      if (!advance(0.0, 1.0, stage.steps > 0 ? stage.steps : ss.load_steps, along)) return failed();
-      start = end;
+    // Force control of an exactly enforced pair: the factor is one more unknown of Newton's
+    // system, its equation the target resultant (bordered), from the start at once. Should that
+    // not converge, the load-controlled steps and the secant below take over.
+    bool bordered = ss.stages.empty() && ss.target_resultant && !pairs.empty() && pairs.front().constraints;
+    if (bordered) {
+      const auto& tr = *ss.target_resultant;
+      const Eigen::VectorXd x0 = x;
+      system.set_factors(first, first);
+      system.set_force_target(std::make_pair(tr.component, tr.value));
+      x.conservativeResize(system.size());
+      x(system.size() - 1) = first;
+      no.reference_norm = std::max(system.force_scale(x), tr.value);
+      const auto rep = solve::newton(system, x, no, newton_progress());
+      sol.newton_iterations += rep.iterations;
+      const double alpha = system.displacement_factor(x);
+      system.set_force_target(std::nullopt);
+      x.conservativeResize(system.size());
+      if (rep.ok()) {
+        system.set_factors(alpha, alpha);
+        converged = {alpha, alpha};
+        record(alpha, alpha, rep.iterations, 0.0);
+        ++sol.load_steps;
+        std::ostringstream os;
+        os << "load step " << sol.load_steps << ": factor " << alpha << " (force control), "
+           << rep.iterations << " Newton iterations, |R| " << rep.residual_history.front()
+           << " -> " << rep.residual_history.back();
+        say(os.str());
+      } else {
+        say("force control as one Newton system did not converge (" + failure_reason(rep) +
+            "): load steps and the secant on the factor instead");
+        x = x0;
+        bordered = false;
+      }
     }
+    if (!bordered && ss.stages.empty()) {
+      if (!advance_to(0.0, first)) return failed();
+    } else if (!bordered) {
+      Factors start;
+      for (const auto& stage : ss.stages) {
+        const Factors end{stage.displacements, stage.loads};
+        auto along = [&](double s) {
+          return Factors{start.displacements + s * (end.displacements - start.displacements),
+                         start.loads + s * (end.loads - start.loads)};
+        };
+        if (!advance(0.0, 1.0, stage.steps > 0 ? stage.steps : ss.load_steps, along)) return failed();
+        start = end;
+      }
+    }
+    secant = ss.target_resultant && !bordered;
   }
   lambda = first;
-  if (ss.target_resultant && !(pairs.front().constraints && ss.stages.empty() && ss.control == "load")) {
+  if (secant) {
     const auto& tr = *ss.target_resultant;
     HPC_REQUIRE(!pairs.empty(), InputError, ss.where.str(),
                 ".target_resultant: needs a contact pair to measure the resultant");

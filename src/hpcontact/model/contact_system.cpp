@@ -26,10 +26,11 @@ ContactSystem::ContactSystem(const Discretization& d, const std::vector<ContactP
   gamma_ = Eigen::VectorXd::Zero(n_z_);
   for (size_t k = 0; k < pairs_.size(); ++k)
     if (const auto& c = pairs_[k].constraints) {
-      gamma_.segment(z_offset_[k], c->size()) = c->augmentation.cwiseProduct(c->weight);
+      // the rows κ_j ∇G_j augment the tangent by (κ_j² / γ_j) ∇G_j ∇G_jᵀ = ε_j W_j ∇ĝ_j ∇ĝ_jᵀ
+      const Eigen::VectorXd k2w = c->scale.cwiseProduct(c->scale).cwiseProduct(c->weight);
+      gamma_.segment(z_offset_[k], c->size()) = k2w.cwiseQuotient(c->augmentation);
       if (c->has_friction())
-        gamma_.segment(z_offset_[k] + c->size(), c->size()) =
-            c->tangential_augmentation.cwiseProduct(c->weight);
+        gamma_.segment(z_offset_[k] + c->size(), c->size()) = k2w.cwiseQuotient(c->tangential_augmentation);
     }
   K_prescribed_ = op_.K * d_.prescribed;
   u_committed_ = Eigen::VectorXd::Zero(d_.n_dofs);
@@ -125,6 +126,8 @@ void ContactSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve
   Triplets T;
   residual(x, r, K ? &T : nullptr, nullptr, nullptr);
   if (!K) return;
+  previous_tangent_states_ = std::move(tangent_states_);
+  tangent_states_ = states_;
   solve::SparseMatrix Kc(size(), size());
   Kc.setFromTriplets(T.begin(), T.end());
   if (n_z_ == 0) {
@@ -181,6 +184,7 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
   }
   if (states) states->resize(pairs_.size());
   points_in_contact_ = 0;
+  states_.assign(n_z_, 0);
   // Rows of z, filled per exact pair; their u-parts as (row, dof of all dofs, value).
   Triplets z_rows;
   for (size_t k = 0; k < pairs_.size(); ++k) {
@@ -212,7 +216,8 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
     for (int j = 0; j < c.size(); ++j) {
       const bool active = node_active(c, s, lambda, j);
       active_nodes += active;
-      r(o + j) = active ? c.augmentation(j) * s.G(j) : c.weight(j) * lambda(j);
+      states_[z_offset_[k] + j] = active;
+      r(o + j) = active ? c.scale(j) * s.G(j) : c.weight(j) * lambda(j);
       if (!T) continue;
       for (const auto& [dof, v] : s.dG[j]) {
         // force column ∂r_u/∂λ_j = −∂G_j/∂u, and the row's u-part (zeros when inactive, so that
@@ -220,14 +225,14 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
         const int i = op_.unknown(d_, dof);
         if (i >= 0) {
           T->emplace_back(i, o + j, -v);
-          T->emplace_back(o + j, i, active ? c.augmentation(j) * v : 0.0);
+          T->emplace_back(o + j, i, active ? c.scale(j) * v : 0.0);
         } else if (target_ && active) {
-          z_rows.emplace_back(o + j, dof, c.augmentation(j) * v);  // for ∂r_j/∂α
+          z_rows.emplace_back(o + j, dof, c.scale(j) * v);  // for ∂r_j/∂α
         }
       }
       if (!active) T->emplace_back(o + j, o + j, c.weight(j));
       else if (target_ && pair.moving)
-        T->emplace_back(o + j, size() - 1, c.augmentation(j) * s.dG_dfactor(j));
+        T->emplace_back(o + j, size() - 1, c.scale(j) * s.dG_dfactor(j));
     }
     points_in_contact_ += active_nodes;
     if (tangential) tangential_rows(c, s, lambda, lambda_t, o, r, T, target_ ? &z_rows : nullptr);
@@ -282,7 +287,7 @@ void ContactSystem::tangential_rows(const PairConstraints& c, const ConstraintSt
   const int m = c.size();
   for (int j = 0; j < m; ++j) {
     const int row = o + m + j;
-    const double W = c.weight(j), cT = c.tangential_augmentation(j);
+    const double W = c.weight(j), cT = c.scale(j);
     enum class State { open, stick, slip } state = State::open;
     double sign = 1;
     if (node_active(c, s, lambda, j)) {
@@ -290,13 +295,14 @@ void ContactSystem::tangential_rows(const PairConstraints& c, const ConstraintSt
       if (c.friction.kind == contact::FrictionLaw::Kind::coulomb) {
         // the trial traction against the augmented normal pressure
         const double trial = lambda_t(j) + cT * s.GT(j) / W;
-        const double bound = c.friction.mu * (lambda(j) - c.augmentation(j) * s.G(j) / W);
+        const double bound = c.friction.mu * (lambda(j) - c.scale(j) * s.G(j) / W);
         if (std::abs(trial) > bound) {
           state = State::slip;
           sign = trial < 0 ? -1.0 : 1.0;
         }
       }
     }
+    states_[row - n_u_] = static_cast<char>(state);
     switch (state) {
       case State::open: r(row) = W * lambda_t(j); break;
       case State::stick: r(row) = cT * s.GT(j); break;

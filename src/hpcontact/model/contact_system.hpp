@@ -96,6 +96,9 @@ public:
   /// Under force control the factor changes by at most a factor 2 per Newton step: the active
   /// set follows the load instead of jumping between far too small and far too large zones.
   double admissible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const override;
+  /// The multiplier nodes' states (inactive, active; open, stick, slip) at the last two
+  /// tangents were the same.
+  bool settled() const override { return tangent_states_ == previous_tangent_states_; }
   Eigen::VectorXd solve(const solve::LinearSolver& sparse, const Eigen::VectorXd& b) const override;
 
 private:
@@ -138,6 +141,10 @@ private:
   std::optional<std::pair<int, double>> target_;  ///< force control: component, value
   Eigen::VectorXd gamma_;      ///< augmentation of each row of z (ε_j W_j; 0 for α)
   solve::SaddlePointSolver saddle_;
+  /// The state of each multiplier row at the last evaluation, and at the last two with a
+  /// tangent (settled()).
+  mutable std::vector<char> states_;
+  std::vector<char> tangent_states_, previous_tangent_states_;
   Eigen::VectorXd K_prescribed_;   ///< K times the prescribed displacements (for ∂/∂α)
   Eigen::VectorXd u_committed_;    ///< all dofs at the last converged step (exact friction)
   double factor_committed_ = 0;    ///< the displacement factor there

@@ -211,7 +211,7 @@ struct ContactPairSpec {
   std::string body;                    ///< body name
   std::vector<std::string> edge_sets;  ///< its contact edges
   ObstacleSpec obstacle;
-  Enforcement enforcement = Enforcement::penalty;
+  Enforcement enforcement = Enforcement::augmented_lagrangian;
   ConstraintRule constraint = ConstraintRule::automatic;
   /// eps_N [force/length³]: the penalty; with augmented_lagrangian the augmentation (0: the
   /// default E p² / h at each node), a parameter of convergence speed, not of the answer.

@@ -39,7 +39,7 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
       return report;
     }
     if (it == 0) scale = std::max(rn, options.reference_norm);
-    if (rn == 0.0 || (it > 0 && rn <= options.tolerance * scale)) {
+    if (rn == 0.0 || (it > 0 && rn <= options.tolerance * scale && system.settled())) {
       report.status = SolveStatus::converged;
       report.iterations = it;
       return report;

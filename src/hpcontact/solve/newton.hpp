@@ -27,6 +27,10 @@ public:
   virtual Eigen::VectorXd solve(const LinearSolver& sparse, const Eigen::VectorXd& b) const {
     return sparse.solve(b);
   }
+  /// Whether the piecewise structure of the system (an active set) was the same at the last two
+  /// tangents: a semi-smooth system has converged only when the step that led to the current
+  /// state was solved with the state's own active set.
+  virtual bool settled() const { return true; }
   /// The fraction τ ∈ (0, 1] of the correction dx at x that the system admits (a trust region on
   /// some unknowns); Newton takes τ dx.
   virtual double admissible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const {

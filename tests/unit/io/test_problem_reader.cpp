@@ -471,8 +471,10 @@ TEST(ProblemReader, RejectsNonPositivePenalty) {
   input_error(with(text, "penalty: 1,", "penalty: 0,"),
               {"case.yaml:20:", "contact[0].penalty: must be > 0 (got 0)"});
   input_error(with(text, "penalty: 1,", "penalty: -3,"), {"contact[0].penalty: must be > 0"});
-  input_error(with(text, "penalty: 1, ", ""),
+  input_error(with(text, "penalty: 1, ", "enforcement: penalty, "),
               {"contact[0]: missing key 'penalty' (required by enforcement: penalty)"});
+  // exact enforcement needs none (the augmentation defaults to E p²/h)
+  EXPECT_EQ(hio::parse_problem(with(text, "penalty: 1, ", ""), label).contact.at(0).penalty, 0.0);
 }
 
 // An obstacle shall be complete: a circle needs its radius (a plane has none), a plane a

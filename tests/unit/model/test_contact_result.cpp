@@ -90,6 +90,7 @@ model::ProblemSpec block(const Field& f, double angle) {
   b.constraints = {all};
   spec.bodies.push_back(b);
   model::ContactPairSpec cp;
+  cp.enforcement = model::Enforcement::penalty;
   cp.body = "block";
   cp.edge_sets = {"bottom"};
   cp.obstacle.kind = model::ObstacleKind::plane;
