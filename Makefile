@@ -3,7 +3,7 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 PYTHON := /usr/bin/python3
 
-.PHONY: deps configure build run test test-all test-sanitize fuzz bench clean
+.PHONY: deps configure build program run test test-all test-sanitize fuzz bench install deb clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -14,8 +14,12 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
+# Only the command line (what `make run` needs): no tests, benchmarks, fuzz replays or Python module.
+program: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target hpcontact_app
+
 # The main job: the Hertz benchmark (p = 8, force control to F/2), and the Lamé cylinder.
-run: build
+run: program
 	@$(BUILD_DIR)/hpcontact run examples/hertz/p8.yaml --out results/hertz-p8
 	@$(PYTHON) scripts/plot_pressure.py results/hertz-p8
 	@$(PYTHON) scripts/plot_field.py results/hertz-p8/solution.vtu --xlim 0 4 --ylim -0.5 3 --out results/hertz-p8/von_mises.png
@@ -54,6 +58,15 @@ fuzz:
 
 bench: build
 	@bash bench/run.sh
+
+# Installs the program, library, CMake package, Python module, scripts and docs under PREFIX.
+PREFIX ?= /usr/local
+install: build
+	@cmake --install $(BUILD_DIR) --prefix $(PREFIX)
+
+# A Debian package of the installed tree (prefix /usr): build/hpcontact_<version>_<arch>.deb.
+deb: build
+	@cd $(BUILD_DIR) && cpack -G DEB
 
 clean:
 	rm -rf $(BUILD_DIR) build-sanitize build-fuzz results
