@@ -343,7 +343,7 @@ def write_fine_mesh(path, cells=(6, 6), fine=0.5):
     arc = [e for e, x in zip(bot, bottom) if x < zone - 1e-9]
     es = lambda edges: ", ".join(f"[{a}, {b}]" for a, b in edges)  # noqa: E731
     lines = [
-        "# Quarter circle with a triangular load instead of contact (seed §5.2.4.3.1, CASES.md",
+        "# Quarter circle with a triangular load instead of contact (seed §5.2.4.3.1, docs/cases.md",
         f"# §4), the {len(quads)}-element mesh: as quarter-circle.yaml (same geometry, material,",
         "# supports and load: vertical triangular traction on the arc x in [0, 2.48], resultant",
         "# 35000 N), on a finer mesh in place of the seed's 147-element one (its figure is lost).",
