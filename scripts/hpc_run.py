@@ -1,5 +1,6 @@
 """What the study and plot scripts share: running `hpcontact run` on a case, and reading and
 writing the numbers it leaves behind. Standard library only, but for read_vtu (numpy)."""
+import argparse
 import csv
 import json
 import os
@@ -8,6 +9,14 @@ import subprocess
 import xml.etree.ElementTree as ET
 
 SCRIPTS = os.path.dirname(os.path.abspath(__file__))
+
+
+def script_parser(doc):
+    """The command line of a script whose docstring is its manual: the first paragraph is the
+    description, the rest the epilog of --help, as written."""
+    head, _, rest = doc.partition("\n\n")
+    return argparse.ArgumentParser(description=head, epilog=rest or None,
+                                   formatter_class=argparse.RawDescriptionHelpFormatter)
 
 
 def default_hpcontact():

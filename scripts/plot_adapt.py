@@ -11,7 +11,6 @@ iteration against Hertz and Shtayerman, the whole range and zoomed on the end of
 The views are p/p0 in [-0.15, 1.3] and [-0.1, 0.6]; the legend says which iterations' curves
 leave them (clipped), with their extreme values. Prints the name of the PNG.
 """
-import argparse
 import json
 import os
 import sys
@@ -22,15 +21,13 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hpc_run import read_columns, unit_text, units_of  # noqa: E402
+from hpc_run import read_columns, script_parser, unit_text, units_of  # noqa: E402
 
 VIEW, ZOOM = (-0.15, 1.3), (-0.1, 0.6)
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
+    ap = script_parser(__doc__)
     ap.add_argument("folder", metavar="RESULTS_DIR", help="--out folder of an rp or hp run")
     ap.add_argument("out", nargs="?", metavar="OUT.png",
                     help="PNG to write (default RESULTS_DIR/adapt-pressure.png)")

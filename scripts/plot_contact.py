@@ -12,7 +12,6 @@ it); a pressure curve that leaves the pressure axis (set by --ylim) is clipped, 
 says so. Axis labels carry units: those summary.json names ("units"), else input units.
 Writes FILE.png (default: RESULTS_DIR/contact.png of the first folder) and prints its name.
 """
-import argparse
 import json
 import math
 import os
@@ -24,7 +23,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hpc_run import axis_label, read_columns, units_of  # noqa: E402
+from hpc_run import axis_label, read_columns, script_parser, units_of  # noqa: E402
 
 
 def read(folder):
@@ -44,9 +43,7 @@ def read(folder):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
+    ap = script_parser(__doc__)
     ap.add_argument("folders", nargs="+", metavar="RESULTS_DIR",
                     help="--out folders of `hpcontact run` (one curve each)")
     ap.add_argument("--along", default="X", choices=["X", "Y", "s"],

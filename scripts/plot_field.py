@@ -31,7 +31,6 @@ units" (the program has no unit system: its results are in the units of the inpu
 Writes FILE.png (default: <field>.png next to the .vtu) and prints its name, the scale, the
 obstacles drawn and any clipping.
 """
-import argparse
 import csv
 import json
 import os
@@ -48,7 +47,7 @@ import matplotlib.tri as mtri  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hpc_run import axis_label, read_vtu, units_of  # noqa: E402
+from hpc_run import axis_label, read_vtu, script_parser, units_of  # noqa: E402
 
 STRESS_FIELDS = {"von_mises", "sigma_xx", "sigma_yy", "sigma_xy", "sigma_zz", "principal_1",
                  "principal_2"}
@@ -295,9 +294,7 @@ def colour_range(values, points, vmin, vmax, unit):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
+    ap = script_parser(__doc__)
     ap.add_argument("vtu", help="a solution.vtu of `hpcontact run` (or steps/step-NNNN.vtu)")
     ap.add_argument("--field", default="von_mises", help="point field to colour by (default %(default)s)")
     ap.add_argument("--scale", type=float, default=0.0,

@@ -11,7 +11,6 @@ penalty traction, Hertz and Shtayerman. The view is p/p0 in [-0.1, 1.3]; a curve
 is clipped, and the legend says so with the curve's extreme value (also printed after the PNG's
 name). Exit status 1 with a message for a run without `compare`.
 """
-import argparse
 import json
 import os
 import sys
@@ -22,7 +21,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hpc_run import read_columns, unit_text, units_of  # noqa: E402
+from hpc_run import read_columns, script_parser, unit_text, units_of  # noqa: E402
 
 LOW, HIGH = -0.1, 1.3
 
@@ -38,9 +37,7 @@ def clipped(label, values):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
+    ap = script_parser(__doc__)
     ap.add_argument("folder", metavar="RESULTS_DIR", help="the --out folder of `hpcontact run`")
     ap.add_argument("out", nargs="?", metavar="OUT.png",
                     help="the PNG to write (default RESULTS_DIR/pressure.png)")

@@ -15,7 +15,6 @@ length or stress in the input's own units, a percentage, seconds, a count).
 Writes FILE.png (default STUDY_DIR/<y>-vs-<x>.png) and prints its name. Exit status 1 with a
 message naming the file and column when a column is not in study.csv or has no numbers.
 """
-import argparse
 import csv
 import json
 import math
@@ -29,7 +28,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hpc_run import unit_text, units_of  # noqa: E402
+from hpc_run import script_parser, unit_text, units_of  # noqa: E402
 
 # Units of study.csv's columns, by the end of their name.
 UNITS = [(r"_percent$", "[%]"), (r"(^|\.)(wall_time_s|seconds)$", "[s]"),
@@ -55,9 +54,7 @@ def number(text):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
+    ap = script_parser(__doc__)
     ap.add_argument("study_dir", help="folder with study.csv (hpcontact study --out)")
     ap.add_argument("--x", required=True, help="column along x, e.g. dofs")
     ap.add_argument("--y", required=True, action="append",

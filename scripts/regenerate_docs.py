@@ -27,7 +27,6 @@ with --update-reference (the p-study's errors are measured against it).
 Exit status: 0 current (or rewritten), 1 stale (--check) or a command did not behave as the
 tutorial says, 2 a wrong command line or no program.
 """
-import argparse
 import csv
 import difflib
 import json
@@ -41,7 +40,7 @@ import tempfile
 SCRIPTS = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(SCRIPTS)
 sys.path.insert(0, SCRIPTS)
-from hpc_run import default_hpcontact, read_columns, read_vtu  # noqa: E402
+from hpc_run import default_hpcontact, read_columns, read_vtu, script_parser  # noqa: E402
 
 DOCUMENTS = ["docs/tutorial.md", "examples/tutorial/README.md", "docs/examples.md"]
 CASE = "examples/tutorial/punch.yaml"
@@ -395,9 +394,7 @@ def masked(text):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
+    ap = script_parser(__doc__)
     ap.add_argument("--check", action="store_true",
                     help="compare only: print what is stale and exit 1 if anything is")
     ap.add_argument("--hpcontact", default=default_hpcontact(),

@@ -9,7 +9,6 @@ Writes DIR/run/ (the run, with output.steps), DIR/path.csv (per converged arc-le
 load [N, whole ring], top displacement [mm], reaction [N, whole ring], gap at the axis [mm],
 contact zone ends [mm]) and DIR/path.png. Exit status 1 if the run fails.
 """
-import argparse
 import csv
 import os
 import subprocess
@@ -23,7 +22,7 @@ import numpy as np  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from hpc_run import default_hpcontact, read_columns, read_vtu  # noqa: E402
+from hpc_run import default_hpcontact, read_columns, read_vtu, script_parser  # noqa: E402
 
 CASE = os.path.join(ROOT, "examples", "ring-foundation", "ring.yaml")
 HALF_LOAD = 1035.0  # N on the half model (the case's traction resultant)
@@ -39,9 +38,7 @@ def zone_ends(x, gap):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
+    ap = script_parser(__doc__)
     ap.add_argument("--hpcontact", default=default_hpcontact(),
                     help="the hpcontact program (default %(default)s)")
     ap.add_argument("--out", required=True, metavar="DIR", help="output folder")

@@ -21,7 +21,6 @@ Exit status: 0 all rows converged; 1 a row failed (it is named, left empty in th
 plot, and the rest is written) or the study file is wrong (hpcontact's message names the file,
 line and key); 2 a wrong command line or no hpcontact program.
 """
-import argparse
 import json
 import math
 import os
@@ -34,7 +33,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hpc_run import default_hpcontact, read_columns, unit_text, units_of  # noqa: E402
+from hpc_run import default_hpcontact, read_columns, script_parser, unit_text, units_of  # noqa: E402
 
 CONTACT_KEYS = ["e_seed_hertz_percent", "e_seed_shtayerman_percent", "e_seed_reference_percent",
                 "e_L2_hertz_percent", "e_L2_shtayerman_percent", "e_L2_reference_percent",
@@ -177,9 +176,7 @@ def write_plot(path, study, rows):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
+    ap = script_parser(__doc__)
     ap.add_argument("study", help="study file (YAML; docs/study.md, e.g. examples/hertz/table-5-1.yaml)")
     ap.add_argument("--out", required=True, help="output folder (created; earlier study.csv, "
                     "study.json, table.md, pressure.png replaced)")
@@ -193,7 +190,7 @@ def main(argv=None):
         print(f"study_table: hpcontact program not found at {args.hpcontact} (--hpcontact)",
               file=sys.stderr)
         return 2
-    out = os.path.abspath(args.out)
+    out = args.out
     for name in ("table.md", "pressure.png"):
         if os.path.exists(os.path.join(out, name)):
             os.remove(os.path.join(out, name))

@@ -19,7 +19,6 @@ input's length units (summary.json's "units" beside B.vtu where it names them), 
 differences exceed --cap the colour bar shows an arrow and the legend the share of points
 clipped and the maximum.
 """
-import argparse
 import json
 import os
 import sys
@@ -32,7 +31,7 @@ import matplotlib.tri as mtri  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hpc_run import axis_label, read_vtu, units_of  # noqa: E402
+from hpc_run import axis_label, read_vtu, script_parser, units_of  # noqa: E402
 
 
 def read_solution(path):
@@ -47,9 +46,7 @@ def read_solution(path):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
+    ap = script_parser(__doc__)
     ap.add_argument("a", metavar="A.vtu", help="solution.vtu of the run to measure")
     ap.add_argument("b", metavar="B.vtu", help="solution.vtu of the better run (the reference)")
     ap.add_argument("--out", required=True, metavar="DIR", help="folder for the VTU and the PNG")
