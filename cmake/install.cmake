@@ -1,8 +1,9 @@
 # `cmake --install BUILD [--prefix PREFIX]`: what a user of the program and of the library needs.
 #   bin/hpcontact                                   the command line
-#   lib/<multiarch>/libhpcontact_<module>.a         one static library per module (README.md, Layout)
+#   lib/libhpcontact_<module>.a                     one static library per module (README.md, Layout);
+#                                                   lib/<multiarch>/ for the prefix /usr (GNUInstallDirs)
 #   include/hpcontact/<module>/*.hpp                their headers
-#   lib/<multiarch>/cmake/hpcontact/                the CMake package: find_package(hpcontact)
+#   lib/cmake/hpcontact/                            the CMake package: find_package(hpcontact)
 #                                                   gives hpcontact::hpcontact (all modules) and
 #                                                   hpcontact::<module>
 #   lib/python3/dist-packages/hpcontact*.so         the Python module (HPC_PYTHON_INSTALL_DIR)
