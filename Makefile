@@ -3,7 +3,7 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 PYTHON := /usr/bin/python3
 
-.PHONY: deps configure build run test test-all test-sanitize fuzz bench clean
+.PHONY: deps configure build program run test test-all test-sanitize fuzz bench install deb clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -14,14 +14,18 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
+# Only the command line (what `make run` needs): no tests, benchmarks, fuzz replays or Python module.
+program: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target hpcontact_app
+
 # The main job: the Hertz benchmark (p = 8, force control to F/2), and the Lamé cylinder.
-run: build
+run: program
 	@$(BUILD_DIR)/hpcontact run examples/hertz/p8.yaml --out results/hertz-p8
 	@$(PYTHON) scripts/plot_pressure.py results/hertz-p8
 	@$(PYTHON) scripts/plot_field.py results/hertz-p8/solution.vtu --xlim 0 4 --ylim -0.5 3 --out results/hertz-p8/von_mises.png
-	@$(PYTHON) scripts/study_table.py examples/hertz/table-5-1.yaml --hpcontact $(BUILD_DIR)/hpcontact --out results/table-5-1
+	@$(PYTHON) scripts/study_table.py examples/hertz/table-5-1.yaml --hpcontact $(BUILD_DIR)/hpcontact --out results/table-5-1 --jobs $(JOBS)
 	@$(BUILD_DIR)/hpcontact run examples/lame/thick-cylinder.yaml --out results/lame
-	@echo "results: results/hertz-p8/ (summary.json, pressure.png, von_mises.png, pressure.csv, contact.csv, solution.vtu, contact.vtu), results/table-5-1/ (table.md, table.csv, pressure.png: the seed's Table 5.1 rows), results/lame/ (summary.json, solution.vtu); open the .vtu files in ParaView"
+	@echo "results: results/hertz-p8/ (summary.json, pressure.png, von_mises.png, pressure.csv, contact.csv, solution.vtu, contact.vtu), results/table-5-1/ (table.md, study.csv, pressure.png: the dissertation's Table 5.1 rows), results/lame/ (summary.json, solution.vtu); open the .vtu files in ParaView"
 
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -LE slow
@@ -54,6 +58,15 @@ fuzz:
 
 bench: build
 	@bash bench/run.sh
+
+# Installs the program, library, CMake package, Python module, scripts and docs under PREFIX.
+PREFIX ?= /usr/local
+install: build
+	@cmake --install $(BUILD_DIR) --prefix $(PREFIX)
+
+# A Debian package of the installed tree (prefix /usr): build/hpcontact_<version>_<arch>.deb.
+deb: build
+	@cd $(BUILD_DIR) && cpack -G DEB
 
 clean:
 	rm -rf $(BUILD_DIR) build-sanitize build-fuzz results

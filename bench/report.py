@@ -192,13 +192,13 @@ def ratios_table(ratios):
 
 
 def contact_section(runs):
-    out = ["## Contact: analytic against the seed's finite-difference tangent", "",
+    out = ["## Contact: analytic against the dissertation's finite-difference tangent", "",
            "The Hertz examples p5 and p8 (examples/hertz), the whole contact solve (force control:",
            "six load steps, about 45 Newton iterations), discretisation outside the timed region.",
-           "`analytic` is the consistent tangent solved by CHOLMOD; `FD` is the seed's tangent",
-           "(eq. 3.36: central differences of the whole residual, one column per unknown, normals of",
+           "`analytic` is the consistent tangent solved by CHOLMOD; `FD` is the dissertation's tangent",
+           "(D. Franke's, docs/references.md; eq. 3.36: central differences of the whole residual, one column per unknown, normals of",
            "the undisturbed state) solved by UMFPACK LU; `full` runs Newton on all free unknowns, as",
-           "the seed did, `condensed` on vertex and edge modes only (our default).", "",
+           "the dissertation did, `condensed` on vertex and edge modes only (our default).", "",
            "| run | p | dofs | Newton iterations | time | spread |", "|---|---:|---:|---:|---:|---:|"]
     labels = {(0, 1): "analytic, condensed", (0, 0): "analytic, full", (1, 0): "FD, full"}
     for p in (5, 8):
@@ -224,7 +224,7 @@ def contact_section(runs):
             ratios.append(f"| p = {p}: FD solve / analytic solve, both full | "
                           f"{fmt_ratio(fd['real_time'], full['real_time'])} |")
         if fd and cond:
-            ratios.append(f"| p = {p}: FD solve (full, the seed's setting) / our default | "
+            ratios.append(f"| p = {p}: FD solve (full, the dissertation's setting) / our default | "
                           f"{fmt_ratio(fd['real_time'], cond['real_time'])} |")
         tf = central(runs, f"BM_HertzTangent/p:{p}/fd:1")
         ta = central(runs, f"BM_HertzTangent/p:{p}/fd:0")
@@ -253,7 +253,7 @@ def adapt_section(runs):
            "Whole loops on the Hertz examples, from reading the input to the last solve, without",
            "post-processing or files: the rp relocation loop of examples/hertz/rp5.yaml and rp8.yaml",
            "(secant steps, to 1e-10 of the body size) and the 8-step hp loop of examples/hertz/hp.yaml",
-           "with the refinement factor 0.17 (the example's) and the seed's 0.5. Each solve is a force-",
+           "with the refinement factor 0.17 (the example's) and the dissertation's 0.5. Each solve is a force-",
            "controlled Newton solve started from the previous mesh's load factor.", "",
            "| loop | final dofs | solves | Newton iterations | time | spread |",
            "|---|---:|---:|---:|---:|---:|"]

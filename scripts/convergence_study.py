@@ -67,7 +67,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 from energy_extrapolation import (ExtrapolationError, extrapolate_energy, fit_beta,  # noqa: E402
                                   relative_energy_error)
-from hpc_run import StudyError, check_labelled, csv_number, read_columns, run_case  # noqa: E402
+from hpc_run import (StudyError, check_labelled, csv_number, default_hpcontact,  # noqa: E402
+                     read_columns, run_case)
 
 HERTZ_MESH = os.path.join(ROOT, "scripts", "hertz_mesh.py")
 METHODS = ("h", "p", "rp", "hp")
@@ -769,8 +770,8 @@ def main(argv=None):
                                  formatter_class=argparse.RawDescriptionHelpFormatter,
                                  epilog=__doc__.split("\n\n", 1)[1])
     ap.add_argument("study", help="study file (see examples/hertz/convergence.yaml)")
-    ap.add_argument("--hpcontact", default=os.path.join(ROOT, "build", "hpcontact"),
-                    help="the hpcontact executable (default: build/hpcontact)")
+    ap.add_argument("--hpcontact", default=default_hpcontact(),
+                    help="the hpcontact program (default %(default)s)")
     ap.add_argument("--out", required=True, help="output folder")
     ap.add_argument("--quick", action="store_true", help="the study's reduced sweeps (tests)")
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time (default 2)")

@@ -141,15 +141,22 @@ def fit_beta(dofs, errors):
     return fit_power_law(dofs, errors)[0]
 
 
-def main(argv):
-    if len(argv) != 6:
-        sys.exit(__doc__)
-    values = [float(v) for v in argv]
-    dofs, energies = values[0::2], values[1::2]
+def main(argv=None):
+    import argparse
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog=__doc__.split("\n\n", 1)[1])
+    for i in range(3):
+        ap.add_argument(f"N{i}", type=float, help=f"degrees of freedom of discretisation {i}"
+                        + (" (N0 < N1 < N2)" if i == 0 else ""))
+        ap.add_argument(f"U{i}", type=float, help="its strain energy")
+    args = ap.parse_args(argv)
+    dofs = [args.N0, args.N1, args.N2]
+    energies = [args.U0, args.U1, args.U2]
     u_ex = extrapolate_energy(dofs, energies)
     print(f"U_ex = {u_ex!r}  (beta = {implied_beta(dofs, energies, u_ex):.4f}; "
           f"e_2 = {relative_energy_error(energies[2], u_ex):.6g} %)")
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    sys.exit(main())

@@ -189,7 +189,9 @@ def refined(nx, ny, zone, fine):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("kind", choices=["uniform", "refined", "graded"])
+    ap.add_argument("kind", choices=["uniform", "refined", "graded"],
+                    help="uniform: equal arcs and layers; refined: fine towards the contact; "
+                         "graded: geometric towards --at")
     ap.add_argument("--cells", type=int, nargs=2, default=[18, 18], metavar=("NX", "NY"),
                     help="elements along the contact arc and along the symmetry line")
     ap.add_argument("--at", type=float, default=1.93, help="graded: the point graded towards (Γ*)")
@@ -199,14 +201,16 @@ def main():
                     help="refined: extent in x of the finely meshed contact zone (b = 1.965)")
     ap.add_argument("--fine", type=float, default=0.6,
                     help="refined: fraction of the elements along the arc inside the zone")
-    ap.add_argument("--method", choices=["p", "h"], default="p")
-    ap.add_argument("--degree", type=int, default=8)
-    ap.add_argument("--element", default="Q8")
-    ap.add_argument("--case", default="hertz-mesh")
+    ap.add_argument("--method", choices=["p", "h"], default="p",
+                    help="discretization.method of the file (default %(default)s)")
+    ap.add_argument("--degree", type=int, default=8, help="p-version degree (default %(default)s)")
+    ap.add_argument("--element", default="Q8", choices=["Q4", "Q8", "Q9"],
+                    help="h-version element (default %(default)s)")
+    ap.add_argument("--case", default="hertz-mesh", help="the file's case name (default %(default)s)")
     ap.add_argument("--enforcement", choices=["augmented-lagrangian", "penalty"],
                     default="augmented-lagrangian",
                     help="the contact's enforcement: exact (the program's default, no penalty "
-                         "written) or the seed's penalty eps_N = 2.1e8 = 1000 E")
+                         "written) or the dissertation's penalty eps_N = 2.1e8 = 1000 E")
     ap.add_argument("--reference", help="compare.reference CSV to name in the file")
     ap.add_argument("--contact-extent", type=float, default=4.0,
                     help="arc edges starting below this x are contact edges")

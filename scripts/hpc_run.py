@@ -1,10 +1,77 @@
 """What the study and plot scripts share: running `hpcontact run` on a case, and reading and
 writing the numbers it leaves behind. Standard library only, but for read_vtu (numpy)."""
+import argparse
 import csv
 import json
 import os
+import shutil
 import subprocess
 import xml.etree.ElementTree as ET
+
+SCRIPTS = os.path.dirname(os.path.abspath(__file__))
+
+
+def script_parser(doc):
+    """The command line of a script whose docstring is its manual: the first paragraph is the
+    description, the rest the epilog of --help, as written."""
+    head, _, rest = doc.partition("\n\n")
+    return argparse.ArgumentParser(description=head, epilog=rest or None,
+                                   formatter_class=argparse.RawDescriptionHelpFormatter)
+
+
+def default_hpcontact():
+    """The hpcontact program a script starts unless told otherwise: build/hpcontact of the
+    repository the script is in; for a script installed in <prefix>/share/hpcontact/scripts,
+    <prefix>/bin/hpcontact; else hpcontact on PATH (else the first, for the error message)."""
+    built = os.path.join(os.path.dirname(SCRIPTS), "build", "hpcontact")
+    installed = os.path.normpath(os.path.join(SCRIPTS, "..", "..", "..", "bin", "hpcontact"))
+    for path in (built, installed):
+        if os.path.isfile(path) and os.access(path, os.X_OK):
+            return path
+    return shutil.which("hpcontact") or built
+
+
+# Quantities of the plots, as powers of the input's force F and length L (a 2D model: forces
+# and energies per unit thickness).
+QUANTITIES = {"length": (0, 1), "displacement": (0, 1), "stress": (1, -2), "pressure": (1, -2),
+              "force": (1, 0), "force per thickness": (1, -1), "energy per thickness": (1, 0),
+              "penalty": (1, -3), "strain": (0, 0)}
+
+
+def units_of(summary):
+    """The units a run names: summary.json's "units" (a mapping {"length": "mm", "force": "N"},
+    or one string such as "N, mm"), else None (the input has no unit system: its numbers are in
+    whatever consistent units the user chose)."""
+    units = (summary or {}).get("units")
+    return units if isinstance(units, (dict, str)) and units else None
+
+
+def unit_text(quantity, units=None):
+    """How a plot names the unit of `quantity` (a key of QUANTITIES): "[N/mm²]" from a units
+    mapping with force and length, "(stress, units: N, mm)" from a units string, else
+    "(stress, input units)"; strain is "[-]"."""
+    force, length = QUANTITIES[quantity]
+    if force == 0 and length == 0:
+        return "[-]"
+    if isinstance(units, dict) and "length" in units and (force == 0 or "force" in units):
+        if quantity == "energy per thickness":
+            return f"[{units['force']}·{units['length']}/{units['length']}]"
+        power = {1: "", 2: "²", 3: "³"}
+        text = units["force"] if force else ""
+        if length > 0:
+            text = (f"{text}·" if text else "") + units["length"] + power[length]
+        elif length < 0:
+            text += f"/{units['length']}{power[-length]}"
+        return f"[{text}]"
+    if isinstance(units, str):
+        return f"({quantity}, units: {units})"
+    return f"({quantity}, input units)"
+
+
+def axis_label(name, quantity, units=None):
+    """An axis or colour-bar label: the name and its unit, e.g. "X [mm]" or
+    "X (length, input units)"."""
+    return f"{name} {unit_text(quantity, units)}"
 
 
 class StudyError(Exception):

@@ -52,14 +52,19 @@ def solve(hpcontact, case, out):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--hpcontact", default=str(ROOT / "build" / "hpcontact"))
-    ap.add_argument("--degree", type=int, default=8)
-    ap.add_argument("--layers", type=int, default=4)
-    ap.add_argument("--factor", type=float, default=0.5)
+    ap.add_argument("--hpcontact", default=str(ROOT / "build" / "hpcontact"),
+                    help="the hpcontact program (default %(default)s)")
+    ap.add_argument("--degree", type=int, default=8, help="degree of every element (default %(default)s)")
+    ap.add_argument("--layers", type=int, default=4,
+                    help="graded layers on each side of Γ* (default %(default)s)")
+    ap.add_argument("--factor", type=float, default=0.5,
+                    help="size ratio per graded layer (default %(default)s)")
     ap.add_argument("--start", type=float, default=1.95, help="first guess of Γ*")
     ap.add_argument("--tol", type=float, default=1e-7, help="|Γ* - node| / R to stop")
-    ap.add_argument("--max-iterations", type=int, default=20)
-    ap.add_argument("--out", default=str(ROOT / "examples" / "hertz"))
+    ap.add_argument("--max-iterations", type=int, default=20,
+                    help="mesh regenerations at most (default %(default)s)")
+    ap.add_argument("--out", default=str(ROOT / "examples" / "hertz"),
+                    help="folder of reference.yaml and reference-pressure.csv (default %(default)s)")
     args = ap.parse_args()
     out = pathlib.Path(args.out)
     with tempfile.TemporaryDirectory() as tmp:

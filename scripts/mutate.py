@@ -323,9 +323,12 @@ def restore_leftovers(backup_dir):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog=__doc__.split("\n\n", 1)[1])
     ap.add_argument("--build", default=os.path.join(ROOT, "build"), help="configured build folder")
-    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2,
+                    help="parallel build and test jobs (default: the cores, %(default)s)")
     ap.add_argument("--only", help="comma-separated mutation ids")
     ap.add_argument("--quick", action="store_true", help="leave out the cli and python tests")
     ap.add_argument("--full", action="store_true",

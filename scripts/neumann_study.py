@@ -60,7 +60,7 @@ ROOT = SCRIPTS.parent
 sys.path.insert(0, str(SCRIPTS))
 from energy_extrapolation import (ExtrapolationError, extrapolate_energy, fit_beta,  # noqa: E402
                                   relative_energy_error)
-from hpc_run import run_case  # noqa: E402
+from hpc_run import default_hpcontact, run_case  # noqa: E402
 
 SHAPES = ["constant", "linear", "bspline1", "bspline2", "hermite"]
 SHAPE_NAMES = {"constant": "rectangular", "linear": "triangular",
@@ -343,7 +343,7 @@ def write_fine_mesh(path, cells=(6, 6), fine=0.5):
     arc = [e for e, x in zip(bot, bottom) if x < zone - 1e-9]
     es = lambda edges: ", ".join(f"[{a}, {b}]" for a, b in edges)  # noqa: E731
     lines = [
-        "# Quarter circle with a triangular load instead of contact (seed §5.2.4.3.1, CASES.md",
+        "# Quarter circle with a triangular load instead of contact (seed §5.2.4.3.1, docs/cases.md",
         f"# §4), the {len(quads)}-element mesh: as quarter-circle.yaml (same geometry, material,",
         "# supports and load: vertical triangular traction on the arc x in [0, 2.48], resultant",
         "# 35000 N), on a finer mesh in place of the seed's 147-element one (its figure is lost).",
@@ -372,7 +372,8 @@ def write_fine_mesh(path, cells=(6, 6), fine=0.5):
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--hpcontact", default=str(ROOT / "build" / "hpcontact"))
+    ap.add_argument("--hpcontact", default=default_hpcontact(),
+                    help="the hpcontact program (default %(default)s)")
     ap.add_argument("--study", action="append", choices=["block", "plate-hole", "quarter-circle"],
                     help="study to run (repeatable; default all three)")
     ap.add_argument("--quick", action="store_true",
@@ -381,7 +382,8 @@ def main():
     ap.add_argument("--all-shapes", action="store_true",
                     help="block: run all five shapes, not only rectangular and triangular")
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time (default 2)")
-    ap.add_argument("--out", default=str(ROOT / "results" / "neumann"))
+    ap.add_argument("--out", default=str(ROOT / "results" / "neumann"),
+                    help="output folder, one subfolder per study (default %(default)s)")
     ap.add_argument("--write-fine-mesh", metavar="PATH",
                     help="write the 36-element quarter-circle problem file to PATH and exit")
     args = ap.parse_args()

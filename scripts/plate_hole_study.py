@@ -58,8 +58,10 @@ def fit_slope(xs, ys):
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--hpcontact", default=str(ROOT / "build" / "hpcontact"))
-    ap.add_argument("--case", default=str(ROOT / "examples" / "plate-hole" / "contact.yaml"))
+    ap.add_argument("--hpcontact", default=str(ROOT / "build" / "hpcontact"),
+                    help="the hpcontact program (default %(default)s)")
+    ap.add_argument("--case", default=str(ROOT / "examples" / "plate-hole" / "contact.yaml"),
+                    help="problem file swept over the degrees (default %(default)s)")
     ap.add_argument("--degrees", type=degree_list, default=list(range(1, 13)),
                     help="degrees to run, '1-12' or '2,3,4' (default 1-12)")
     ap.add_argument("--reference-degree", type=int, default=14,
@@ -68,7 +70,8 @@ def main():
                     help="problem file of the reference run (default: --case)")
     ap.add_argument("--fit", type=degree_list, default=list(range(2, 7)),
                     help="degrees of the slope fits (default 2-6)")
-    ap.add_argument("--out", default=str(ROOT / "results" / "plate-hole"))
+    ap.add_argument("--out", default=str(ROOT / "results" / "plate-hole"),
+                    help="output folder (default %(default)s)")
     args = ap.parse_args()
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)

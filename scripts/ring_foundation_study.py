@@ -9,7 +9,6 @@ Writes DIR/run/ (the run, with output.steps), DIR/path.csv (per converged arc-le
 load [N, whole ring], top displacement [mm], reaction [N, whole ring], gap at the axis [mm],
 contact zone ends [mm]) and DIR/path.png. Exit status 1 if the run fails.
 """
-import argparse
 import csv
 import os
 import subprocess
@@ -23,7 +22,7 @@ import numpy as np  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from hpc_run import read_columns, read_vtu  # noqa: E402
+from hpc_run import default_hpcontact, read_columns, read_vtu, script_parser  # noqa: E402
 
 CASE = os.path.join(ROOT, "examples", "ring-foundation", "ring.yaml")
 HALF_LOAD = 1035.0  # N on the half model (the case's traction resultant)
@@ -39,10 +38,12 @@ def zone_ends(x, gap):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--hpcontact", default=os.path.join(ROOT, "build", "hpcontact"))
-    ap.add_argument("--out", required=True)
-    ap.add_argument("--set", action="append", default=[])
+    ap = script_parser(__doc__)
+    ap.add_argument("--hpcontact", default=default_hpcontact(),
+                    help="the hpcontact program (default %(default)s)")
+    ap.add_argument("--out", required=True, metavar="DIR", help="output folder")
+    ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                    help="an input override of the run (repeatable)")
     args = ap.parse_args(argv)
     run_dir = os.path.join(args.out, "run")
     cmd = [args.hpcontact, "run", CASE, "--out", run_dir, "-q", "--set", "output.steps=true"]

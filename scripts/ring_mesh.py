@@ -1,5 +1,5 @@
-#!/usr/bin/env python3
-"""Half-ring meshes (x >= 0) for the stiff axle in an elastic ring (seed §5.4, CASES §6).
+#!/usr/bin/python3
+"""Half-ring meshes (x >= 0) for the stiff axle in an elastic ring (seed §5.4, docs/cases.md §6).
 
 The ring r_in <= r <= r_out around the origin is cut at theta = -90° and 90° (the symmetry line
 x = 0); elements are annular sectors with exact arcs. `angles` are the element boundaries in

@@ -1,122 +1,46 @@
 #!/usr/bin/python3
-"""Runs a study (a table of Hertz runs, e.g. the seed's Table 5.1) and tabulates and plots it.
+"""Runs a study with `hpcontact study` and tabulates it like the seed's Table 5.1 (Hertz rows).
 
-usage: study_table.py STUDY.yaml [--hpcontact PATH] --out DIR [--jobs N] [--vtu]
+usage: study_table.py STUDY.yaml --out DIR [--hpcontact PATH] [--jobs N]
 
-STUDY.yaml lists the rows: label, case (a problem file relative to the study file), optional
-`set` overrides and the seed's values for the side-by-side columns; its format is described in
-examples/hertz/table-5-1.yaml. Every row is run with `hpcontact run CASE --out DIR/runs/NN-NAME
--q` (N at a time, default 2; --vtu keeps the .vtu output, off by default), a progress line is
-printed as each row finishes, and the script writes
+STUDY.yaml is a study file as `hpcontact study` reads it (docs/study.md: rows, sweeps, zip,
+seed values); this script runs `hpcontact study STUDY.yaml --out DIR --jobs N` (its progress
+lines printed as they come) and, from DIR/study.json, writes
 
-  DIR/table.csv    one row per run: summary.json values as written there (full precision) and
-                   the seed's values; columns in CSV_COLUMNS below
-  DIR/table.md     the same as a Markdown table, rounded, with a legend
+  DIR/study.csv, DIR/study.json, DIR/runs/NN-label/   as `hpcontact study` writes them
+  DIR/table.md     the rows as a Markdown table: DOF, wall time, the pressure errors of
+                   summary.json contact (e_seed, e_L2 against Hertz, Shtayerman, the reference
+                   curve; the penalty traction's), the half width, and a row's seed values
+                   (seed: {dofs, time_s, vs_hertz, vs_shtayerman}) beside them
   DIR/pressure.png p/p0 over x/b (b, p0: Hertz) of every row's pressure_from_stress against
                    Hertz, Shtayerman and the reference curve, full range [0, 1.5] and zoomed on
-                   the end of the contact zone x/b in [0.85, 1.1] (seed Fig. 5.11-5.14)
+                   the end of the contact zone x/b in [0.85, 1.1] (seed Fig. 5.11-5.14); rows
+                   without a contact[].compare section are left out of the plot
 
-A row whose run fails is reported (its folder, the program's last message), left empty in the
-table and plot, and makes the script exit with status 1 after writing what it has.
+Exit status: 0 all rows converged; 1 a row failed (it is named, left empty in the table and the
+plot, and the rest is written) or the study file is wrong (hpcontact's message names the file,
+line and key); 2 a wrong command line or no hpcontact program.
 """
-import argparse
-import concurrent.futures
-import csv
 import json
 import math
 import os
-import re
+import subprocess
 import sys
-import threading
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from hpc_run import StudyError, check_labelled, csv_number, read_columns, run_case  # noqa: E402
-RUN_KEYS = {"label", "case", "set", "seed"}
-SEED_KEYS = {"dofs", "time_s", "vs_hertz", "vs_shtayerman"}
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from hpc_run import default_hpcontact, read_columns, script_parser, unit_text, units_of  # noqa: E402
+
 CONTACT_KEYS = ["e_seed_hertz_percent", "e_seed_shtayerman_percent", "e_seed_reference_percent",
                 "e_L2_hertz_percent", "e_L2_shtayerman_percent", "e_L2_reference_percent",
-                "half_width", "p_max"]
+                "half_width"]
 # The same measures of the penalty traction (summary.json contact.penalty_traction).
 PENALTY_KEYS = ["e_seed_hertz_percent", "e_seed_shtayerman_percent", "e_L2_reference_percent"]
-CSV_COLUMNS = (["label", "case", "run_dir", "converged", "dofs", "wall_time_s", "rp_iterations"]
-               + CONTACT_KEYS + ["penalty_" + k for k in PENALTY_KEYS]
-               + ["seed_dofs", "seed_time_s", "seed_vs_hertz", "seed_vs_shtayerman"])
-
-
-def load_study(path):
-    """The study as a dict, checked; case paths made absolute. PyYAML if installed, else JSON
-    (the study files are JSON-compatible flow YAML with whole-line # comments)."""
-    with open(path) as f:
-        text = f.read()
-    try:
-        import yaml
-    except ImportError:
-        yaml = None
-    try:
-        if yaml is not None:
-            data = yaml.safe_load(text)
-        else:
-            data = json.loads("\n".join("" if line.lstrip().startswith("#") else line
-                                        for line in text.splitlines()))
-    except Exception as e:  # noqa: BLE001 - any parse error is reported with the file name
-        raise StudyError(f"{path}: cannot parse the study file: {e}")
-    where = lambda s: f"{path}: {s}"  # noqa: E731
-    if not isinstance(data, dict):
-        raise StudyError(where("a study file is a mapping with keys study, title, runs"))
-    unknown = set(data) - {"study", "title", "runs"}
-    if unknown:
-        raise StudyError(where(f"unknown key(s) {', '.join(sorted(unknown))}"))
-    if not isinstance(data.get("study"), str):
-        raise StudyError(where("'study' (the study's name, a string) is required"))
-    runs = data.get("runs")
-    if not isinstance(runs, list) or not runs:
-        raise StudyError(where("'runs' must be a non-empty list"))
-    folder = os.path.dirname(os.path.abspath(path))
-    check_labelled(runs, "runs", RUN_KEYS, "each run is a mapping with label, case, set, seed", where)
-    for i, run in enumerate(runs):
-        at = lambda s: where(f"runs[{i}]: {s}")  # noqa: E731
-        if not isinstance(run.get("case"), str) or not run["case"]:
-            raise StudyError(at("'case' (a string) is required"))
-        run["case_path"] = os.path.normpath(os.path.join(folder, run["case"]))
-        if not os.path.isfile(run["case_path"]):
-            raise StudyError(at(f"case file {run['case_path']} does not exist"))
-        sets = run.setdefault("set", [])
-        if not isinstance(sets, list) or not all(isinstance(s, str) and "=" in s for s in sets):
-            raise StudyError(at("'set' is a list of \"key=value\" strings"))
-        seed = run.setdefault("seed", {})
-        if not isinstance(seed, dict) or set(seed) - SEED_KEYS:
-            raise StudyError(at(f"'seed' is a mapping with keys among {sorted(SEED_KEYS)}"))
-        for k, v in seed.items():
-            if not isinstance(v, (int, float)) or isinstance(v, bool):
-                raise StudyError(at(f"seed.{k} must be a number"))
-    return data
-
-
-def run_one(hpcontact, run, out_dir, vtu):
-    return run_case(hpcontact, run["case_path"], out_dir, run["set"], vtu)
-
-
-def csv_row(run, result):
-    s = result.get("summary") or {}
-    c = s.get("contact", {})
-    seed = run["seed"]
-    row = {"label": run["label"], "case": run["case"], "run_dir": result["run_dir"],
-           "converged": csv_number(s.get("converged")) if s else "failed",
-           "dofs": csv_number(s.get("dofs")), "wall_time_s": csv_number(s.get("wall_time_s"))}
-    row["rp_iterations"] = csv_number(s.get("adapt", {}).get("iterations"))
-    row.update({k: csv_number(c.get(k)) for k in CONTACT_KEYS})
-    pen = c.get("penalty_traction", {})
-    row.update({"penalty_" + k: csv_number(pen.get(k)) for k in PENALTY_KEYS})
-    row.update({"seed_dofs": csv_number(seed.get("dofs")), "seed_time_s": csv_number(seed.get("time_s")),
-                "seed_vs_hertz": csv_number(seed.get("vs_hertz")),
-                "seed_vs_shtayerman": csv_number(seed.get("vs_shtayerman"))})
-    return row
+SEED_KEYS = ["dofs", "time_s", "vs_hertz", "vs_shtayerman"]
 
 
 def fmt(v, digits):
@@ -133,60 +57,65 @@ def fmt_time(t):
     return f"{t:.3f}" if t < 1 else f"{t:.2f}" if t < 100 else f"{t:.0f}"
 
 
-def write_markdown(path, study, runs, results, jobs):
+def write_markdown(path, study, rows, jobs):
+    """table.md: one line per row of study.json, the seed's columns where any row has them."""
+    seed_keys = [k for k in SEED_KEYS if any(k in r.get("seed", {}) for r in rows)]
+    first = next((r["summary"] for r in rows if r.get("summary")), None)
+    length = unit_text("length", units_of(first))
     head = ["discretisation", "DOF", "time [s]", "e_seed vs Hertz [%]",
             "e_seed vs Shtayerman [%]", "e_seed vs reference [%]", "e_L2 vs Hertz [%]",
-            "e_L2 vs Shtayerman [%]", "e_L2 vs reference [%]", "half width [mm]",
+            "e_L2 vs Shtayerman [%]", "e_L2 vs reference [%]", f"half width {length}",
             "penalty: e_seed vs Hertz [%]", "penalty: e_seed vs Shtayerman [%]",
-            "penalty: e_L2 vs reference [%]", "seed DOF", "seed time [s]", "seed vs Hertz [%]", "seed vs Shtayerman [%]"]
+            "penalty: e_L2 vs reference [%]"]
+    head += [{"dofs": "seed DOF", "time_s": "seed time [s]", "vs_hertz": "seed vs Hertz [%]",
+              "vs_shtayerman": "seed vs Shtayerman [%]"}[k] for k in seed_keys]
     lines = []
     if study.get("title"):
         lines += [f"**{study['title']}**", ""]
     lines += ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    first = None
-    for run, res in zip(runs, results):
-        s, seed = res.get("summary"), run["seed"]
-        if s is None:
-            cells = [run["label"], "failed"] + ["-"] * 11
+    for row in rows:
+        s, seed = row.get("summary"), row.get("seed", {})
+        if not row.get("converged") or s is None:
+            cells = [row["label"], "failed"] + ["-"] * 11
         else:
-            first = first or s
             c = s.get("contact", {})
-            cells = [run["label"], fmt(s.get("dofs"), 0), fmt_time(s.get("wall_time_s"))]
+            cells = [row["label"], fmt(s.get("dofs"), 0), fmt_time(s.get("wall_time_s"))]
             cells += [fmt(c.get(k), 4) for k in CONTACT_KEYS[:3]]
             cells += [fmt(c.get(k), 2) for k in CONTACT_KEYS[3:6]]
             cells += [fmt(c.get("half_width"), 4)]
             pen = c.get("penalty_traction", {})
             cells += [fmt(pen.get(k), 4) for k in PENALTY_KEYS[:2]] + [fmt(pen.get(PENALTY_KEYS[2]), 2)]
-        cells += [fmt(seed.get("dofs"), 0), fmt(seed.get("time_s"), 0),
-                  fmt(seed.get("vs_hertz"), 4), fmt(seed.get("vs_shtayerman"), 4)]
+        cells += [fmt(seed.get(k), 0 if k in ("dofs", "time_s") else 4) for k in seed_keys]
         lines.append("| " + " | ".join(cells) + " |")
     lines.append("")
-    legend = ("e_seed: the squared measure that reads like the seed's Table 5.1, e_L2: relative "
-              "L2 error of the pressure from stresses over [0, 1.5 b] (CASES.md §1); reference: "
-              "our overkill solution of the same model (examples/hertz/reference.yaml). "
-              "penalty: the same measures of the penalty traction eps_N <-g_N> instead of the "
-              "pressure from stresses.")
+    legend = ("e_seed: the squared measure that reads like the seed's Table 5.1 (the dissertation "
+              "of docs/references.md), e_L2: relative L2 error of the pressure from stresses over "
+              "[0, 1.5 b] (docs/theory.md §10); reference: the curve compare.reference names "
+              "(for Hertz our overkill solution, examples/hertz/reference.yaml). penalty: the same "
+              "measures of the penalty traction instead of the pressure from stresses.")
     if first is not None:
         c = first.get("contact", {})
         if "hertz_half_width" in c:
-            legend += (f" Hertz b = {c['hertz_half_width']:.4f} mm, p0 = "
-                       f"{c['hertz_peak_pressure']:.1f} N/mm²; Shtayerman b = "
-                       f"{c.get('shtayerman_half_width', float('nan')):.4f} mm.")
+            legend += (f" Hertz b = {c['hertz_half_width']:.4f} {length}, p0 = "
+                       f"{c['hertz_peak_pressure']:.1f} {unit_text('pressure', units_of(first))}; "
+                       f"Shtayerman b = {c.get('shtayerman_half_width', float('nan')):.4f}.")
     legend += (f" Our times: whole run (wall clock, summary.json), {jobs} run(s) at a time on "
-               f"{os.cpu_count()} cores; the seed's: a 2.4 GHz Core 2.")
+               f"{os.cpu_count()} cores")
+    legend += "; the seed's: a 2.4 GHz Core 2." if "time_s" in seed_keys else "."
     lines += [legend, ""]
     with open(path, "w") as f:
         f.write("\n".join(lines))
 
 
-def write_plot(path, study, runs, results):
+def write_plot(path, study, rows):
+    """pressure.png; False if no row has a pressure comparison to plot."""
     fig, (ax, az) = plt.subplots(1, 2, figsize=(13, 5.2), gridspec_kw={"width_ratios": [1.6, 1]})
     closed, b, p0, ref = None, None, None, None
-    colours = plt.get_cmap("tab10" if len(runs) <= 10 else "tab20")
+    colours = plt.get_cmap("tab10" if len(rows) <= 10 else "tab20")
     curves = []
-    for i, (run, res) in enumerate(zip(runs, results)):
-        s = res.get("summary")
-        pressure = os.path.join(res["run_dir_abs"], "pressure.csv")
+    for i, row in enumerate(rows):
+        s = row.get("summary")
+        pressure = os.path.join(row["run_dir"], "pressure.csv")
         if s is None or "hertz_half_width" not in s.get("contact", {}) or \
                 not os.path.isfile(pressure):
             continue
@@ -195,13 +124,13 @@ def write_plot(path, study, runs, results):
         cols = read_columns(pressure)
         closed = closed or cols
         if ref is None and c.get("reference"):
-            rpath = os.path.join(os.path.dirname(run["case_path"]), c["reference"])
+            rpath = os.path.join(os.path.dirname(row["case"]), c["reference"])
             if os.path.isfile(rpath):
                 rc = read_columns(rpath)
                 ref = (rc["x"], rc.get("pressure_from_stress", rc.get("pressure")))
         xb = [x / b for x in cols["x"]]
         pb = [p / p0 for p in cols["pressure_from_stress"]]
-        curves.append((run["label"], xb, pb, colours(i)))
+        curves.append((row["label"], xb, pb, colours(i)))
     if closed is None:
         plt.close(fig)
         return False
@@ -213,24 +142,29 @@ def write_plot(path, study, runs, results):
         lines.append(("reference (overkill)", [x / b for x in ref[0]], [p / p0 for p in ref[1]],
                       dict(color="0.45", ls="-", lw=2.4, alpha=0.6)))
     lines += [(label, x, p, dict(color=col, lw=1.1)) for label, x, p, col in curves]
-    lo, hi = math.inf, -math.inf
+    low, high = -0.15, 1.2
+    lo, hi, clipped = math.inf, -math.inf, False
     for label, x, p, style in lines:
+        shown = [v for u, v in zip(x, p) if 0 <= u <= 1.5]
+        clipped = clipped or any(v < low or v > high for v in shown)
         ax.plot(x, p, label=label, **style)
         az.plot(x, p, **style)
         inside = [v for u, v in zip(x, p) if 0.85 <= u <= 1.1]
         if inside:
             lo, hi = min(lo, min(inside)), max(hi, max(inside))
+    if clipped:  # say so where the curves are named
+        ax.plot([], [], " ", label=f"curves clipped to {low} ≤ p/p0 ≤ {high}")
     ax.set_xlim(0, 1.5)
-    ax.set_ylim(-0.15, 1.2)
+    ax.set_ylim(low, high)
     az.set_xlim(0.85, 1.1)
     if lo < hi:
         pad = 0.05 * (hi - lo)
-        az.set_ylim(max(lo - pad, -0.6), min(hi + pad, 1.2))
+        az.set_ylim(max(lo - pad, -0.6), min(hi + pad, high))
     ax.axvspan(0.85, 1.1, color="0.9", zorder=0)
     for a, title in ((ax, study.get("title") or study["study"]),
                      (az, "end of the contact zone")):
-        a.set_xlabel("x / b (Hertz)")
-        a.set_ylabel("p / p0 (Hertz)")
+        a.set_xlabel("x / b (b: Hertz half width) [-]")
+        a.set_ylabel("p / p0 (p0: Hertz peak pressure) [-]")
         a.axhline(0, color="0.6", lw=0.6)
         a.grid(alpha=0.3)
         a.set_title(title, fontsize=10)
@@ -241,71 +175,38 @@ def write_plot(path, study, runs, results):
     return True
 
 
-def slug(text):
-    return re.sub(r"[^A-Za-z0-9.+-]+", "-", text).strip("-") or "run"
-
-
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
-    ap.add_argument("study", help="study file (YAML; see examples/hertz/table-5-1.yaml)")
-    ap.add_argument("--hpcontact", default=os.path.join(ROOT, "build", "hpcontact"),
-                    help="the hpcontact executable (default: build/hpcontact)")
-    ap.add_argument("--out", required=True, help="output folder")
+    ap = script_parser(__doc__)
+    ap.add_argument("study", help="study file (YAML; docs/study.md, e.g. examples/hertz/table-5-1.yaml)")
+    ap.add_argument("--out", required=True, help="output folder (created; earlier study.csv, "
+                    "study.json, table.md, pressure.png replaced)")
+    ap.add_argument("--hpcontact", default=default_hpcontact(),
+                    help="the hpcontact program (default: build/hpcontact of this repository, "
+                    "<prefix>/bin/hpcontact of an installed script, else hpcontact on PATH; now "
+                    "%(default)s)")
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time (default 2)")
-    ap.add_argument("--vtu", action="store_true", help="keep each run's .vtu output")
     args = ap.parse_args(argv)
-    try:
-        study = load_study(args.study)
-    except (OSError, StudyError) as e:
-        print(f"study_table: {e}", file=sys.stderr)
-        return 2
     if not os.path.isfile(args.hpcontact) or not os.access(args.hpcontact, os.X_OK):
-        print(f"study_table: hpcontact executable not found at {args.hpcontact}", file=sys.stderr)
+        print(f"study_table: hpcontact program not found at {args.hpcontact} (--hpcontact)",
+              file=sys.stderr)
         return 2
-    runs = study["runs"]
-    os.makedirs(os.path.join(args.out, "runs"), exist_ok=True)
-    results = []
-    for i, run in enumerate(runs):
-        name = f"{i + 1:02d}-{slug(os.path.splitext(os.path.basename(run['case']))[0])}"
-        results.append({"run_dir": os.path.join("runs", name),
-                        "run_dir_abs": os.path.join(args.out, "runs", name)})
-    n, done, lock = len(runs), [0], threading.Lock()
-    print(f"study {study['study']}: {n} run(s), {args.jobs} at a time, {args.hpcontact}",
-          flush=True)
-
-    def work(i):
-        summary, error = run_one(args.hpcontact, runs[i], results[i]["run_dir_abs"], args.vtu)
-        results[i].update(summary=summary, error=error)
-        with lock:
-            done[0] += 1
-            head = f"[{done[0]}/{n}] {runs[i]['label']}"
-            if error:
-                print(f"{head}: FAILED ({runs[i]['case']}, {results[i]['run_dir_abs']}): "
-                      f"{error}", flush=True)
-            else:
-                c = summary.get("contact", {})
-                extra = "".join(f", {name} {c[k]:.4g} %" for name, k in
-                                (("e_seed vs Shtayerman", "e_seed_shtayerman_percent"),
-                                 ("e_L2 vs reference", "e_L2_reference_percent")) if k in c)
-                conv = "" if summary.get("converged", True) else ", NOT converged"
-                print(f"{head}: {summary.get('dofs')} DOF, {summary.get('wall_time_s', 0):.2f} s"
-                      f"{extra}{conv}", flush=True)
-
-    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-        list(pool.map(work, range(n)))
-
-    with open(os.path.join(args.out, "table.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=CSV_COLUMNS)
-        w.writeheader()
-        for run, res in zip(runs, results):
-            w.writerow(csv_row(run, res))
-    write_markdown(os.path.join(args.out, "table.md"), study, runs, results, args.jobs)
-    plotted = write_plot(os.path.join(args.out, "pressure.png"), study, runs, results)
-    print(f"wrote {os.path.join(args.out, 'table.csv')}, table.md"
-          + (", pressure.png" if plotted else " (no pressure curves to plot)"), flush=True)
-    failed = [r["label"] for r, res in zip(runs, results) if res.get("error")]
+    out = args.out
+    for name in ("table.md", "pressure.png"):
+        if os.path.exists(os.path.join(out, name)):
+            os.remove(os.path.join(out, name))
+    code = subprocess.run([args.hpcontact, "study", args.study, "--out", out,
+                           "--jobs", str(max(1, args.jobs))]).returncode
+    summary = os.path.join(out, "study.json")
+    if code not in (0, 1) or not os.path.isfile(summary):
+        return code if code else 1
+    with open(summary) as f:
+        study = json.load(f)
+    rows = study["runs"]
+    write_markdown(os.path.join(out, "table.md"), study, rows, args.jobs)
+    plotted = write_plot(os.path.join(out, "pressure.png"), study, rows)
+    print(f"wrote {os.path.join(out, 'table.md')}"
+          + (", pressure.png" if plotted else " (no pressure comparison to plot)"), flush=True)
+    failed = [r["label"] for r in rows if not r.get("converged")]
     if failed:
         print(f"study_table: {len(failed)} run(s) failed: {', '.join(failed)}", file=sys.stderr)
         return 1

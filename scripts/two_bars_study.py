@@ -58,7 +58,8 @@ SCRIPTS = pathlib.Path(__file__).resolve().parent
 ROOT = SCRIPTS.parent
 sys.path.insert(0, str(SCRIPTS))
 import hpc_run  # noqa: E402
-from hpc_run import StudyError, csv_number, read_columns, run_case  # noqa: E402
+from hpc_run import (StudyError, axis_label, csv_number, default_hpcontact,  # noqa: E402
+                     read_columns, run_case)
 
 EXAMPLES = ROOT / "examples" / "two-bars"
 # case -> (name of the body that holds the upper bar, element id of the upper bar)
@@ -405,14 +406,14 @@ STYLES = {"monolithic": dict(color="black", lw=2.4, label="monolithic"),
 def plot_interface_strains(interface, path):
     """gamma_xy and eps_x along the interface, the three models (seed Fig. 5.45, 5.44)."""
     fig, axes = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
-    for ax, field, name in ((axes[0], "gamma_xy", "shear strain gamma_xy"),
-                            (axes[1], "strain_xx", "strain eps_x")):
+    for ax, field, name in ((axes[0], "gamma_xy", "shear strain gamma_xy [-]"),
+                            (axes[1], "strain_xx", "strain eps_x [-]")):
         for case, style in STYLES.items():
             ax.plot(interface[case]["x"], interface[case][field], **style)
         ax.set_ylabel(name)
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
-    axes[1].set_xlabel("x along the interface y = 0 (upper bar)")
+    axes[1].set_xlabel(axis_label("x along the interface y = 0 (upper bar)", "length"))
     axes[0].set_title("Two bars: strains in the contact interface")
     fig.tight_layout()
     fig.savefig(path, dpi=120)
@@ -452,9 +453,9 @@ def plot_coulomb_tractions(runs, coulomb, path, stresses=None, zoom=(7.0, 8.0)):
         for i, xt in enumerate(coulomb["transitions"]):
             ax.axvline(xt, color="tab:red", lw=0.6, ls=":",
                        label="stick-slip transition" if i == 0 else None)
-        ax.set_xlabel("x along the interface")
+        ax.set_xlabel(axis_label("x along the interface", "length"))
         ax.grid(alpha=0.3)
-    axes[0].set_ylabel("contact traction")
+    axes[0].set_ylabel(axis_label("contact traction", "pressure"))
     axes[0].set_title("Coulomb friction: contact tractions along the interface")
     lo, hi = zoom
     axes[1].set_xlim(lo, hi + 0.02 * (hi - lo))
@@ -488,8 +489,8 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter,
                                  epilog=__doc__.split("\n\n", 1)[1])
-    ap.add_argument("--hpcontact", default=os.path.join(ROOT, "build", "hpcontact"),
-                    help="the hpcontact executable (default: build/hpcontact)")
+    ap.add_argument("--hpcontact", default=default_hpcontact(),
+                    help="the hpcontact program (default %(default)s)")
     ap.add_argument("--out", required=True, help="output folder")
     ap.add_argument("--subdivisions", type=int, default=64,
                     help="VTU subdivisions per element edge (default 64)")

@@ -14,9 +14,12 @@ written as the point field von_mises_difference_percent into DIR/von-mises-diffe
 (a copy of B) and plotted into DIR/von-mises-difference.png with the colour scale capped at
 --cap percent (default 0.1, the seed's). Exits 1 with a message if the points do not coincide
 (within 1e-6 of the model size; rp meshes of two degrees differ by their relocated nodes, and
-the largest distance is printed).
+the largest distance is printed). The PNG is drawn on the undeformed mesh; its axes are in the
+input's length units (summary.json's "units" beside B.vtu where it names them), and where
+differences exceed --cap the colour bar shows an arrow and the legend the share of points
+clipped and the maximum.
 """
-import argparse
+import json
 import os
 import sys
 
@@ -28,7 +31,7 @@ import matplotlib.tri as mtri  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hpc_run import read_vtu  # noqa: E402
+from hpc_run import axis_label, read_vtu, script_parser, units_of  # noqa: E402
 
 
 def read_solution(path):
@@ -43,11 +46,12 @@ def read_solution(path):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("a")
-    ap.add_argument("b")
-    ap.add_argument("--out", required=True)
-    ap.add_argument("--cap", type=float, default=0.1)
+    ap = script_parser(__doc__)
+    ap.add_argument("a", metavar="A.vtu", help="solution.vtu of the run to measure")
+    ap.add_argument("b", metavar="B.vtu", help="solution.vtu of the better run (the reference)")
+    ap.add_argument("--out", required=True, metavar="DIR", help="folder for the VTU and the PNG")
+    ap.add_argument("--cap", type=float, default=0.1,
+                    help="top of the colour scale in percent (default %(default)s)")
     ap.add_argument("--scale", type=float,
                     help="the stress the difference is relative to (default: 99.9th percentile "
                          "of B's von Mises stress)")
@@ -82,10 +86,23 @@ def main(argv=None):
         elif len(c) == 3:
             tris.append(list(c))
     tri = mtri.Triangulation(xb[:, 0], xb[:, 1], tris)
-    fig, ax = plt.subplots(figsize=(6.5, 6))
+    units = None
+    summary_path = os.path.join(os.path.dirname(os.path.abspath(args.b)), "summary.json")
+    if os.path.isfile(summary_path):
+        with open(summary_path) as f:
+            units = units_of(json.load(f))
+    fig, ax = plt.subplots(figsize=(6.5, 6.4))
+    share = 100 * np.mean(diff > args.cap)
     im = ax.tripcolor(tri, np.minimum(diff, args.cap), shading="gouraud", cmap="jet",
                       vmin=0, vmax=args.cap)
-    fig.colorbar(im, ax=ax, label=f"|Δσ_vM| / {scale:.5g} [%] (capped at {args.cap:g})")
+    fig.colorbar(im, ax=ax, extend="max" if share > 0 else "neither",
+                 label=f"|Δσ_vM| / {scale:.5g} [%]")
+    if share > 0:
+        ax.plot([], [], " ", label=f"colours clipped above {args.cap:g} %: {share:.1f} % of the "
+                                   f"points, max {diff.max():.3g} %")
+        ax.legend(fontsize=7.5, loc="upper center", bbox_to_anchor=(0.5, -0.1), frameon=False)
+    ax.set_xlabel(axis_label("x", "length", units))
+    ax.set_ylabel(axis_label("y", "length", units))
     ax.set_aspect("equal")
     ax.set_title(f"{os.path.basename(os.path.dirname(os.path.abspath(args.a)))} vs "
                  f"{os.path.basename(os.path.dirname(os.path.abspath(args.b)))}: max "
@@ -93,7 +110,7 @@ def main(argv=None):
     fig.tight_layout()
     png_path = os.path.join(args.out, "von-mises-difference.png")
     fig.savefig(png_path, dpi=110)
-    share = 100 * np.mean(diff > args.cap)
+    plt.close(fig)
     print(f"wrote {vtu_path}, {png_path}; scale {scale:.6g}; max difference {diff.max():.4g} % "
           f"at ({xb[diff.argmax(), 0]:.4g}, {xb[diff.argmax(), 1]:.4g}); {share:.1f} % of the "
           f"points above {args.cap:g} %")

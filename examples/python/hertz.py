@@ -22,7 +22,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--problem", default=os.path.join(ROOT, "examples", "hertz", "p8.yaml"))
+    parser.add_argument("--problem", default=os.path.join(ROOT, "examples", "hertz", "p8.yaml"),
+                        help="problem file with a contact[].compare section (default %(default)s)")
     parser.add_argument("--out", default="results/python", help="folder of the PNG")
     parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                         help="override an input value (repeatable)")

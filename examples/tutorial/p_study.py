@@ -24,7 +24,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASE = os.path.join(HERE, "punch.yaml")
 COLUMNS = ["method", "p", "dofs", "strain_energy", "half_width", "p_max", "e_L2_reference_percent",
-           "e_L2_reference_penalty_percent", "rp_iterations", "newton_iterations", "wall_time_s"]
+           "e_L2_reference_penalty_percent", "e_L2_shtayerman_percent", "rp_iterations",
+           "newton_iterations", "wall_time_s"]
 
 
 def run(hpcontact, out, p, rp):
@@ -40,17 +41,23 @@ def run(hpcontact, out, p, rp):
     return {"method": "rp" if rp else "p", "p": p, "dofs": s["dofs"],
             "strain_energy": s["strain_energy"], "half_width": c["half_width"], "p_max": c["p_max"],
             "e_L2_reference_percent": c["e_L2_reference_percent"],
-            "e_L2_reference_penalty_percent": c["penalty_traction"]["e_L2_reference_percent"],
+            "e_L2_reference_penalty_percent": c.get("penalty_traction", c.get("multiplier"))["e_L2_reference_percent"],
+            "e_L2_shtayerman_percent": c["e_L2_shtayerman_percent"],
             "rp_iterations": s["adapt"]["iterations"] if rp else "",
             "newton_iterations": s["newton_iterations"], "wall_time_s": s["wall_time_s"]}
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--hpcontact", default="build/hpcontact")
-    ap.add_argument("--out", default="results/tutorial-study")
-    ap.add_argument("--degrees", type=int, nargs="+", default=list(range(2, 13)))
-    ap.add_argument("--rp", type=int, nargs="*", default=[4, 6, 8, 10, 12])
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog=__doc__.split("\n\n", 1)[1])
+    ap.add_argument("--hpcontact", default="build/hpcontact",
+                    help="the hpcontact program (default %(default)s)")
+    ap.add_argument("--out", default="results/tutorial-study", help="output folder (default %(default)s)")
+    ap.add_argument("--degrees", type=int, nargs="+", default=list(range(2, 13)),
+                    help="degrees of the p-version runs (default 2 ... 12)")
+    ap.add_argument("--rp", type=int, nargs="*", default=[4, 6, 8, 10, 12],
+                    help="degrees of the rp-version runs (default 4 6 8 10 12; none: no rp runs)")
     args = ap.parse_args(argv)
     rows = []
     for rp, degrees in ((False, args.degrees), (True, args.rp)):

@@ -1,5 +1,5 @@
-"""scripts/convergence_study.py on examples/hertz/convergence.yaml --quick (seed §5.2.4, CASES.md §1
-"Energy-norm convergence"): the CSV has the RESULTS.md columns, the reference is extrapolated,
+"""scripts/convergence_study.py on examples/hertz/convergence.yaml --quick (seed §5.2.4, docs/cases.md §1
+"Energy-norm convergence"): the CSV has the summary.json columns, the reference is extrapolated,
 the p- and rp-curves converge at the measured rates and reach 1 % where they did when the study
 was set up (examples/hertz/CONVERGENCE.md), the adaptive hp-version (hp.yaml, one run, its
 adapt.history steps as points) reaches 1 % below the seed's 750 DOF and fits the exponential law

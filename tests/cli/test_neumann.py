@@ -78,7 +78,7 @@ def test_quarter_circle_triangular_load_rate(study, exe, root, tmp_path):
 
 def test_study_script_writes_csv_and_png(exe, root, tmp_path):
     """scripts/neumann_study.py --quick --study quarter-circle writes convergence.csv with the
-    RESULTS.md columns plus shape, beta.csv and convergence.png."""
+    summary.json columns plus shape, beta.csv and convergence.png."""
     r = subprocess.run([sys.executable, os.path.join(root, "scripts", "neumann_study.py"),
                         "--quick", "--study", "quarter-circle", "--hpcontact", exe,
                         "--out", str(tmp_path)], capture_output=True, text=True, timeout=120)

@@ -9,7 +9,7 @@ LAME = "examples/lame/thick-cylinder.yaml"
 
 
 def test_lame_run_writes_summary_vtu_and_input(hpcontact, root, tmp_path):
-    """A run of the Lamé example leaves summary.json (RESULTS.md keys), a VTU and input.yaml."""
+    """A run of the Lamé example leaves summary.json (the keys of docs/tutorial.md §8), a VTU and input.yaml."""
     out = tmp_path / "lame"
     r = hpcontact("run", os.path.join(root, LAME), "--out", out)
     assert r.returncode == 0, r.stderr

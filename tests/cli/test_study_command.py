@@ -1,7 +1,10 @@
 """`hpcontact study`: a sweep and explicit rows run as separate processes into one table."""
 import csv
 import json
+import math
 import os
+import subprocess
+import sys
 
 
 def write_study(tmp_path, root, body):
@@ -71,3 +74,37 @@ def test_bad_study_files_are_refused_with_their_place(hpcontact, root, tmp_path)
         assert "study.yaml" in r.stderr and fragment in r.stderr, (body, r.stderr)
     r = hpcontact("study", tmp_path / "missing.yaml")
     assert r.returncode == 2 and "Usage" in r.stderr
+
+
+def test_zip_links_the_load_and_the_closed_forms_force(hpcontact, root, tmp_path):
+    """examples/hertz/load-study.yaml: the zip's two keys vary together (3 rows, not 9), crossed
+    with the sweep's two degrees; each run carries the force it was given (the resultant on the
+    half model is its target) and compares with Hertz for its own load: b = sqrt(4 F R (1 - nu²)
+    / (pi E)) for F = compare.force, R = 10, E = 210000, nu = 0.3."""
+    out = tmp_path / "out"
+    r = hpcontact("study", os.path.join(root, "examples", "hertz", "load-study.yaml"), "--out", out,
+                  "-q", "-j", "2")
+    assert r.returncode == 0, r.stdout + r.stderr
+    rows = read_rows(out)
+    targets, forces = [17500, 35000, 52500], [35000, 70000, 105000]
+    assert [row["label"] for row in rows] == [
+        f"degree={p}, value={t}, force={f}" for p in (5, 8) for t, f in zip(targets, forces)]
+    for row, (target, force) in zip(rows, [(t, f) for _ in (5, 8) for t, f in zip(targets, forces)]):
+        assert row["converged"] == "true", row
+        assert abs(json.loads(row["contact.resultant"])[1] - target) <= 1e-6 * target, row
+        b = (4 * force * 10 * (1 - 0.3**2) / (math.pi * 210000)) ** 0.5
+        assert abs(float(row["contact.hertz_half_width"]) - b) <= 1e-9 * b, row
+
+    # scripts/plot_study.py: any two columns of that table, one curve per group; a column that
+    # is not there is named with the file and the columns that are.
+    plot = [sys.executable, os.path.join(root, "scripts", "plot_study.py"), str(out)]
+    png = tmp_path / "b.png"
+    r = subprocess.run(plot + ["--x", "contact.hertz_half_width", "--y", "contact.half_width",
+                               "--y", "contact.p_max", "--log", "--out", str(png)],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0 and r.stdout.strip() == f"wrote {png}", r.stdout + r.stderr
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    r = subprocess.run(plot + ["--x", "dofs", "--y", "contact.nothing"], capture_output=True,
+                       text=True, timeout=120)
+    assert r.returncode == 1 and "study.csv: no column 'contact.nothing'" in r.stderr, r.stderr
+    assert "contact.half_width" in r.stderr

@@ -104,7 +104,7 @@ TEST(HpMesh, LayersCountRingsAroundTheCentre) {
 
 // The adaptive hp loop shall give the elements at its refinement centre (the node it placed
 // on Γ*) the minimum degree and every layer of elements around them one degree more (seed
-// §4.7, DESIGN.md): on examples/hertz/hp.yaml with two refinement steps, every element's degree
+// §4.7): on examples/hertz/hp.yaml with two refinement steps, every element's degree
 // is min_degree + its layer, and the layers reach at least 3.
 TEST(HpMesh, AdaptiveDegreesRiseByOnePerLayer) {
   const auto spec = io::read_problem(std::string(HPC_SOURCE_DIR) + "/examples/hertz/hp.yaml",

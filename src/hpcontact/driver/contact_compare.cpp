@@ -105,7 +105,7 @@ nlohmann::json PressureComparison::measure(const model::Discretization& d,
   const double b = hertz_.half_width(), p0 = hertz_.peak_pressure();
   const std::function<double(double)> hertz_p = [&](double x) { return hertz_.pressure(x); };
   const std::function<double(double)> shtayerman_p = [&](double x) { return shtayerman_.pressure(x); };
-  // The errors of one FE pressure (from the stresses or the penalty traction), keys of RESULTS.md.
+  // The errors of one FE pressure (from the stresses or the penalty traction), keys of summary.json (docs/tutorial.md §8).
   auto errors = [&](const std::function<double(double)>& fe) {
     nlohmann::json e;
     const auto eh = post::pressure_errors(fe, hertz_p, b, p0);

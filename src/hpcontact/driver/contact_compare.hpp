@@ -1,4 +1,4 @@
-// The contact pressure of a run against Hertz, Shtayerman and a reference curve (CASES.md §1).
+// The contact pressure of a run against Hertz, Shtayerman and a reference curve (docs/cases.md §1).
 #pragma once
 
 #include <optional>
@@ -38,7 +38,7 @@ struct PressureCurve {
 std::string pressure_csv(const PressureCurve& curve);
 
 /// The contact pressure of a pair against Hertz, Shtayerman (for the exact circle) and, if the
-/// input names one, a reference curve (CASES.md §1). Built once per run: the closed forms and
+/// input names one, a reference curve (docs/cases.md §1). Built once per run: the closed forms and
 /// the reference file are set up when constructed, each solve is then measured with measure().
 class PressureComparison {
 public:
@@ -49,7 +49,7 @@ public:
 
   /// The error measures of the pair's pressure from the stresses (the seed's plotted pressure)
   /// and, under "penalty_traction", of the penalty traction, over [0, 1.5 b] against Hertz
-  /// (b_Hertz), Shtayerman (b_Shtayerman) and the reference (b_Hertz); keys as in RESULTS.md
+  /// (b_Hertz), Shtayerman (b_Shtayerman) and the reference (b_Hertz); keys as in summary.json
   /// plus the half widths. If csv_path is not empty, writes the curves on 1001 points of
   /// [0, 1.5 b_Hertz] and on the ends of the contact zone `zone_ends` (coordinates along the
   /// obstacle) there (pressure_csv(curve(...))), so that a curve read back as a reference

@@ -572,7 +572,9 @@ std::string input_schema_markdown() {
         "effective input written next to the results lists it); an optional key without a default "
         "stays absent. Any key can be changed from the command line with "
         "`--set path=value`, e.g. `--set bodies[0].material.E=1e5` or "
-        "`--set discretization.degree=[6,4]`.\n\n## Top level\n\n";
+        "`--set discretization.degree=[6,4]`. \"The seed\" below is the dissertation the "
+        "method follows (D. Franke, TU München; references.md), \"seed eq. 3.19\" its "
+        "equation.\n\n## Top level\n\n";
   render_section(md, "");
   return md.str();
 }

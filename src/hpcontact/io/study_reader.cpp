@@ -3,6 +3,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 
@@ -23,12 +24,12 @@ class StudyBuilder {
   StudySpec build(const YAML::Node& root) {
     StudySpec s;
     s.file = source_.file();
-    allow(root, "", {"study", "title", "case", "set", "sweep", "runs", "columns"});
+    allow(root, "", {"study", "title", "case", "set", "sweep", "zip", "runs", "columns"});
     s.name = text(root["study"], "study", true);
     s.title = text(root["title"], "title", false);
     const std::string common_case = root["case"] ? case_path(root["case"], "case") : "";
     const std::vector<std::string> common_sets = strings(root["set"], "set");
-    if (const YAML::Node sweep = root["sweep"]) add_sweep(sweep, common_case, common_sets, s);
+    if (root["sweep"] || root["zip"]) add_sweep(root["sweep"], root["zip"], common_case, common_sets, s);
     if (const YAML::Node runs = root["runs"]) {
       require(runs.IsSequence(), runs, "runs", "must be a list of runs");
       for (std::size_t i = 0; i < runs.size(); ++i) {
@@ -116,44 +117,106 @@ class StudyBuilder {
     return e.c_str();
   }
 
-  void add_sweep(const YAML::Node& sweep, const std::string& case_file,
-                 const std::vector<std::string>& common_sets, StudySpec& s) {
-    require(sweep.IsMap() && sweep.size() > 0, sweep, "sweep", "must be a map key.path: [values]");
-    require(!case_file.empty(), sweep, "sweep", "needs the study's case");
-    std::vector<std::pair<std::string, std::vector<std::string>>> axes;
-    for (auto it = sweep.begin(); it != sweep.end(); ++it) {
-      const std::string key = it->first.Scalar();
-      const std::string path = join_key("sweep", key);
-      require(it->second.IsSequence() && it->second.size() > 0, it->second, path,
-              "must be a non-empty list of values (got " + shown_value(it->second) + ")");
-      std::vector<std::string> values;
-      for (std::size_t i = 0; i < it->second.size(); ++i) values.push_back(value_text(it->second[i]));
-      axes.emplace_back(key, std::move(values));
+  /// One axis of a sweep: keys that vary together, and their values, row by row.
+  struct Axis {
+    std::vector<std::string> keys;
+    std::vector<std::vector<std::string>> rows;  ///< rows[i][k]: the value of keys[k] in row i
+  };
+
+  /// The values of `key: [v0, v1, ...]` as --set takes them.
+  std::vector<std::string> axis_values(const YAML::Node& list, const std::string& path) {
+    require(list.IsSequence() && list.size() > 0, list, path,
+            "must be a non-empty list of values (got " + shown_value(list) + ")");
+    std::vector<std::string> values;
+    for (std::size_t i = 0; i < list.size(); ++i) values.push_back(value_text(list[i]));
+    return values;
+  }
+
+  /// `sweep`: every key its own axis. `zip`: one axis whose keys vary together, lists of one length.
+  std::vector<Axis> sweep_axes(const YAML::Node& sweep, const YAML::Node& zip) {
+    std::vector<Axis> axes;
+    if (sweep) {
+      require(sweep.IsMap() && sweep.size() > 0, sweep, "sweep", "must be a map key.path: [values]");
+      for (auto it = sweep.begin(); it != sweep.end(); ++it) {
+        const std::string key = it->first.Scalar();
+        Axis axis{{key}, {}};
+        for (auto& v : axis_values(it->second, join_key("sweep", key))) axis.rows.push_back({v});
+        axes.push_back(std::move(axis));
+      }
     }
+    if (zip) {
+      require(zip.IsMap() && zip.size() > 0, zip, "zip",
+              "must be a map key.path: [values] (the keys vary together)");
+      Axis axis;
+      std::string first;
+      for (auto it = zip.begin(); it != zip.end(); ++it) {
+        const std::string key = it->first.Scalar();
+        const std::string path = join_key("zip", key);
+        const auto values = axis_values(it->second, path);
+        const bool in_sweep =
+            std::any_of(axes.begin(), axes.end(), [&](const Axis& a) { return a.keys.front() == key; });
+        require(!in_sweep, it->first, path, "is in sweep too: a key varies in one place only");
+        if (axis.keys.empty()) {
+          first = path;
+          axis.rows.resize(values.size());
+        }
+        require(values.size() == axis.rows.size(), it->second, path,
+                "must have as many values as " + first + " (" + std::to_string(axis.rows.size()) +
+                    "; got " + std::to_string(values.size()) + "): the keys of zip vary together");
+        axis.keys.push_back(key);
+        for (std::size_t i = 0; i < values.size(); ++i) axis.rows[i].push_back(values[i]);
+      }
+      axes.push_back(std::move(axis));
+    }
+    return axes;
+  }
+
+  /// In a run's label each key is named by its last part ("degree=4"), or in full where two
+  /// keys of the sweep end alike.
+  static std::vector<std::string> label_names(const std::vector<Axis>& axes) {
+    std::vector<std::string> keys, names;
+    for (const auto& axis : axes) keys.insert(keys.end(), axis.keys.begin(), axis.keys.end());
+    auto last_part = [](const std::string& key) {
+      const std::size_t dot = key.find_last_of('.');
+      return dot == std::string::npos ? key : key.substr(dot + 1);
+    };
+    for (const auto& key : keys) {
+      const auto same = std::count_if(keys.begin(), keys.end(),
+                                      [&](const std::string& k) { return last_part(k) == last_part(key); });
+      names.push_back(same > 1 ? key : last_part(key));
+    }
+    return names;
+  }
+
+  void add_sweep(const YAML::Node& sweep, const YAML::Node& zip, const std::string& case_file,
+                 const std::vector<std::string>& common_sets, StudySpec& s) {
+    const YAML::Node where = sweep ? sweep : zip;
+    const std::string what = sweep ? "sweep" : "zip";
+    require(!case_file.empty(), where, what, "needs the study's case");
+    const std::vector<Axis> axes = sweep_axes(sweep, zip);
+    const std::vector<std::string> names = label_names(axes);
     std::size_t combinations = 1;
-    for (const auto& [key, values] : axes) {
-      combinations *= values.size();
-      require(combinations <= 10000, sweep, "sweep", "more than 10000 combinations");
+    for (const auto& axis : axes) {
+      combinations *= axis.rows.size();
+      require(combinations <= 10000, where, what, "more than 10000 combinations");
     }
     for (std::size_t c = 0; c < combinations; ++c) {
       StudyRun run;
       run.case_file = case_file;
       run.sets = common_sets;
-      std::vector<std::size_t> digit(axes.size());  // the last key varies fastest
+      std::vector<std::size_t> row(axes.size());  // the last axis varies fastest
       std::size_t rest = c;
       for (std::size_t a = axes.size(); a-- > 0;) {
-        digit[a] = rest % axes[a].second.size();
-        rest /= axes[a].second.size();
+        row[a] = rest % axes[a].rows.size();
+        rest /= axes[a].rows.size();
       }
-      std::vector<std::string> parts;
-      for (std::size_t a = 0; a < axes.size(); ++a) {
-        const auto& [key, values] = axes[a];
-        const std::string& v = values[digit[a]];
-        const std::size_t dot = key.find_last_of('.');
-        parts.push_back((dot == std::string::npos ? key : key.substr(dot + 1)) + "=" + v);
-        run.sets.push_back(key + "=" + v);
-      }
-      for (const auto& part : parts) run.label += (run.label.empty() ? "" : ", ") + part;
+      std::size_t name = 0;
+      for (std::size_t a = 0; a < axes.size(); ++a)
+        for (std::size_t k = 0; k < axes[a].keys.size(); ++k, ++name) {
+          const std::string& v = axes[a].rows[row[a]][k];
+          run.label += (run.label.empty() ? "" : ", ") + names[name] + "=" + v;
+          run.sets.push_back(axes[a].keys[k] + "=" + v);
+        }
       s.runs.push_back(std::move(run));
     }
   }

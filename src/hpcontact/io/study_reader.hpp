@@ -24,12 +24,15 @@ struct StudySpec {
   std::vector<std::string> columns;  ///< extra summary.json keys (dotted) for the table
 };
 
-/// Reads a study file. Keys (unknown ones are errors):
+/// Reads a study file (docs/study.md). Keys (unknown ones are errors):
 ///   study: name (required); title: one line (optional);
 ///   case: the problem file of the sweep and of runs without their own (relative to the study
 ///         file's folder); set: overrides applied to every run, before a run's own;
-///   sweep: {key.path: [values], ...} – one run per combination, in order (the last key varies
-///          fastest), labelled "degree=4, method=rp" (the last part of each key);
+///   sweep: {key.path: [values], ...} – every key an axis of the Cartesian product;
+///   zip: {key.path: [values], ...} – keys that vary together (lists of one length): one more
+///        axis, after the sweep's; one run per combination, in order (the last axis varies
+///        fastest), labelled "degree=4, pressure=100, force=2000" (the last part of each key,
+///        the whole key where two end alike);
 ///   runs: [{label, case, set, seed: {name: number}}] – explicit rows, after the sweep's;
 ///   columns: [summary keys] – e.g. contact.half_width, added to the table.
 /// At least one run. Throws InputError "<file>:<line>:<col>: <key>: <what>", IoError if the

@@ -179,7 +179,7 @@ struct ObstacleSpec {
 };
 
 /// Closed forms (Hertz, Shtayerman for the exact circle) and an optional reference curve to
-/// measure the contact pressure against (CASES.md §1). x runs along the obstacle from its point.
+/// measure the contact pressure against (docs/cases.md §1). x runs along the obstacle from its point.
 struct PressureCompareSpec {
   double radius = 0;      ///< cylinder radius [length]
   double force = 0;       ///< force on the whole cylinder per unit thickness [force/length]

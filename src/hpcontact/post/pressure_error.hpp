@@ -1,4 +1,4 @@
-// Contact-pressure error measures over [0, 1.5 b_ref] (CASES.md §1; the seed's eq. 5.11).
+// Contact-pressure error measures over [0, 1.5 b_ref] (docs/cases.md §1; the seed's eq. 5.11).
 #pragma once
 
 #include <functional>

@@ -1,4 +1,4 @@
-// summary.json: the machine-readable result of a run (see shared RESULTS.md for the keys).
+// summary.json: the machine-readable result of a run (its keys: docs/tutorial.md §8).
 #pragma once
 
 #include <optional>

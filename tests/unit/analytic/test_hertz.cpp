@@ -8,7 +8,7 @@
 using namespace hpcontact::analytic;
 
 // Hertz for the seed's cylinder (R = 10, F = 70000, E = 210000, nu = 0.3) gives the half width
-// 1.96524 mm and peak 22675.8 N/mm² of CASES.md, and the pressure integrates to F.
+// 1.96524 mm and peak 22675.8 N/mm² of docs/cases.md, and the pressure integrates to F.
 TEST(Hertz, SeedCylinderFigures) {
   const Hertz h{10, 70000, 210000, 0.3};
   EXPECT_NEAR(h.half_width(), 1.96524, 5e-6);
@@ -30,7 +30,7 @@ TEST(Shtayerman, ParabolaEqualsHertz) {
     EXPECT_NEAR(s.pressure(x), h.pressure(x), 1e-9 * h.peak_pressure()) << x;
 }
 
-// For the exact circle the contact is slightly narrower than Hertz's (CASES.md: b between 1.951
+// For the exact circle the contact is slightly narrower than Hertz's (docs/cases.md: b between 1.951
 // and 1.965), the pressure still integrates to F, and it is symmetric.
 TEST(Shtayerman, CircleNarrowerThanHertzAndInEquilibrium) {
   const Hertz h{10, 70000, 210000, 0.3};

@@ -10,7 +10,7 @@ using namespace hpcontact;
 
 // Hertz measured against Shtayerman (R = 10, F = 70000, E = 210000, nu = 0.3): the graded
 // composite Gauss rule agrees with a brute-force midpoint rule of 200000 points (1e-3 relative).
-// Both give e_L2 = 1.369 % and e_seed = 0.0160 %; CASES.md quotes 1.97 % and 0.033 % for the same
+// Both give e_L2 = 1.369 % and e_seed = 0.0160 %; docs/cases.md quotes 1.97 % and 0.033 % for the same
 // pair, a factor 2.07 in the squared difference that we could not reproduce by any choice of
 // interval or normalisation (see the issue note).
 TEST(PressureErrors, HertzAgainstShtayermanMatchesBruteForce) {
