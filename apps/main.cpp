@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -59,10 +61,12 @@ constexpr int kFailed = 1;
 int run_command(const std::string& file, std::string out_dir, const std::vector<std::string>& sets,
                 bool quiet, const JsonLog* log) {
   if (out_dir.empty()) out_dir = "results/" + std::filesystem::path(file).stem().string();
-  driver::prepare_output_folder(out_dir);  // before reading: bad input must not leave an old summary
+  // Opened (locked, checked) before the problem is read: a folder that holds the problem file
+  // is refused before anything else. The earlier results stay until this run succeeds.
+  driver::OutputFolder folder(out_dir, driver::run_layout(), {{file, "the problem file"}});
   const auto read = io::read_problem_full(file, sets);
   driver::RunOptions options;
-  options.out_dir = out_dir;
+  options.folder = &folder;
   options.effective_input = read.effective_yaml;
   if (log) {
     options.progress = [log](const std::string& line) { log->progress(line); };
@@ -139,11 +143,12 @@ std::string this_program(const char* argv0) {
 
 int study_command(const std::string& file, std::string out_dir, int jobs, bool quiet,
                   const char* argv0) {
-  const auto study = io::read_study(file);
   if (out_dir.empty()) out_dir = "results/" + std::filesystem::path(file).stem().string();
+  driver::OutputFolder folder(out_dir, driver::study_layout(), {{file, "the study file"}});
+  const auto study = io::read_study(file);
   driver::StudyOptions options;
   options.program = this_program(argv0);
-  options.out_dir = out_dir;
+  options.folder = &folder;
   options.jobs = jobs > 0 ? jobs : std::max(1u, std::thread::hardware_concurrency());
   const bool bar = !quiet && isatty(STDOUT_FILENO);
   const auto t0 = std::chrono::steady_clock::now();
@@ -169,7 +174,16 @@ int study_command(const std::string& file, std::string out_dir, int jobs, bool q
       std::cout << "  [" << done << "/" << total << "] " << line.str() << '\n';
     }
   };
-  const auto rows = driver::run_study(study, options);
+  const auto outcome = driver::run_study(study, options);
+  if (outcome.signal) {
+    // The runs were stopped and waited for; the study ends by the signal it was sent.
+    std::cerr << "\nhpcontact: study stopped by " << strsignal(outcome.signal)
+              << ": its running runs were stopped, no table written in " << out_dir << "/\n";
+    std::signal(outcome.signal, SIG_DFL);
+    std::raise(outcome.signal);
+    return kFailed;
+  }
+  const auto& rows = outcome.rows;
   if (!quiet)
     std::cout << "  " << rows.size() - failed << " of " << rows.size() << " runs converged; table in "
               << out_dir << "/study.csv, summaries in " << out_dir << "/study.json, runs in "

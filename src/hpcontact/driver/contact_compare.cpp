@@ -13,7 +13,7 @@
 #include "hpcontact/analytic/hertz.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/post/pressure_error.hpp"
-#include "hpcontact/post/summary.hpp"
+#include "hpcontact/post/output_file.hpp"
 
 namespace hpcontact::driver {
 
@@ -71,6 +71,13 @@ ReferenceCurve read_reference(const std::string& path, const std::string& where)
 
 }  // namespace
 
+std::string reference_path(const model::ProblemSpec& spec, const model::PressureCompareSpec& cmp) {
+  namespace fs = std::filesystem;
+  fs::path path(cmp.reference);
+  if (path.is_relative()) path = fs::path(spec.file).parent_path() / path;
+  return path.string();
+}
+
 PressureComparison::PressureComparison(const model::ProblemSpec& spec,
                                        const model::PressureCompareSpec& cmp,
                                        const material::LinearElastic& mat)
@@ -80,12 +87,7 @@ PressureComparison::PressureComparison(const model::ProblemSpec& spec,
       reference_name_(cmp.reference) {
   HPC_REQUIRE(mat.plane == material::Plane::strain, InputError, cmp.where.str(),
               ": Hertz and Shtayerman are implemented for plane strain");
-  if (!cmp.reference.empty()) {
-    namespace fs = std::filesystem;
-    fs::path path(cmp.reference);
-    if (path.is_relative()) path = fs::path(spec.file).parent_path() / path;
-    reference_ = read_reference(path.string(), cmp.where.str());
-  }
+  if (!cmp.reference.empty()) reference_ = read_reference(reference_path(spec, cmp), cmp.where.str());
 }
 
 nlohmann::json PressureComparison::measure(const model::Discretization& d,

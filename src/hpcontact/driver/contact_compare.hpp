@@ -34,6 +34,10 @@ struct PressureCurve {
 /// reference is not written: it is an input), 12 significant digits.
 std::string pressure_csv(const PressureCurve& curve);
 
+/// The file a compare section's `reference` names (relative to the problem file's folder).
+/// Precondition: cmp.reference is not empty.
+std::string reference_path(const model::ProblemSpec& spec, const model::PressureCompareSpec& cmp);
+
 /// The contact pressure of a pair against Hertz, Shtayerman (for the exact circle) and, if the
 /// input names one, a reference curve (CASES.md §1). Built once per run: the closed forms and
 /// the reference file are set up when constructed, each solve is then measured with measure().

@@ -551,6 +551,33 @@ std::string input_schema_markdown() {
         "`--set path=value`, e.g. `--set bodies[0].material.E=1e5` or "
         "`--set discretization.degree=[6,4]`.\n\n## Top level\n\n";
   render_section(md, "");
+  md << "\n## The output folder\n\n"
+        "`hpcontact run` (and `hpcontact study`, and the Python module's `run(out=...)`) writes "
+        "its results into an output folder (`--out`, default `results/<problem file name>`):\n\n"
+        "- The files are written into a staging folder inside it (`.hpcontact-staging-XXXXXX`) "
+        "and moved into place, each by a rename, only when the run has succeeded. A run that "
+        "fails after a converged state replaces only `last-good/` (that state, with `converged: "
+        "false`); any other failure, a wrong `--set` or an interrupted run leaves the folder as it "
+        "was. The next run removes a staging folder an interrupted run left.\n"
+        "- `.hpcontact-manifest` lists the files the last run wrote; a run replaces or removes "
+        "only those. A file with an output name (`summary.json`, `input.yaml`, `contact.csv`, "
+        "`pressure.csv`, `path.csv`, `mesh.yaml`, `solution.vtu`, `contact.vtu`, "
+        "`solution.pvd`, `contact.pvd`, `rp/pressure-N.csv`, `hp/pressure-N.csv`, "
+        "`steps/step-NNNN.vtu`, `steps/contact-NNNN.vtu`, all of these in `last-good/`; for a "
+        "study `study.csv`, `study.json`, `runs/NN-label/log.txt`) that the manifest does not "
+        "list is someone else's: the run is refused, naming it, before anything is solved. "
+        "Other files are never touched. (Results of an hpcontact without manifests count as "
+        "someone else's: remove them.)\n"
+        "- A folder that holds the problem file or a `compare` section's `reference` file "
+        "(directly or in a folder below) is refused.\n"
+        "- Symbolic links inside the folder are never followed: a link where an output goes "
+        "refuses the folder. The folder itself may be a link.\n"
+        "- A run holds a lock on the folder (`.hpcontact-lock`) while it writes; a second run into "
+        "the same folder fails at once.\n"
+        "- Every file is checked to the disk (each write, fsync and close): a full disk ends the "
+        "run with exit code 1 and a message naming the file and the system's reason.\n"
+        "- `study` passes SIGINT and SIGTERM on to its running runs, waits for them, writes no "
+        "table and ends by the same signal.\n";
   return md.str();
 }
 
