@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <new>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -257,6 +258,11 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const Error& e) {
     std::cerr << "hpcontact: error: " << e.what() << '\n';
+    return kFailed;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "hpcontact: error: out of memory: the problem needs more memory than this "
+                 "process may use (fewer elements, a lower degree or fewer "
+                 "output.vtu_subdivisions need less)\n";
     return kFailed;
   } catch (const std::exception& e) {
     std::cerr << "hpcontact: internal error: " << e.what() << '\n';

@@ -299,3 +299,25 @@ def test_interrupted_run_leaves_the_earlier_results(root, lame_file, tmp_path):
         signal.signal(signal.SIGALRM, previous)
     assert {p.name: p.read_bytes() for p in out.iterdir() if p.is_file()} == before
     assert not [p for p in out.iterdir() if p.name.startswith(".hpcontact-staging")]
+
+
+def test_numerical_breakdowns_raise_solver_error(root):
+    """An exception inside the parallel assembly (nu lost to round-off) killed the interpreter,
+    and a load of 1e308 returned converged: true with energy NaN; both raise SolverError naming
+    the cause. Run in a child interpreter, so that a crash fails this test, not the suite."""
+    script = f"""
+import hpcontact
+block = {os.path.join(root, "examples", "neumann", "block.yaml")!r}
+for value, cause in (("bodies[0].material.nu=0.49999999999999994", "static condensation"),
+                     ("bodies[0].loads[0].resultant=1e308", "the solution is not finite")):
+    try:
+        hpcontact.Problem.from_file(block, set=[value]).run()
+        print("no error for", value)
+    except hpcontact.SolverError as e:
+        print("SolverError:", cause in str(e), str(e))
+"""
+    r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120,
+                       env=dict(os.environ, PYTHONPATH=os.path.dirname(hpcontact.__file__)))
+    assert r.returncode == 0, r.stderr
+    lines = r.stdout.splitlines()
+    assert len(lines) == 2 and all(line.startswith("SolverError: True") for line in lines), r.stdout

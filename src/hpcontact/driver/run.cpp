@@ -195,6 +195,11 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
   if (s.method.empty()) s.method = disc.method;
   s.dofs = disc.n_free;
   s.strain_energy = post::strain_energy(disc, st.u);
+  // Whatever the solver checked, a result that is not finite is never reported as one.
+  HPC_REQUIRE(std::isfinite(s.strain_energy) && st.u.allFinite(), NumericalError, spec.file,
+              ": the solution is not finite (strain energy ", s.strain_energy, ", largest |u| ",
+              st.u.cwiseAbs().maxCoeff(), "): a load, prescribed displacement, length or material "
+              "value of the input is too large for double precision");
   s.error = exact_error(spec, disc, st.u, s.strain_energy);
   if (!st.contact.empty()) {
     const PressureComparison* cmp = comparison(st);

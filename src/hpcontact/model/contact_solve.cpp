@@ -19,6 +19,7 @@
 #include "hpcontact/model/body_stress.hpp"
 #include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/model/linear_solve.hpp"
+#include "hpcontact/model/parallel.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
 #include "hpcontact/solve/arc_length.hpp"
 
@@ -110,13 +111,12 @@ public:
            std::string* inverted) const {
     const int ne = static_cast<int>(elements_.size());
     std::vector<fem::FiniteStrainElement> el(ne);
-#pragma omp parallel for schedule(dynamic)
-    for (int i = 0; i < ne; ++i) {
+    parallel_for(ne, [&](int i) {
       const Body& body = d_.bodies[elements_[i].body];
       const int q = elements_[i].q;
       el[i] = fem::finite_strain_element(values_[i], body.material_of(q), body.law, body.thickness,
                                          body.element_coefficients(q, u), t != nullptr);
-    }
+    });
     for (int i = 0; i < ne; ++i) {
       const Body& body = d_.bodies[elements_[i].body];
       const int q = elements_[i].q;

@@ -1,0 +1,70 @@
+"""Crashes and false successes: what makes the numerics fail (values at the edge of double
+precision, memory running out, a degenerate element) ends the run with exit 1 and a message
+naming the place and the cause, never with a signal, and never with a summary claiming success."""
+import os
+import resource
+import subprocess
+
+import pytest
+
+BLOCK = "examples/neumann/block.yaml"  # two p-elements, condensed, no contact
+HERTZ = "examples/hertz/p5.yaml"
+
+
+def failed_cleanly(r, out):
+    """Exit 1 (a signal would be negative), one error line, no summary.json."""
+    assert r.returncode == 1, (r.returncode, r.stderr)
+    assert r.stderr.startswith("hpcontact: error: ") and r.stderr.count("\n") == 1, r.stderr
+    assert not (out / "summary.json").exists()
+
+
+@pytest.mark.parametrize("value, shown", [
+    ("bodies[0].material.nu=0.49999999999999994", "nu = 0.49999999999999994"),
+    ("bodies[0].material.E=4.9e-324", "E = 5e-324"),
+    ("bodies[0].material.thickness=1e-320", "thickness 1e-320"),
+])
+def test_error_inside_the_parallel_assembly_is_reported(hpcontact, root, tmp_path, value, shown):
+    """An element whose stiffness cannot be condensed (values lost to round-off) was an exception
+    inside the OpenMP loop, which aborted the process; now it is the error it is, naming the
+    body, the element and the values."""
+    out = tmp_path / "out"
+    r = hpcontact("run", os.path.join(root, BLOCK), "--out", out, "-q", "--set", value)
+    failed_cleanly(r, out)
+    assert "bodies[0] (block): element 1: static condensation" in r.stderr, r.stderr
+    assert shown in r.stderr, r.stderr
+
+
+def test_memory_running_out_is_reported_not_a_crash(exe, root, tmp_path):
+    """Under address-space limits from 30 to 140 MB a run (Lamé at p = 20, ~95 MB) either
+    succeeds or ends with exit 1 saying it ran out of memory, wherever the allocation failed
+    (element assembly in parallel, the factorisation, post-processing)."""
+    args = ["run", os.path.join(root, "examples/lame/thick-cylinder.yaml"), "-q",
+            "--set", "discretization.degree=20", "--set", "output.vtu=false"]
+    out_of_memory = 0
+    for mb in range(30, 150, 10):
+        def limit(mb=mb):
+            resource.setrlimit(resource.RLIMIT_AS, (mb << 20, mb << 20))
+        out = tmp_path / f"out-{mb}"
+        r = subprocess.run([exe, *args, "--out", str(out)], capture_output=True, text=True,
+                           timeout=120, preexec_fn=limit)
+        assert r.returncode in (0, 1), (mb, r.returncode, r.stderr)
+        if r.returncode == 1:
+            # libgomp ends the process itself (exit 1) when it cannot start its threads.
+            assert "out of memory" in r.stderr or "Thread creation failed" in r.stderr, (mb, r.stderr)
+            assert not (out / "summary.json").exists()
+            out_of_memory += "out of memory" in r.stderr
+    assert out_of_memory >= 3
+
+
+@pytest.mark.parametrize("value, cause", [
+    ("bodies[0].loads[0].resultant=1e308", "the solution is not finite"),
+    ("bodies[0].loads[0].resultant=1e300", "the solution is not finite"),
+    ("bodies[0].material.E=1e308", "element 1: its stiffness matrix is not finite (E = 1e+308"),
+])
+def test_solution_that_is_not_finite_is_an_error(hpcontact, root, tmp_path, value, cause):
+    """A load at the edge of double precision gave exit 0, converged: true and energy NaN; every
+    solve now checks its result (and the stiffness, loads and prescribed values it is built of)."""
+    out = tmp_path / "out"
+    r = hpcontact("run", os.path.join(root, BLOCK), "--out", out, "-q", "--set", value)
+    failed_cleanly(r, out)
+    assert cause in r.stderr and "too large" in r.stderr, r.stderr
