@@ -68,3 +68,52 @@ def test_solution_that_is_not_finite_is_an_error(hpcontact, root, tmp_path, valu
     r = hpcontact("run", os.path.join(root, BLOCK), "--out", out, "-q", "--set", value)
     failed_cleanly(r, out)
     assert cause in r.stderr and "too large" in r.stderr, r.stderr
+
+
+DUPLICATE = """case: twice
+bodies:
+  - name: block
+    material: {E: 1000, nu: 0.3}
+    nodes: {1: [0, 0], 2: [1, 0], 3: [1, 1], 4: [0, 1]}
+    elements: {1: [1, 2, 3, 4], 2: [2, 3, 4, 1]}
+    edge_sets: {bottom: [[1, 2]], top: [[3, 4]]}
+    constraints:
+      - {edges: [bottom], ux: 0, uy: 0}
+      - {edges: [top], uy: -0.1}
+discretization: {method: p, degree: 2}
+"""
+
+
+def test_degenerate_elements_are_refused_before_solving(hpcontact, root, tmp_path):
+    """Two corners at one point (node 2 of the Hertz mesh 1e-9 from node 1: the run 'succeeded'
+    with p_max 4.5 times Hertz's), and the same element given twice, are refused by check and
+    run with the body and the element named."""
+    for move, corners in (("bodies[0].nodes.2=[1e-9, 0]", "its corners 1 and 2 are at one point"),
+                          ("bodies[0].nodes.5=[1e-13, 4]", "its corners 5 and 4 are at one point")):
+        for command in ("check", "run"):
+            out = tmp_path / f"{command}-out"
+            extra = ["--out", out, "-q"] if command == "run" else []
+            r = hpcontact(command, os.path.join(root, HERTZ), *extra, "--set", move)
+            assert r.returncode == 1, (command, r.stderr)
+            assert f"bodies[0] (cylinder): element 1 is degenerate: {corners}" in r.stderr, r.stderr
+            assert not (out / "summary.json").exists()
+    case = tmp_path / "twice.yaml"
+    case.write_text(DUPLICATE)
+    r = hpcontact("run", case, "--out", tmp_path / "out", "-q")
+    failed_cleanly(r, tmp_path / "out")
+    assert "elements 1 and 2 have the same corners: an element is given twice" in r.stderr
+
+
+def test_curved_edge_that_crosses_its_element_is_refused(hpcontact, root, tmp_path):
+    """An arc bulging through its element (a half circle on the bottom edge of a flat element,
+    bowing up across the top edge) makes det J change sign at Gauss points: refused, naming
+    the element."""
+    case = tmp_path / "bulge.yaml"
+    case.write_text(DUPLICATE.replace("[1, 1], 4: [0, 1]", "[1, 0.2], 4: [0, 0.2]")
+                    .replace(", 2: [2, 3, 4, 1]", "")
+                    .replace("    edge_sets:", "    curves:\n      - {nodes: [1, 2], arc: "
+                             "{center: [0.5, 0], radius: 0.5, ccw: false}}\n    edge_sets:"))
+    r = hpcontact("run", case, "--out", tmp_path / "out", "-q")
+    failed_cleanly(r, tmp_path / "out")
+    assert "bodies[0] (block): element 1 has a" in r.stderr, r.stderr
+    assert "Jacobian determinant" in r.stderr and "curved edges cross" in r.stderr, r.stderr
