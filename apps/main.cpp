@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/driver/contact_compare.hpp"
 #include "hpcontact/driver/run.hpp"
 #include "hpcontact/driver/study.hpp"
 #include "hpcontact/io/input_schema.hpp"
@@ -132,6 +133,7 @@ int check_command(const std::string& file, const std::vector<std::string>& sets)
               << (spec.contact[k].friction.law == "none" ? "" : ", friction " + spec.contact[k].friction.law)
               << '\n';
   }
+  driver::require_references(spec);
   return 0;
 }
 

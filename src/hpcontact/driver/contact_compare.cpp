@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <optional>
 #include <sstream>
@@ -12,6 +11,7 @@
 
 #include "hpcontact/analytic/hertz.hpp"
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/io/text_file.hpp"
 #include "hpcontact/post/pressure_error.hpp"
 #include "hpcontact/post/output_file.hpp"
 
@@ -28,8 +28,13 @@ double ReferenceCurve::operator()(double s) const {
 namespace {
 
 ReferenceCurve read_reference(const std::string& path, const std::string& where) {
-  std::ifstream in(path);
-  HPC_REQUIRE(in, InputError, where, ".reference: cannot open '", path, "'");
+  std::string text;
+  try {
+    text = io::read_bounded_file(path, "reference file", io::kMaxReferenceBytes);
+  } catch (const IoError& e) {
+    throw InputError(where + ".reference: " + e.what());
+  }
+  std::istringstream in(text);
   std::string line;
   std::getline(in, line);
   std::vector<std::string> cols;
@@ -76,6 +81,12 @@ std::string reference_path(const model::ProblemSpec& spec, const model::Pressure
   fs::path path(cmp.reference);
   if (path.is_relative()) path = fs::path(spec.file).parent_path() / path;
   return path.string();
+}
+
+void require_references(const model::ProblemSpec& spec) {
+  for (const auto& pair : spec.contact)
+    if (pair.compare && !pair.compare->reference.empty())
+      (void)read_reference(reference_path(spec, *pair.compare), pair.compare->where.str());
 }
 
 PressureComparison::PressureComparison(const model::ProblemSpec& spec,

@@ -342,6 +342,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       if (pair.compare && !pair.compare->reference.empty())
         folder->refuse_if_inside(reference_path(spec, *pair.compare),
                                  "the reference file of " + pair.compare->where.str());
+  require_references(spec);  // a reference that cannot be read fails before the solve
   const std::string stage = folder ? folder->begin() : "";
   const std::string last_good = folder ? (fs::path(folder->target()) / "last-good").string() : "";
 

@@ -5,11 +5,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
+#include <iomanip>
 #include <map>
 #include <memory>
 #include <set>
@@ -20,6 +17,7 @@
 #include "hpcontact/io/gmsh_import.hpp"
 #include "hpcontact/io/overrides.hpp"
 #include "hpcontact/io/schema_check.hpp"
+#include "hpcontact/io/text_file.hpp"
 #include "hpcontact/io/yaml_source.hpp"
 
 namespace hpcontact::io {
@@ -78,10 +76,71 @@ class SpecBuilder {
     if (root["exact"]) spec.exact = exact(root["exact"]);
     if (root["adapt"]) spec.adapt = adapt(root["adapt"], spec);
     spec.output = output(root["output"]);
+    require_bounded_work(spec, root);
     return spec;
   }
 
  private:
+  /// Keys whose values multiply into the work of a run are bounded together (each alone has its
+  /// schema bound): unknowns ~ elements × 2(p+1)², quadrature points ~ elements ×
+  /// (p + quadrature_extra)², contact points ~ contact edges × quadrature, VTU points ~ elements ×
+  /// (subdivisions + 1)². Refused before anything is built, naming the keys and the limit.
+  void require_bounded_work(const ProblemSpec& spec, const YAML::Node& root) {
+    const auto& disc = spec.discretization;
+    double unknowns = 0, gauss_points = 0, vtu_points = 0, contact_points = 0;
+    for (const auto& b : spec.bodies)
+      for (std::size_t q = 0; q < b.elements.size(); ++q) {
+        std::array<int, 2> p = b.degree.value_or(disc.degree);
+        if (const auto it = b.element_degrees.find(b.element_ids[q]); it != b.element_degrees.end())
+          p = it->second;
+        if (disc.method == Method::h) p = {2, 2};
+        const double pmax = std::max(p[0], p[1]);
+        unknowns += 2.0 * (p[0] + 1) * (p[1] + 1);
+        gauss_points += (pmax + disc.quadrature_extra) * (pmax + disc.quadrature_extra);
+        const double s = spec.output.vtu_subdivisions > 0 ? spec.output.vtu_subdivisions
+                                                          : std::clamp(pmax, 2.0, 16.0);
+        vtu_points += (s + 1) * (s + 1);
+      }
+    for (const auto& pair : spec.contact) {
+      double edges = 0;
+      for (const auto& b : spec.bodies)
+        if (b.name == pair.body)
+          for (const auto& set : b.edge_sets)
+            if (std::find(pair.edge_sets.begin(), pair.edge_sets.end(), set.name) !=
+                pair.edge_sets.end())
+              edges += static_cast<double>(set.edges.size());
+      // Two bodies: the other side's edges get as many points.
+      contact_points += edges * pair.quadrature * (pair.obstacle.kind == ObstacleKind::body ? 2 : 1);
+    }
+    auto require = [&](double value, double limit, const YAML::Node& node, const std::string& path,
+                       const std::string& what, const std::string& why) {
+      if (value <= limit) return;
+      std::ostringstream os;
+      os << std::setprecision(3) << what << " come to " << value << ", more than the " << limit
+         << " a run may have: " << why;
+      source_.fail(node, path, os.str());
+    };
+    require(unknowns, kMaxUnknowns, root["discretization"], "discretization",
+            "the elements' modes (elements × 2(p_xi+1)(p_eta+1), the bound of the unknowns)",
+            "the sparse factorisation of that many high-order unknowns needs more memory than a "
+            "workstation has; use fewer elements or lower degrees");
+    require(gauss_points, kMaxQuadraturePoints, root["discretization"]["quadrature_extra"],
+            "discretization.quadrature_extra",
+            "the quadrature points (elements × (p + quadrature_extra)²)",
+            "every assembly evaluates the shape functions at each; lower quadrature_extra or the "
+            "degree");
+    if (!spec.contact.empty())
+      require(contact_points, kMaxContactPoints, root["contact"], "contact",
+              "the contact Gauss points (contact edges × contact[].quadrature)",
+              "every Newton iteration intersects each with the other side; lower "
+              "contact[].quadrature");
+    if (spec.output.vtu)
+      require(vtu_points, kMaxVtuPoints, root["output"]["vtu_subdivisions"],
+              "output.vtu_subdivisions", "the points of solution.vtu (elements × (subdivisions + 1)²)",
+              "each takes ~300 bytes of ASCII; lower output.vtu_subdivisions or set output.vtu: "
+              "false");
+  }
+
   BodySpec body(const YAML::Node& node, const std::string& path) {
     BodySpec b;
     b.name = node["name"].Scalar();
@@ -599,22 +658,6 @@ std::string effective_yaml(const YAML::Node& root, const std::string& file_label
   return text + out.c_str() + "\n";
 }
 
-std::string read_text_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw IoError(path + ": cannot read problem file: " + std::strerror(EISDIR));
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                             &std::fclose);
-  if (!file) throw IoError(path + ": cannot open problem file: " + std::strerror(errno));
-  std::string text;
-  char buffer[1 << 16];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) text.append(buffer, n);
-  if (std::ferror(file.get()))
-    throw IoError(path + ": cannot read problem file: " + std::strerror(errno));
-  return text;
-}
-
 }  // namespace
 
 ReadResult parse_problem_full(const std::string& yaml_text, const std::string& file_label,
@@ -635,10 +678,12 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
   }
 }
 
-std::string read_input_file(const std::string& path) { return read_text_file(path); }
+std::string read_input_file(const std::string& path) {
+  return read_bounded_file(path, "problem file", kMaxProblemFileBytes);
+}
 
 ReadResult read_problem_full(const std::string& path, const std::vector<std::string>& overrides) {
-  return parse_problem_full(read_text_file(path), path, overrides);
+  return parse_problem_full(read_input_file(path), path, overrides);
 }
 
 model::ProblemSpec parse_problem(const std::string& yaml_text, const std::string& file_label,

@@ -7,6 +7,7 @@
 #include <muParser.h>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/model/problem_spec.hpp"
 
 namespace hpcontact::model {
 
@@ -53,6 +54,9 @@ double Expression::operator()(double a, double b) const {
   }
   HPC_REQUIRE(std::isfinite(v), InputError, where_, ": '", text_, "' is not finite at (", a, ", ",
               b, ")");
+  HPC_REQUIRE(std::abs(v) <= kMaxMagnitude, InputError, where_, ": '", text_, "' is ", v, " at (",
+              a, ", ", b, "), beyond the magnitude ", kMaxMagnitude,
+              " of input values (products of them must stay within double precision)");
   return v;
 }
 
