@@ -30,16 +30,19 @@ def test_error_inside_the_parallel_assembly_is_reported(hpcontact, root, tmp_pat
     assert "nu = 0.49999999999999994" in r.stderr, r.stderr
 
 
-@pytest.mark.parametrize("value", ["bodies[0].material.E=4.9e-324",
-                                   "bodies[0].material.thickness=1e-320",
-                                   "bodies[0].material.E=1e308",
-                                   "bodies[0].loads[0].resultant=1e308"])
-def test_values_beyond_double_precision_are_refused_with_their_key(hpcontact, root, tmp_path, value):
-    """E, thickness or a load at the ends of double precision (which aborted the process or ran
-    into 'not finite' without naming the key) are refused as input: exit 2 for --set, naming the
-    key, the value and why."""
+@pytest.mark.parametrize("case, value", [(BLOCK, "bodies[0].material.E=4.9e-324"),
+                                         (BLOCK, "bodies[0].material.thickness=1e-320"),
+                                         (BLOCK, "bodies[0].material.E=1e308"),
+                                         (BLOCK, "bodies[0].loads[0].resultant=1e308"),
+                                         (HERTZ, "contact[0].penalty=1e308"),
+                                         (HERTZ, "bodies[0].constraints[1].uy=-1e308")])
+def test_values_beyond_double_precision_are_refused_with_their_key(hpcontact, root, tmp_path, case,
+                                                                   value):
+    """E, thickness, a load, a penalty or a displacement at the ends of double precision (which
+    aborted the process, or ran into 'the residual is not finite' without naming the key) are
+    refused as input: exit 2 for --set, naming the key, the value and why."""
     out = tmp_path / "out"
-    r = hpcontact("run", os.path.join(root, BLOCK), "--out", out, "-q", "--set", value)
+    r = hpcontact("run", os.path.join(root, case), "--out", out, "-q", "--set", value)
     assert r.returncode == 2, r.stderr
     key, shown = value.split("=")
     assert f"{key} (from --set): must be 0 or of magnitude between 1e-100 and 1e+100 (got {shown})" \

@@ -413,7 +413,8 @@ const std::vector<KeySpec>& input_schema() {
               "seed's 0.5; 0.17 is the classical optimum for corner singularities).",
        .lower = greater_than(0), .upper = less_than(1)},
       {.path = "adapt.steps", .type = T::integer, .default_yaml = "8",
-       .doc = "hp: refinement steps.", .lower = at_least(1), .upper = at_most(40)},
+       .doc = "hp: refinement steps; with adapt.factor, factor^steps at least 1e-11 (see Limits).",
+       .lower = at_least(1), .upper = at_most(40)},
       {.path = "adapt.degree", .type = T::choice, .default_yaml = "rising",
        .doc = "hp: rising: min_degree at Γ* and one more per layer away from it (elements far "
               "from Γ* get min_degree + steps + 1); constant: discretization.degree everywhere.",
@@ -596,7 +597,9 @@ std::string input_schema_markdown() {
         "two bodies) at most "
      << kMaxContactPoints << ", points of solution.vtu (elements × (vtu_subdivisions + 1)²) at "
         "most "
-     << kMaxVtuPoints << ".\n";
+     << kMaxVtuPoints << "; hp: the smallest elements, adapt.factor ^ adapt.steps of the first "
+        "ones, at least "
+     << kMinHpScale << " (at factor 0.5 36 steps, at 0.17 14).\n";
   md << "\n## The output folder\n\n"
         "`hpcontact run` (and `hpcontact study`, and the Python module's `run(out=...)`) writes "
         "its results into an output folder (`--out`, default `results/<problem file name>`):\n\n"

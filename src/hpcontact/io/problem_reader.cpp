@@ -134,6 +134,21 @@ class SpecBuilder {
               "the contact Gauss points (contact edges × contact[].quadrature)",
               "every Newton iteration intersects each with the other side; lower "
               "contact[].quadrature");
+    if (spec.adapt.method == AdaptMethod::hp) {
+      // The smallest elements are factor^steps of the first ones; below kMinHpScale their arcs
+      // span less than the geometry resolves (arc angles of 1e-12).
+      const double scale = std::pow(spec.adapt.factor, spec.adapt.steps);
+      if (scale < kMinHpScale) {
+        int most = 0;
+        while (std::pow(spec.adapt.factor, most + 1) >= kMinHpScale) ++most;
+        std::ostringstream os;
+        os << std::setprecision(3) << "the smallest elements after " << spec.adapt.steps
+           << " steps at adapt.factor " << spec.adapt.factor << " are " << scale
+           << " of the first ones, below the " << kMinHpScale
+           << " the geometry resolves: at most " << most << " steps at this factor";
+        source_.fail(root["adapt"]["steps"], "adapt.steps", os.str());
+      }
+    }
     if (spec.output.vtu)
       require(vtu_points, kMaxVtuPoints, root["output"]["vtu_subdivisions"],
               "output.vtu_subdivisions", "the points of solution.vtu (elements × (subdivisions + 1)²)",
@@ -315,6 +330,7 @@ class SpecBuilder {
       c.where = source_.where(node, item_path);
       b.constraints.push_back(std::move(c));
     }
+    require_single_prescription(b, list, path);
   }
 
   void read_loads(const YAML::Node& list, const std::string& path, BodySpec& b) {
@@ -326,7 +342,7 @@ class SpecBuilder {
       const YAML::Node node = list[i];
       const std::string item_path = join_index(path, i);
       EdgeLoadSpec load;
-      load.edge_sets = edge_set_names(node["edges"], item_path + ".edges", b);
+      load.edge_sets = edge_set_names(node["edges"], item_path + ".edges", b, true);
       if (bool(node["pressure"]) == bool(node["traction"]))
         source_.fail(node, item_path,
                      std::string("must have exactly one of 'pressure' and 'traction' (got ") +
@@ -374,10 +390,18 @@ class SpecBuilder {
   }
 
   /// The edge set names of a constraint or load, each one defined in the body.
+  /// The edge set names of a list; each must exist and be named once. With `each_edge_once` (a
+  /// load, a contact side: what an edge contributes would count twice) no edge may be in two of
+  /// the sets.
   std::vector<std::string> edge_set_names(const YAML::Node& list, const std::string& path,
-                                          const BodySpec& b) {
+                                          const BodySpec& b, bool each_edge_once = false) {
     std::vector<std::string> names;
+    std::map<Edge, std::string> set_of;  // edge -> the listed set that has it
     for (std::size_t k = 0; k < list.size(); ++k) {
+      if (std::find(names.begin(), names.end(), list[k].Scalar()) != names.end())
+        source_.fail(list[k], join_index(path, k),
+                     "edge set listed twice (got '" + list[k].Scalar() + "')" +
+                         (each_edge_once ? ": its edges would count twice" : ""));
       names.push_back(list[k].Scalar());
       const bool defined =
           std::any_of(b.edge_sets.begin(), b.edge_sets.end(),
@@ -389,8 +413,52 @@ class SpecBuilder {
                      "no such edge set (defined: " + (known.empty() ? "none" : known) + ") (got '" +
                          names.back() + "')");
       }
+      if (!each_edge_once) continue;
+      for (const EdgeSetSpec& set : b.edge_sets) {
+        if (set.name != names.back()) continue;
+        for (const auto& e : set.edges) {
+          const auto [at, inserted] = set_of.emplace(undirected(e), set.name);
+          if (!inserted)
+            source_.fail(list[k], join_index(path, k),
+                         "the edge " + shown_pair(e) + " of edge set '" + set.name +
+                             "' is in edge set '" + at->second +
+                             "' too: it would count twice (got '" + set.name + "')");
+        }
+      }
     }
     return names;
+  }
+
+  /// Two constraints of a body may not prescribe the same component on the same edge or node:
+  /// one of them would silently win.
+  void require_single_prescription(const BodySpec& b, const YAML::Node& list,
+                                   const std::string& path) {
+    std::map<std::pair<std::string, int>, std::size_t> first;  // (what, component) -> constraint
+    for (std::size_t i = 0; i < b.constraints.size(); ++i) {
+      const ConstraintSpec& c = b.constraints[i];
+      std::vector<std::string> places;
+      for (const auto& name : c.edge_sets)
+        for (const EdgeSetSpec& set : b.edge_sets)
+          if (set.name == name)
+            for (const auto& e : set.edges) {
+              const Edge u = undirected(e);
+              places.push_back("edge " + shown_pair({u.first, u.second}));
+            }
+      for (int n : c.nodes) places.push_back("node " + std::to_string(n));
+      std::sort(places.begin(), places.end());
+      places.erase(std::unique(places.begin(), places.end()), places.end());
+      for (int comp = 0; comp < 2; ++comp) {
+        if (!(comp == 0 ? c.ux : c.uy)) continue;
+        for (const auto& place : places) {
+          const auto [at, inserted] = first.emplace(std::make_pair(place, comp), i);
+          if (!inserted)
+            source_.fail(list[i], join_index(path, i),
+                         std::string("prescribes ") + (comp == 0 ? "ux" : "uy") + " on " + place +
+                             ", which " + join_index(path, at->second) +
+                             " prescribes already (one of them would silently win)");
+        }
+      }
+    }
   }
 
   void require_node(const YAML::Node& node, const std::string& path, int id,
@@ -514,7 +582,7 @@ class SpecBuilder {
       ContactPairSpec c;
       c.body = node["body"].Scalar();
       const BodySpec& body = body_named(node["body"], item_path + ".body", bodies);
-      c.edge_sets = edge_set_names(node["edges"], item_path + ".edges", body);
+      c.edge_sets = edge_set_names(node["edges"], item_path + ".edges", body, true);
       c.obstacle = obstacle(node["obstacle"], item_path + ".obstacle", bodies, c.body);
       c.penalty = number(node["penalty"]);
       c.quadrature = integer(node["quadrature"]);
@@ -565,7 +633,7 @@ class SpecBuilder {
       if (o.body == self)
         source_.fail(node["body"], path + ".body",
                      "must be another body than the contact's own (got '" + o.body + "')");
-      o.edge_sets = edge_set_names(node["edges"], path + ".edges", other);
+      o.edge_sets = edge_set_names(node["edges"], path + ".edges", other, true);
     }
     o.point = point(node["point"]);
     o.normal = point(node["normal"]);

@@ -16,6 +16,7 @@ constexpr double kMaxUnknowns = 5e7;          ///< elements × 2(p_xi+1)(p_eta+1
 constexpr double kMaxQuadraturePoints = 2e8;  ///< elements × (p + quadrature_extra)²
 constexpr double kMaxContactPoints = 1e6;     ///< contact edges × contact[].quadrature
 constexpr double kMaxVtuPoints = 1e7;         ///< elements × (vtu_subdivisions + 1)²
+constexpr double kMinHpScale = 1e-11;         ///< hp: adapt.factor ^ adapt.steps
 /// Largest problem or study file read (bytes): its YAML tree takes ~150 bytes per byte.
 constexpr std::size_t kMaxProblemFileBytes = 16u << 20;
 

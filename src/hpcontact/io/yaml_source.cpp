@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+
+#include <yaml-cpp/depthguard.h>
 
 #include "hpcontact/core/error.hpp"
 
@@ -59,16 +62,71 @@ void YamlSource::fail(const YAML::Node& node, const std::string& path,
   throw InputError(ref.str() + ": " + what);
 }
 
+namespace {
+
+/// The length of the UTF-8 sequence at text[i], or 0 if it is not a valid one (overlong forms,
+/// surrogates and code points above U+10FFFF included).
+std::size_t utf8_sequence(std::string_view text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char c = byte(i);
+  if (c < 0x80) return 1;
+  const std::size_t n = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3
+                        : c >= 0xf0 && c <= 0xf4                ? 4
+                                                                : 0;
+  if (n == 0 || i + n > text.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k)
+    if ((byte(i + k) & 0xc0) != 0x80) return 0;
+  const unsigned char c1 = byte(i + 1);
+  if ((c == 0xe0 && c1 < 0xa0) || (c == 0xed && c1 > 0x9f) || (c == 0xf0 && c1 < 0x90) ||
+      (c == 0xf4 && c1 > 0x8f))
+    return 0;
+  return n;
+}
+
+}  // namespace
+
+void require_utf8(std::string_view text, const std::string& file_label, const std::string& what) {
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = utf8_sequence(text, i);
+    if (n == 0) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02x", static_cast<unsigned char>(text[i]));
+      throw InputError(file_label + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                       ": the " + what + " is not UTF-8 text (byte " + hex +
+                       "): write it in UTF-8");
+    }
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+    i += n;
+  }
+}
+
 YAML::Node load_yaml_map(const std::string& text, const std::string& file_label,
                          const std::string& what, const std::string& expected) {
-  YAML::Node root;
+  require_utf8(text, file_label, what);
+  std::vector<YAML::Node> documents;
   try {
-    root = YAML::Load(text);
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::DeepRecursion& e) {
+    throw InputError(file_label + ":" + std::to_string(e.mark.line + 1) + ":" +
+                     std::to_string(e.mark.column + 1) + ": lists and maps nested " +
+                     std::to_string(e.depth()) + " deep (or more); a " + what +
+                     " needs a few levels");
   } catch (const YAML::ParserException& e) {
     throw InputError(file_label + ":" + std::to_string(e.mark.line + 1) + ":" +
                      std::to_string(e.mark.column + 1) +
                      ": YAML syntax error: " + one_line(e.msg, 200));
   }
+  if (documents.size() > 1)
+    throw InputError(file_label + ":" + std::to_string(documents[1].Mark().line + 1) +
+                     ": a second YAML document ('---'); a " + what +
+                     " is one document: remove the line '---' or split the file");
+  YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
   if (!root.IsDefined() || root.IsNull()) throw InputError(file_label + ": empty " + what);
   if (!root.IsMap())
     throw InputError(file_label + ": must be " + expected + " (got " + quoted_value(root) + ")");
