@@ -72,28 +72,12 @@ def test_memory_running_out_is_reported_not_a_crash(exe, root, tmp_path):
     assert out_of_memory >= 3
 
 
-OVERFLOW = """case: overflow
-bodies:
-  - name: block
-    material: {E: 1e100, nu: 0.3}
-    nodes: {1: [0, 0], 2: [1e-99, 0], 3: [1e-99, 1e-99], 4: [0, 1e-99]}
-    elements: {1: [1, 2, 3, 4]}
-    edge_sets: {bottom: [[1, 2]], top: [[3, 4]]}
-    constraints:
-      - {edges: [bottom], ux: 0, uy: 0}
-      - {edges: [top], uy: -1e100}
-discretization: {method: p, degree: 2}
-"""
-
-
 def test_solution_that_is_not_finite_is_an_error(hpcontact, root, tmp_path):
     """Values each within the input's bounds whose products overflow (a strain of 1e199 in an
     element 1e-99 wide) gave exit 0, converged: true and energy NaN; every result is now checked
     before it is reported. A formula whose value leaves the bounds is refused with its key."""
-    case = tmp_path / "overflow.yaml"
-    case.write_text(OVERFLOW)
     out = tmp_path / "out"
-    r = hpcontact("run", case, "--out", out, "-q")
+    r = hpcontact("run", os.path.join(root, "tests/cli/data/overflow.yaml"), "--out", out, "-q")
     failed_cleanly(r, out)
     assert "the solution is not finite (strain energy" in r.stderr, r.stderr
     assert "too large for double precision" in r.stderr, r.stderr

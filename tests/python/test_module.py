@@ -301,20 +301,6 @@ def test_interrupted_run_leaves_the_earlier_results(root, lame_file, tmp_path):
     assert not [p for p in out.iterdir() if p.name.startswith(".hpcontact-staging")]
 
 
-OVERFLOW = """case: overflow
-bodies:
-  - name: block
-    material: {E: 1e100, nu: 0.3}
-    nodes: {1: [0, 0], 2: [1e-99, 0], 3: [1e-99, 1e-99], 4: [0, 1e-99]}
-    elements: {1: [1, 2, 3, 4]}
-    edge_sets: {bottom: [[1, 2]], top: [[3, 4]]}
-    constraints:
-      - {edges: [bottom], ux: 0, uy: 0}
-      - {edges: [top], uy: -1e100}
-discretization: {method: p, degree: 2}
-"""
-
-
 def test_numerical_breakdowns_raise_solver_error(root):
     """An exception inside the parallel assembly (nu lost to round-off) killed the interpreter,
     and values whose products overflow (a strain of 1e199 in an element 1e-99 wide) returned
@@ -324,7 +310,7 @@ def test_numerical_breakdowns_raise_solver_error(root):
 import hpcontact
 block = hpcontact.Problem.from_file({os.path.join(root, "examples", "neumann", "block.yaml")!r},
                                     set=["bodies[0].material.nu=0.49999999999999994"])
-overflow = hpcontact.Problem.from_yaml({OVERFLOW!r}, label="overflow.yaml")
+overflow = hpcontact.Problem.from_file({os.path.join(root, "tests", "cli", "data", "overflow.yaml")!r})
 for problem, cause in ((block, "static condensation"), (overflow, "the solution is not finite")):
     try:
         problem.run()
