@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/io/text_file.hpp"
 #include "hpcontact/post/output_file.hpp"
 
 namespace hpcontact::driver {
@@ -32,7 +33,7 @@ const char* const kManifest = ".hpcontact-manifest";
 const char* const kManifestNew = ".hpcontact-manifest.new";
 const char* const kStagingPrefix = ".hpcontact-staging-";
 /// A manifest is a few hundred lines; anything much larger was not written by us.
-constexpr off_t kManifestMaxBytes = 16 << 20;
+constexpr std::size_t kManifestMaxBytes = 16 << 20;
 
 /// A file descriptor closed when it goes out of scope.
 class Fd {
@@ -223,26 +224,9 @@ void OutputFolder::lock() {
 }
 
 void OutputFolder::read_manifest() {
-  const Fd fd(::openat(dir_, kManifest, O_RDONLY | O_NOFOLLOW | O_CLOEXEC));
-  if (fd.get() < 0) {
-    HPC_REQUIRE(errno == ENOENT, IoError, shown(kManifest), ": cannot read the manifest: ",
-                errno == ELOOP ? "it is a symbolic link, which is not followed" : system_error());
-    return;
-  }
-  struct stat st;
-  HPC_REQUIRE(::fstat(fd.get(), &st) == 0 && S_ISREG(st.st_mode) && st.st_size <= kManifestMaxBytes,
-              IoError, shown(kManifest), ": not a manifest hpcontact wrote (not a regular file of "
-              "at most ", kManifestMaxBytes, " bytes); remove it and the results it lists");
-  std::string text(static_cast<std::size_t>(st.st_size), '\0');
-  std::size_t got = 0;
-  while (got < text.size()) {
-    const ssize_t n = ::read(fd.get(), text.data() + got, text.size() - got);
-    if (n < 0 && errno == EINTR) continue;
-    HPC_REQUIRE(n >= 0, IoError, shown(kManifest), ": cannot read the manifest: ", system_error());
-    if (n == 0) break;
-    got += static_cast<std::size_t>(n);
-  }
-  text.resize(got);
+  if (kind_of(dir_, kManifest) == Kind::missing) return;
+  const std::string text =
+      io::read_bounded_file(shown(kManifest), "manifest", kManifestMaxBytes, false);
   std::stringstream lines(text);
   int number = 0;
   for (std::string line; std::getline(lines, line);) {

@@ -24,9 +24,12 @@ std::string megabytes(double bytes) {
 }  // namespace
 
 std::string read_bounded_file(const std::string& path, const std::string& what,
-                              std::size_t max_bytes) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-  if (fd < 0) throw IoError(path + ": cannot open " + what + ": " + std::strerror(errno));
+                              std::size_t max_bytes, bool follow_link) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | (follow_link ? 0 : O_NOFOLLOW));
+  if (fd < 0)
+    throw IoError(path + ": cannot open " + what + ": " +
+                  (errno == ELOOP && !follow_link ? "it is a symbolic link, which is not followed"
+                                                  : std::strerror(errno)));
   struct Closer {
     int fd;
     ~Closer() { ::close(fd); }

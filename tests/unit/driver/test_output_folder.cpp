@@ -131,3 +131,29 @@ TEST(OutputFolder, SecondWriterIsRefusedWhileTheFirstHoldsTheLock) {
   EXPECT_NO_THROW(driver::OutputFolder(dir.string(), driver::run_layout()));
   fs::remove_all(dir);
 }
+
+// A manifest, lock file or staging folder that is a symbolic link is not followed: the folder
+// is refused, and the link's target is neither read nor written.
+TEST(OutputFolder, BookkeepingLinksAreNotFollowed) {
+  const auto dir = temp_folder("links");
+  const auto victim = temp_folder("links-victim") / "victim.txt";
+  post::write_text_file(victim.string(), "summary.json\n");
+  for (const char* name : {".hpcontact-manifest", ".hpcontact-lock"}) {
+    fs::create_symlink(victim, dir / name);
+    try {
+      driver::OutputFolder folder(dir.string(), driver::run_layout());
+      FAIL() << "followed " << name;
+    } catch (const IoError& e) {
+      EXPECT_NE(std::string(e.what()).find("symbolic link"), std::string::npos) << e.what();
+    }
+    fs::remove(dir / ".hpcontact-manifest");
+    fs::remove(dir / ".hpcontact-lock");
+  }
+  // A link named like a staging folder is not ours to clean up: it and its target stay.
+  fs::create_symlink(victim.parent_path(), dir / ".hpcontact-staging-planted");
+  { driver::OutputFolder folder(dir.string(), driver::run_layout()); }
+  EXPECT_TRUE(fs::is_symlink(dir / ".hpcontact-staging-planted"));
+  EXPECT_EQ(read(victim), "summary.json\n");
+  fs::remove_all(dir);
+  fs::remove_all(victim.parent_path());
+}
