@@ -72,7 +72,12 @@ def test_second_yaml_document_is_refused(hpcontact, root, tmp_path):
     case.write_text(open(os.path.join(root, LAME)).read() + "---\ncase: another\n")
     r = hpcontact("check", case)
     assert r.returncode == 1, r.stderr
-    assert "a second YAML document ('---'); a problem file is one document" in r.stderr, r.stderr
+    lines = open(os.path.join(root, LAME)).read().count("\n")
+    assert f"two.yaml:{lines + 1}: a second YAML document starts here; a problem file is one " \
+           "document" in r.stderr, r.stderr
+    # A marker before the content, or after it with nothing more, is one document.
+    case.write_text("---\n" + open(os.path.join(root, LAME)).read() + "...\n---\n# done\n")
+    assert hpcontact("check", case).returncode == 0
 
 
 @pytest.mark.parametrize("x", ["1.5*s", "4*s"])

@@ -83,6 +83,43 @@ std::size_t utf8_sequence(std::string_view text, std::size_t i) {
   return n;
 }
 
+/// InputError if the text holds a second YAML document: content after a line '---' or '...' at
+/// column 0 that follows the first document's content (a document marker wherever it stands:
+/// YAML forbids them inside scalars; '---' before any content starts the one document, and
+/// markers with nothing after them are harmless). Found by reading the lines: yaml-cpp's
+/// LoadAll loops forever on some malformed input.
+void require_one_document(std::string_view text, const std::string& file_label,
+                          const std::string& what) {
+  bool content = false;       // the first document has begun
+  std::size_t boundary = 0;   // the line of a marker after it, 0 if none
+  std::size_t number = 0;
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    const std::string_view line = text.substr(start, end - start);
+    start = end + 1;
+    ++number;
+    const auto rest_from = [&](std::size_t at) {
+      const std::size_t k = line.find_first_not_of(" \t\r", at);
+      return k == std::string_view::npos || line[k] == '#' ? std::string_view() : line.substr(k);
+    };
+    const bool marker = (line.rfind("---", 0) == 0 || line.rfind("...", 0) == 0) &&
+                        (line.size() == 3 || line[3] == ' ' || line[3] == '\t' || line[3] == '\r');
+    bool has_content;
+    if (marker) {
+      if (content && !boundary) boundary = number;
+      has_content = !rest_from(3).empty();  // "--- {a: 1}": the document it starts
+    } else {
+      has_content = !rest_from(0).empty() && !(!content && line[0] == '%');  // not a directive
+    }
+    if (!has_content) continue;
+    if (boundary)
+      throw InputError(file_label + ":" + std::to_string(boundary) +
+                       ": a second YAML document starts here; a " + what +
+                       " is one document: remove the line '---' (or '...') or split the file");
+    content = true;
+  }
+}
+
 }  // namespace
 
 void require_utf8(std::string_view text, const std::string& file_label, const std::string& what) {
@@ -109,9 +146,10 @@ void require_utf8(std::string_view text, const std::string& file_label, const st
 YAML::Node load_yaml_map(const std::string& text, const std::string& file_label,
                          const std::string& what, const std::string& expected) {
   require_utf8(text, file_label, what);
-  std::vector<YAML::Node> documents;
+  require_one_document(text, file_label, what);
+  YAML::Node root;
   try {
-    documents = YAML::LoadAll(text);
+    root = YAML::Load(text);
   } catch (const YAML::DeepRecursion& e) {
     throw InputError(file_label + ":" + std::to_string(e.mark.line + 1) + ":" +
                      std::to_string(e.mark.column + 1) + ": lists and maps nested " +
@@ -122,11 +160,6 @@ YAML::Node load_yaml_map(const std::string& text, const std::string& file_label,
                      std::to_string(e.mark.column + 1) +
                      ": YAML syntax error: " + one_line(e.msg, 200));
   }
-  if (documents.size() > 1)
-    throw InputError(file_label + ":" + std::to_string(documents[1].Mark().line + 1) +
-                     ": a second YAML document ('---'); a " + what +
-                     " is one document: remove the line '---' or split the file");
-  YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
   if (!root.IsDefined() || root.IsNull()) throw InputError(file_label + ": empty " + what);
   if (!root.IsMap())
     throw InputError(file_label + ": must be " + expected + " (got " + quoted_value(root) + ")");
