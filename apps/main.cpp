@@ -5,18 +5,23 @@
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <new>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/driver/contact_compare.hpp"
 #include "hpcontact/driver/run.hpp"
 #include "hpcontact/driver/study.hpp"
 #include "hpcontact/io/input_schema.hpp"
@@ -52,24 +57,48 @@ class JsonLog {
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
 };
 
+/// Text for the terminal: control characters (an escape sequence in a case name or a value) as
+/// \xNN, so that nothing the input holds can drive the terminal. Newlines and tabs stay.
+std::string printable(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if ((u < 0x20 && c != '\n' && c != '\t') || u == 0x7f) {
+      char hex[5];
+      std::snprintf(hex, sizeof hex, "\\x%02x", u);
+      out += hex;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+/// The output folder: --out, else results/<file name without extension>.
+std::string output_folder(const std::string& out_dir, const std::string& file) {
+  return out_dir.empty() ? "results/" + std::filesystem::path(file).stem().string() : out_dir;
+}
+
 /// Exit codes: 0 success, 1 the problem could not be solved (bad input, mesh, numerics, I/O),
 /// 2 the command line itself is wrong.
 constexpr int kFailed = 1;
 
 int run_command(const std::string& file, std::string out_dir, const std::vector<std::string>& sets,
                 bool quiet, const JsonLog* log) {
-  if (out_dir.empty()) out_dir = "results/" + std::filesystem::path(file).stem().string();
-  driver::prepare_output_folder(out_dir);  // before reading: bad input must not leave an old summary
+  out_dir = output_folder(out_dir, file);
+  // Opened (locked, checked) before the problem is read: a folder that holds the problem file
+  // is refused before anything else. The earlier results stay until this run succeeds.
+  driver::OutputFolder folder(out_dir, driver::run_layout(), {{file, "the problem file"}});
   const auto read = io::read_problem_full(file, sets);
   driver::RunOptions options;
-  options.out_dir = out_dir;
+  options.folder = &folder;
   options.effective_input = read.effective_yaml;
   if (log) {
     options.progress = [log](const std::string& line) { log->progress(line); };
     log->event("start", {{"case", read.spec.case_name}, {"file", file}, {"out", out_dir}});
   } else if (!quiet) {
-    options.progress = [](const std::string& line) { std::cout << "  " << line << '\n'; };
-    std::cout << "hpcontact: " << file << " (" << read.spec.case_name << ")\n";
+    options.progress = [](const std::string& line) { std::cout << "  " << printable(line) << '\n'; };
+    std::cout << "hpcontact: " << printable(file) << " (" << printable(read.spec.case_name) << ")\n";
   }
   const auto result = driver::run_problem(read.spec, options);
   const auto& s = result.summary;
@@ -84,7 +113,7 @@ int run_command(const std::string& file, std::string out_dir, const std::vector<
       if (s.error->energy_norm_rel_percent)
         std::cout << " (error norm " << *s.error->energy_norm_rel_percent << " %)";
     }
-    std::cout << "\n  results in " << out_dir << "/ (summary.json";
+    std::cout << "\n  results in " << printable(out_dir) << "/ (summary.json";
     if (!read.spec.contact.empty()) std::cout << ", contact.csv";
     if (read.spec.output.vtu) std::cout << ", solution.vtu";
     std::cout << ", input.yaml), " << s.wall_time_s << " s\n";
@@ -96,9 +125,10 @@ int check_command(const std::string& file, const std::vector<std::string>& sets)
   const auto spec = io::read_problem(file, sets);
   const auto d = model::discretize(spec);
   model::require_held(spec, d);
-  std::cout << file << ": case '" << spec.case_name << "', " << d.method << "-version\n";
+  std::cout << printable(file) << ": case '" << printable(spec.case_name) << "', " << d.method
+            << "-version\n";
   for (const auto& b : d.bodies) {
-    std::cout << "  body '" << b.name << "': " << b.mesh.n_nodes() << " nodes, " << b.mesh.n_quads()
+    std::cout << "  body '" << printable(b.name) << "': " << b.mesh.n_nodes() << " nodes, " << b.mesh.n_quads()
               << " elements, " << b.mesh.n_edges() << " edges, degrees";
     for (int q = 0; q < b.mesh.n_quads(); ++q) {
       const auto& es = b.dofs.element(q);
@@ -116,10 +146,10 @@ int check_command(const std::string& file, const std::vector<std::string>& sets)
   const auto pairs = model::make_contact_pairs(spec, d);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const auto& pair = pairs[k];
-    std::cout << "  contact[" << k << "]: body '" << d.bodies[pair.body].name << "', "
+    std::cout << "  contact[" << k << "]: body '" << printable(d.bodies[pair.body].name) << "', "
               << pair.edges.size() << " edges, " << pair.points.size() << " Gauss points, against ";
     if (pair.other >= 0)
-      std::cout << "body '" << d.bodies[pair.other].name << "' (" << pair.other_points.size()
+      std::cout << "body '" << printable(d.bodies[pair.other].name) << "' (" << pair.other_points.size()
                 << " Gauss points)";
     else
       std::cout << "a rigid " << (spec.contact[k].obstacle.kind == model::ObstacleKind::plane ? "plane" : "circle");
@@ -127,6 +157,7 @@ int check_command(const std::string& file, const std::vector<std::string>& sets)
               << (spec.contact[k].friction.law == "none" ? "" : ", friction " + spec.contact[k].friction.law)
               << '\n';
   }
+  driver::require_references(spec);
   return 0;
 }
 
@@ -139,26 +170,27 @@ std::string this_program(const char* argv0) {
 
 int study_command(const std::string& file, std::string out_dir, int jobs, bool quiet,
                   const char* argv0) {
+  out_dir = output_folder(out_dir, file);
+  driver::OutputFolder folder(out_dir, driver::study_layout(), {{file, "the study file"}});
   const auto study = io::read_study(file);
-  if (out_dir.empty()) out_dir = "results/" + std::filesystem::path(file).stem().string();
   driver::StudyOptions options;
   options.program = this_program(argv0);
-  options.out_dir = out_dir;
+  options.folder = &folder;
   options.jobs = jobs > 0 ? jobs : std::max(1u, std::thread::hardware_concurrency());
   const bool bar = !quiet && isatty(STDOUT_FILENO);
   const auto t0 = std::chrono::steady_clock::now();
   int failed = 0;
   if (!quiet)
-    std::cout << "hpcontact: study " << file << " ('" << study.name << "'): " << study.runs.size()
+    std::cout << "hpcontact: study " << printable(file) << " ('" << printable(study.name) << "'): " << study.runs.size()
               << " runs, " << options.jobs << " at a time, into " << out_dir << "/\n";
   options.finished = [&](const driver::StudyRowResult& row, int done, int total) {
     failed += !row.converged();
     if (quiet) return;
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::ostringstream line;
-    line << (row.converged() ? "ok     " : "FAILED ") << row.run.label << " (" << std::setprecision(3)
+    line << (row.converged() ? "ok     " : "FAILED ") << printable(row.run.label) << " (" << std::setprecision(3)
          << row.seconds << " s)";
-    if (!row.converged()) line << ": " << row.message;
+    if (!row.converged()) line << ": " << printable(row.message);
     if (bar) {
       const int width = 30, filled = width * done / total;
       std::cout << "\r\033[K" << line.str() << "\n[" << std::string(filled, '#')
@@ -169,7 +201,16 @@ int study_command(const std::string& file, std::string out_dir, int jobs, bool q
       std::cout << "  [" << done << "/" << total << "] " << line.str() << '\n';
     }
   };
-  const auto rows = driver::run_study(study, options);
+  const auto outcome = driver::run_study(study, options);
+  if (outcome.signal) {
+    // The runs were stopped and waited for; the study ends by the signal it was sent.
+    std::cerr << "\nhpcontact: study stopped by " << strsignal(outcome.signal)
+              << ": its running runs were stopped, no table written in " << out_dir << "/\n";
+    std::signal(outcome.signal, SIG_DFL);
+    std::raise(outcome.signal);
+    return kFailed;
+  }
+  const auto& rows = outcome.rows;
   if (!quiet)
     std::cout << "  " << rows.size() - failed << " of " << rows.size() << " runs converged; table in "
               << out_dir << "/study.csv, summaries in " << out_dir << "/study.json, runs in "
@@ -224,11 +265,19 @@ int main(int argc, char** argv) {
     std::cout << io::input_schema_markdown();
     return 0;
   }
+  // A closed stdout (`hpcontact run ... | head`) must not kill a solve half way: without
+  // SIGPIPE the progress lines fail quietly, the run writes its results and says so on stderr.
+  std::signal(SIGPIPE, SIG_IGN);
   try {
     if (*run) {
       const JsonLog log;
       try {
-        return run_command(file, out_dir, sets, quiet, log_json ? &log : nullptr);
+        const int code = run_command(file, out_dir, sets, quiet, log_json ? &log : nullptr);
+        if (!std::cout)
+          std::cerr << "hpcontact: the standard output was closed during the run; the run went "
+                       "on, and its results are in "
+                    << printable(output_folder(out_dir, file)) << "/\n";
+        return code;
       } catch (const std::exception& e) {
         if (log_json) log.event("error", {{"message", e.what()}});
         throw;
@@ -239,13 +288,18 @@ int main(int argc, char** argv) {
     std::cerr << "hpcontact: no sub-command given\n\n" << app.help();
     return 2;
   } catch (const CommandLineError& e) {
-    std::cerr << "hpcontact: error: " << e.what() << "\n\n" << (*run ? run : check)->help();
+    std::cerr << "hpcontact: error: " << printable(e.what()) << "\n\n" << (*run ? run : check)->help();
     return 2;
   } catch (const Error& e) {
-    std::cerr << "hpcontact: error: " << e.what() << '\n';
+    std::cerr << "hpcontact: error: " << printable(e.what()) << '\n';
+    return kFailed;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "hpcontact: error: out of memory: the problem needs more memory than this "
+                 "process may use (fewer elements, a lower degree or fewer "
+                 "output.vtu_subdivisions need less)\n";
     return kFailed;
   } catch (const std::exception& e) {
-    std::cerr << "hpcontact: internal error: " << e.what() << '\n';
+    std::cerr << "hpcontact: internal error: " << printable(e.what()) << '\n';
     return kFailed;
   }
 }

@@ -320,8 +320,11 @@ and "dofs_condensed" (after condensing internal modes). For an adaptive run, of 
            R"(Solves the problem and returns a Result.
 
 out: None writes nothing; a folder (str or os.PathLike) gets the files of `hpcontact run --out` (summary.json,
-contact.csv, pressure.csv, solution.vtu, input.yaml); files of an earlier run there are removed
-first. quiet=False prints the progress lines. Raises SolverError when the solution does not
+contact.csv, pressure.csv, solution.vtu, input.yaml), as the command line writes them: they
+replace the earlier run's files only when this run has succeeded, and the folder is refused
+(Error) if it holds the problem or reference file, a file with an output name that hpcontact did
+not write, or a link where an output goes, or if another run is writing into it (docs/input.md,
+"The output folder"). quiet=False prints the progress lines. Raises SolverError when the solution does not
 converge (with out, the last converged step is kept in out/last-good/), InputError for input
 found wrong only now (a reference curve), Error otherwise. Ctrl-C stops the run between steps.)")
       .def("__repr__", [](const Problem& p) {

@@ -202,36 +202,6 @@ def test_pressure_plot(hpcontact, root, tmp_path):
     assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 20000
 
 
-def test_failed_run_leaves_no_earlier_summary(hpcontact, root, tmp_path):
-    """A run that fails in a folder where an earlier run succeeded removes the old summary.json,
-    for bad input and for a solver failure alike."""
-    for bad, code in ((["--set", "bodies[0].material.nu=0.5"], 2),
-                      (["--set", "solver.max_iterations=1", "--set", "solver.max_cuts=0"], 1)):
-        ok = hpcontact("run", os.path.join(root, "examples/hertz/p5.yaml"), "--out", tmp_path, "-q")
-        assert ok.returncode == 0 and (tmp_path / "summary.json").exists()
-        r = hpcontact("run", os.path.join(root, "examples/hertz/p5.yaml"), "--out", tmp_path, "-q",
-                      *bad)
-        assert r.returncode == code, r.stderr
-        assert not (tmp_path / "summary.json").exists(), bad
-        assert not (tmp_path / "contact.csv").exists() and not (tmp_path / "solution.vtu").exists()
-
-
-def test_earlier_outputs_are_removed_and_other_files_kept(hpcontact, root, tmp_path):
-    """A failed run's last-good/ and path.csv do not survive the next run in the same folder;
-    files the program does not write stay."""
-    case = os.path.join(root, "examples/hertz/p5.yaml")
-    r = hpcontact("run", case, "--out", tmp_path, "-q", "--set", "solver.max_iterations=1",
-                  "--set", "solver.max_cuts=0", "--set", "solver.load_steps=2")
-    assert r.returncode == 1
-    (tmp_path / "notes.txt").write_text("mine")
-    (tmp_path / "last-good" / "notes.txt").parent.mkdir(exist_ok=True)
-    (tmp_path / "last-good" / "notes.txt").write_text("mine too")
-    r = hpcontact("run", case, "--out", tmp_path, "-q", "--set", "bodies[0].material.nu=0.5")
-    assert r.returncode == 2
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["last-good", "notes.txt"]
-    assert [p.name for p in (tmp_path / "last-good").iterdir()] == ["notes.txt"]
-
-
 def test_log_json_is_one_event_per_line(hpcontact, root, tmp_path):
     """--log-json: every stdout line is a JSON object; a contact run reports its Newton
     iterations and load steps, and ends with done (or error, for a failed run)."""

@@ -262,3 +262,71 @@ def test_example_hertz_script(root, tmp_path):
     png = tmp_path / "hertz-pressure.png"
     assert png.exists() and png.stat().st_size > 10_000
     assert "hertz-p8: 544 DOF, resultant 35000.0 N" in r.stdout
+
+
+def test_run_out_never_overwrites_a_users_file(lame_file, tmp_path):
+    """run(out=d) with a user's own d/input.yaml (not the problem file) raises Error naming it
+    and leaves it as it was; so does a folder that holds the problem file itself."""
+    (tmp_path / "input.yaml").write_text("my notes, not hpcontact's\n")
+    problem = hpcontact.Problem.from_file(lame_file)
+    with pytest.raises(hpcontact.Error, match="input.yaml: hpcontact did not write this file"):
+        problem.run(out=tmp_path)
+    assert (tmp_path / "input.yaml").read_text() == "my notes, not hpcontact's\n"
+    assert not (tmp_path / "summary.json").exists()
+    case = tmp_path / "case" / "lame.yaml"
+    case.parent.mkdir()
+    case.write_text(open(lame_file).read())
+    with pytest.raises(hpcontact.Error, match="holds the problem file"):
+        hpcontact.Problem.from_file(case).run(out=case.parent)
+    assert case.read_text() == open(lame_file).read()
+
+
+def test_interrupted_run_leaves_the_earlier_results(root, lame_file, tmp_path):
+    """A run stopped by KeyboardInterrupt (here raised by a timer's signal handler) leaves the
+    folder's earlier results byte-identical and no staging folder behind."""
+    import signal
+
+    out = tmp_path / "out"
+    hpcontact.Problem.from_file(lame_file).run(out=out)
+    before = {p.name: p.read_bytes() for p in out.iterdir() if p.is_file()}
+    long = hpcontact.Problem.from_file(os.path.join(root, "examples", "hertz", "p15.yaml"),
+                                       set=["solver.load_steps=400",
+                                            "contact[0].enforcement=penalty"])
+
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    previous = signal.signal(signal.SIGALRM, interrupt)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.5)
+        with pytest.raises(KeyboardInterrupt):
+            long.run(out=out)
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+    assert {p.name: p.read_bytes() for p in out.iterdir() if p.is_file()} == before
+    assert not [p for p in out.iterdir() if p.name.startswith(".hpcontact-staging")]
+
+
+def test_numerical_breakdowns_raise_solver_error(root):
+    """An exception inside the parallel assembly (nu lost to round-off) killed the interpreter,
+    and values whose products overflow (a strain of 1e199 in an element 1e-99 wide) returned
+    converged: true with energy NaN; both raise SolverError naming the cause. Run in a child
+    interpreter, so that a crash fails this test, not the suite."""
+    script = f"""
+import hpcontact
+block = hpcontact.Problem.from_file({os.path.join(root, "examples", "neumann", "block.yaml")!r},
+                                    set=["bodies[0].material.nu=0.49999999999999994"])
+overflow = hpcontact.Problem.from_file({os.path.join(root, "tests", "cli", "data", "overflow.yaml")!r})
+for problem, cause in ((block, "static condensation"), (overflow, "the solution is not finite")):
+    try:
+        problem.run()
+        print("no error for", problem)
+    except hpcontact.SolverError as e:
+        print("SolverError:", cause in str(e), str(e))
+"""
+    r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120,
+                       env=dict(os.environ, PYTHONPATH=os.path.dirname(hpcontact.__file__)))
+    assert r.returncode == 0, r.stderr
+    lines = r.stdout.splitlines()
+    assert len(lines) == 2 and all(line.startswith("SolverError: True") for line in lines), r.stdout

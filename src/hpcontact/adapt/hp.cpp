@@ -2,6 +2,7 @@
 #include "hpcontact/adapt/hp.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <sstream>
 
 #include "hpcontact/adapt/boundary_track.hpp"
@@ -43,6 +44,18 @@ model::ProblemSpec build_mesh(const model::ProblemSpec& input, const std::vector
   return spec;
 }
 
+/// A mesh refined `step` times that cannot be built (its elements at Γ* have become too small
+/// for the geometry's round-off): an AdaptError that says so, not the input's key it names.
+[[noreturn]] void throw_refinement_failed(int step, const HpOptions& options, const Error& e) {
+  std::ostringstream os;
+  os.precision(3);
+  os << "hp step " << step << ": the mesh refined " << step << " times around Γ* (its smallest "
+     << "elements " << std::pow(options.factor, step) << " of the first ones) cannot be built: "
+     << e.what() << "; fewer adapt.steps (or a larger adapt.factor) stay within what the "
+        "geometry resolves";
+  throw AdaptError(os.str());
+}
+
 }  // namespace
 
 HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptions& options,
@@ -61,8 +74,17 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       SolvedPtr s;
       std::vector<ZoneEnd> ends;
       for (;; ++rec.recentred) {
-        s = solve(step == 0 ? spec : build_mesh(spec, centres, step, options), progress,
-                  s ? s.get() : out.last.get());
+        try {
+          s = solve(step == 0 ? spec : build_mesh(spec, centres, step, options), progress,
+                    s ? s.get() : out.last.get());
+        } catch (const InputError& e) {
+          // The input was good at step 0: what the refined mesh refuses is the refinement's.
+          if (step == 0) throw;
+          throw_refinement_failed(step, options, e);
+        } catch (const MeshError& e) {
+          if (step == 0) throw;
+          throw_refinement_failed(step, options, e);
+        }
         try {
           ends = outer_zone_ends(*s);
           if (step == 0)

@@ -46,6 +46,13 @@ public:
   using Error::Error;
 };
 
+/// The machine's resources ran out: memory for a factorisation, or a size beyond a library's
+/// integers. The message says how large the problem is and what it needed.
+class ResourceError : public Error {
+public:
+  using Error::Error;
+};
+
 /// A numerical failure that ends a computation (singular matrix, NaN in a residual).
 class NumericalError : public Error {
 public:

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <optional>
 #include <sstream>
@@ -12,8 +11,9 @@
 
 #include "hpcontact/analytic/hertz.hpp"
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/io/text_file.hpp"
 #include "hpcontact/post/pressure_error.hpp"
-#include "hpcontact/post/summary.hpp"
+#include "hpcontact/post/output_file.hpp"
 
 namespace hpcontact::driver {
 
@@ -28,8 +28,13 @@ double ReferenceCurve::operator()(double s) const {
 namespace {
 
 ReferenceCurve read_reference(const std::string& path, const std::string& where) {
-  std::ifstream in(path);
-  HPC_REQUIRE(in, InputError, where, ".reference: cannot open '", path, "'");
+  std::string text;
+  try {
+    text = io::read_bounded_file(path, "reference file", io::kMaxReferenceBytes);
+  } catch (const IoError& e) {
+    throw InputError(where + ".reference: " + e.what());
+  }
+  std::istringstream in(text);
   std::string line;
   std::getline(in, line);
   std::vector<std::string> cols;
@@ -71,6 +76,19 @@ ReferenceCurve read_reference(const std::string& path, const std::string& where)
 
 }  // namespace
 
+std::string reference_path(const model::ProblemSpec& spec, const model::PressureCompareSpec& cmp) {
+  namespace fs = std::filesystem;
+  fs::path path(cmp.reference);
+  if (path.is_relative()) path = fs::path(spec.file).parent_path() / path;
+  return path.string();
+}
+
+void require_references(const model::ProblemSpec& spec) {
+  for (const auto& pair : spec.contact)
+    if (pair.compare && !pair.compare->reference.empty())
+      (void)read_reference(reference_path(spec, *pair.compare), pair.compare->where.str());
+}
+
 PressureComparison::PressureComparison(const model::ProblemSpec& spec,
                                        const model::PressureCompareSpec& cmp,
                                        const material::LinearElastic& mat)
@@ -80,12 +98,7 @@ PressureComparison::PressureComparison(const model::ProblemSpec& spec,
       reference_name_(cmp.reference) {
   HPC_REQUIRE(mat.plane == material::Plane::strain, InputError, cmp.where.str(),
               ": Hertz and Shtayerman are implemented for plane strain");
-  if (!cmp.reference.empty()) {
-    namespace fs = std::filesystem;
-    fs::path path(cmp.reference);
-    if (path.is_relative()) path = fs::path(spec.file).parent_path() / path;
-    reference_ = read_reference(path.string(), cmp.where.str());
-  }
+  if (!cmp.reference.empty()) reference_ = read_reference(reference_path(spec, cmp), cmp.where.str());
 }
 
 nlohmann::json PressureComparison::measure(const model::Discretization& d,

@@ -37,6 +37,14 @@ struct PressureCurve {
 /// hertz,shtayerman (the reference is not written: it is an input), 12 significant digits.
 std::string pressure_csv(const PressureCurve& curve);
 
+/// The file a compare section's `reference` names (relative to the problem file's folder).
+/// Precondition: cmp.reference is not empty.
+std::string reference_path(const model::ProblemSpec& spec, const model::PressureCompareSpec& cmp);
+
+/// Reads every compare section's reference file; InputError naming the key and the file if one
+/// cannot be read or is no reference curve. `check` and a run (before solving) call it.
+void require_references(const model::ProblemSpec& spec);
+
 /// The contact pressure of a pair against Hertz, Shtayerman (for the exact circle) and, if the
 /// input names one, a reference curve (docs/cases.md §1). Built once per run: the closed forms and
 /// the reference file are set up when constructed, each solve is then measured with measure().

@@ -1,6 +1,7 @@
 // The pipeline of a run, read top to bottom: discretise -> solve -> post -> write.
 #include "hpcontact/driver/run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -18,6 +19,7 @@
 #include "hpcontact/model/rigid_motion.hpp"
 #include "hpcontact/post/fields.hpp"
 #include "hpcontact/post/contact_vtu.hpp"
+#include "hpcontact/post/output_file.hpp"
 #include "hpcontact/post/vtu.hpp"
 
 namespace hpcontact::driver {
@@ -50,39 +52,39 @@ std::optional<post::ErrorSummary> exact_error(const model::ProblemSpec& spec,
 
 }  // namespace
 
-void prepare_output_folder(const std::string& out_dir) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::create_directories(out_dir, ec);
-  HPC_REQUIRE(!ec, IoError, out_dir, ": cannot create the output folder: ", ec.message());
-  // The files an earlier run wrote here go, so that nothing in the folder can be mistaken for
-  // this run's results. Other files, and folders holding anything else, are left alone.
-  auto remove_ours = [&](const fs::path& dir) {
-    for (const char* name : {"summary.json", "contact.csv", "pressure.csv", "path.csv",
-                             "solution.vtu", "contact.vtu", "solution.pvd", "contact.pvd",
-                             "input.yaml", "mesh.yaml"}) {
-      fs::remove(dir / name, ec);
-      HPC_REQUIRE(!ec, IoError, dir.string(), ": cannot remove the previous ", name, ": ",
-                  ec.message());
-    }
-  };
-  remove_ours(out_dir);
-  for (const char* sub : {"last-good", "rp", "hp", "steps"}) {
-    const fs::path dir = fs::path(out_dir) / sub;
-    if (!fs::is_directory(dir, ec)) continue;
-    remove_ours(dir);
-    std::vector<fs::path> numbered;  // rp/pressure-3.csv, steps/step-0001.vtu, ...
-    for (const auto& entry : fs::directory_iterator(dir, ec)) {
-      const std::string name = entry.path().filename().string();
-      for (const char* prefix : {"pressure-", "step-", "contact-"})
-        if (name.rfind(prefix, 0) == 0 &&
-            (entry.path().extension() == ".csv" || entry.path().extension() == ".vtu"))
-          numbered.push_back(entry.path());
-    }
-    for (const auto& p : numbered) fs::remove(p, ec);
-    if (fs::is_empty(dir, ec)) fs::remove(dir, ec);
-  }
+namespace {
+
+/// `name` is prefix, digits, suffix: pressure-3.csv, step-0012.vtu.
+bool numbered(const std::string& name, const std::string& prefix, const std::string& suffix) {
+  if (name.size() <= prefix.size() + suffix.size() || name.rfind(prefix, 0) != 0 ||
+      name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return false;
+  const auto digits = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+  return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
+
+bool run_output(const std::string& relative, bool folder) {
+  if (relative == "last-good") return folder;
+  const std::string r = relative.rfind("last-good/", 0) == 0 ? relative.substr(10) : relative;
+  const auto slash = r.find('/');
+  if (slash == std::string::npos) {
+    if (folder) return r == "rp" || r == "hp" || r == "steps";
+    for (const char* name : {"summary.json", "input.yaml", "contact.csv", "pressure.csv", "path.csv",
+                             "mesh.yaml", "solution.vtu", "contact.vtu", "solution.pvd",
+                             "contact.pvd"})
+      if (r == name) return true;
+    return false;
+  }
+  const std::string sub = r.substr(0, slash), name = r.substr(slash + 1);
+  if (folder || name.find('/') != std::string::npos) return false;
+  if (sub == "rp" || sub == "hp") return numbered(name, "pressure-", ".csv");
+  if (sub == "steps") return numbered(name, "step-", ".vtu") || numbered(name, "contact-", ".vtu");
+  return false;
+}
+
+}  // namespace
+
+FolderLayout run_layout() { return {"summary.json", &run_output}; }
 
 namespace {
 
@@ -198,6 +200,11 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
   if (s.method.empty()) s.method = disc.method;
   s.dofs = disc.n_free;
   s.strain_energy = post::strain_energy(disc, st.u);
+  // Whatever the solver checked, a result that is not finite is never reported as one.
+  HPC_REQUIRE(std::isfinite(s.strain_energy) && st.u.allFinite(), NumericalError, spec.file,
+              ": the solution is not finite (strain energy ", s.strain_energy, ", largest |u| ",
+              st.u.cwiseAbs().maxCoeff(), "): a load, prescribed displacement, length or material "
+              "value of the input is too large for double precision");
   s.error = exact_error(spec, disc, st.u, s.strain_energy);
   if (!st.contact.empty()) {
     const PressureComparison* cmp = comparison(st);
@@ -216,7 +223,7 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
     post::write_text_file((out / "pressure.csv").string(), pressure_csv(*r.pressure_curve));
   if (spec.output.vtu) {
     post::write_vtu((out / "solution.vtu").string(), disc, st.u, spec.output.vtu_subdivisions);
-    say("wrote " + (out / "solution.vtu").string());
+    say("wrote solution.vtu");
     if (!st.contact.empty()) post::write_contact_vtu((out / "contact.vtu").string(), st.pairs, st.contact);
   }
 }
@@ -327,7 +334,24 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     if (options.progress) options.progress(s);
   };
 
-  if (!options.out_dir.empty()) prepare_output_folder(options.out_dir);
+  // Every file goes into the folder's staging folder (`stage`); the folder moves them in at
+  // the end, the run's last-good/ alone if it failed.
+  std::optional<OutputFolder> own_folder;
+  OutputFolder* folder = options.folder;
+  if (!folder && !options.out_dir.empty()) {
+    own_folder.emplace(options.out_dir, run_layout(),
+                       std::vector<OutputFolder::Input>{{spec.file, "the problem file"}});
+    folder = &*own_folder;
+  }
+  if (folder)
+    for (const auto& pair : spec.contact)
+      if (pair.compare && !pair.compare->reference.empty())
+        folder->refuse_if_inside(reference_path(spec, *pair.compare),
+                                 "the reference file of " + pair.compare->where.str());
+  require_references(spec);  // a reference that cannot be read fails before the solve
+  const std::string stage = folder ? folder->begin() : "";
+  const std::string last_good = folder ? (fs::path(folder->target()) / "last-good").string() : "";
+
   RunResult result;
   post::Summary& s = result.summary;
   LazyComparison comparison(spec);
@@ -335,15 +359,14 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     s.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
     if (out_dir.empty()) return;
     post::write_summary((fs::path(out_dir) / "summary.json").string(), s);
-    say("wrote " + (fs::path(out_dir) / "summary.json").string());
+    say("wrote summary.json");
   };
 
   if (spec.adapt.method != model::AdaptMethod::none) {
     // rp / hp: every iteration's pressure curve and errors are kept; the final mesh is the result.
     const bool rp = spec.adapt.method == model::AdaptMethod::rp;
     const std::string method = rp ? "rp" : "hp";
-    const std::string iter_dir =
-        options.out_dir.empty() ? "" : (fs::path(options.out_dir) / method).string();
+    const std::string iter_dir = stage.empty() ? "" : (fs::path(stage) / method).string();
     if (!iter_dir.empty()) fs::create_directories(iter_dir);
     nlohmann::json history = nlohmann::json::array();
     // The pressure errors of one iteration into its record, its curve into iter_dir.
@@ -413,9 +436,9 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     aj["history"] = history;
     s.extra["adapt"] = aj;
     // A failed loop keeps its last good result apart, so it cannot pass for the run's result.
-    const std::string out_dir = options.out_dir.empty() ? ""
-                                : converged ? options.out_dir
-                                            : (fs::path(options.out_dir) / "last-good").string();
+    const std::string out_dir = stage.empty() ? ""
+                                : converged ? stage
+                                            : (fs::path(stage) / "last-good").string();
     if (!out_dir.empty()) fs::create_directories(out_dir);
     SolvedState st{&last->discretization, last->solution.u, last->solution.contact,
                    last->solution.pairs, last->solution.multipliers};
@@ -424,10 +447,16 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       post::write_text_file((fs::path(out_dir) / "mesh.yaml").string(), mesh_yaml(last->spec));
     s.converged = converged;
     write_summary(out_dir);
+    if (folder) {
+      if (converged)
+        folder->commit();
+      else
+        folder->commit_subfolder("last-good");
+    }
     HPC_REQUIRE(converged, AdaptError, message,
-                out_dir.empty() ? std::string()
-                                : "; the last good result (iteration " +
-                                      std::to_string(history.size() - 1) + ") is in " + out_dir);
+                folder ? "; the last good result (iteration " + std::to_string(history.size() - 1) +
+                             ") is in " + last_good
+                       : std::string());
     result.discretization = last->discretization;
     result.u = last->solution.u;
     return result;
@@ -466,8 +495,8 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     std::vector<std::string> step_files, contact_files;
     std::vector<double> step_times;
     model::StepFn on_step;
-    if (spec.output.steps && spec.output.vtu && !options.out_dir.empty()) {
-      fs::create_directories(fs::path(options.out_dir) / "steps");
+    if (spec.output.steps && spec.output.vtu && !stage.empty()) {
+      fs::create_directories(fs::path(stage) / "steps");
       on_step = [&](const Eigen::VectorXd& u, const model::NonlinearSolution::PathPoint&,
                     const std::vector<model::ContactPair>& pairs,
                     const std::vector<Eigen::VectorXd>& multipliers) {
@@ -475,7 +504,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
         name << std::setw(4) << std::setfill('0') << step_files.size() + 1 << ".vtu";
         step_files.push_back("steps/step-" + name.str());
         step_times.push_back(static_cast<double>(step_files.size()));
-        post::write_vtu((fs::path(options.out_dir) / step_files.back()).string(), d, u,
+        post::write_vtu((fs::path(stage) / step_files.back()).string(), d, u,
                         spec.output.vtu_subdivisions);
         if (pairs.empty()) return;
         std::vector<model::ContactResult> results;
@@ -483,18 +512,16 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
           results.push_back(model::evaluate_contact(
               d, pairs[k], u, multipliers[k].size() ? &multipliers[k] : nullptr));
         contact_files.push_back("steps/contact-" + name.str());
-        post::write_contact_vtu((fs::path(options.out_dir) / contact_files.back()).string(), pairs,
+        post::write_contact_vtu((fs::path(stage) / contact_files.back()).string(), pairs,
                                 results);
       };
     }
     auto sol = model::solve_contact(spec, d, options.progress, {}, on_step);
     if (!step_files.empty()) {
-      post::write_pvd((fs::path(options.out_dir) / "solution.pvd").string(), step_files, step_times);
+      post::write_pvd((fs::path(stage) / "solution.pvd").string(), step_files, step_times);
       if (!contact_files.empty())
-        post::write_pvd((fs::path(options.out_dir) / "contact.pvd").string(), contact_files,
-                        step_times);
-      say("wrote " + std::to_string(step_files.size()) + " load steps: " +
-          (fs::path(options.out_dir) / "solution.pvd").string());
+        post::write_pvd((fs::path(stage) / "contact.pvd").string(), contact_files, step_times);
+      say("wrote " + std::to_string(step_files.size()) + " load steps: solution.pvd");
     }
     s.newton_iterations = sol.newton_iterations;
     s.load_steps = sol.load_steps;
@@ -506,8 +533,8 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       // The last converged load step is kept apart, in last-good/, with converged: false: it
       // cannot pass for the run's result (no summary.json in the output folder).
       std::string kept;
-      if (!options.out_dir.empty() && sol.load_steps > 0) {
-        const std::string good = (fs::path(options.out_dir) / "last-good").string();
+      if (folder && sol.load_steps > 0) {
+        const std::string good = (fs::path(stage) / "last-good").string();
         fs::create_directories(good);
         const SolvedState last{&d, sol.u, sol.contact, sol.pairs, sol.multipliers};
         post_process(spec, last, good, options, comparison, result);
@@ -521,12 +548,13 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
           os << "displacement factor " << sol.load_factor << ", load factor " << sol.loads_factor;
         else
           os << "factor " << sol.load_factor;
-        os << ") is in " << good;
+        os << ") is in " << last_good;
         kept = os.str();
+        folder->commit_subfolder("last-good");
       }
       throw NumericalError(spec.file + ": the solver stopped: " + sol.message + kept);
     }
-    write_path(spec, sol, options.out_dir);
+    write_path(spec, sol, stage);
     st.u = sol.u;
     st.contact = std::move(sol.contact);
     st.pairs = std::move(sol.pairs);
@@ -534,10 +562,11 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
   }
   result.discretization = std::move(d);
   st.d = &result.discretization;
-  post_process(spec, st, options.out_dir, options, comparison, result);
+  post_process(spec, st, stage, options, comparison, result);
   s.converged = true;
   result.u = st.u;
-  write_summary(options.out_dir);
+  write_summary(stage);
+  if (folder) folder->commit();
   return result;
 }
 

@@ -9,6 +9,7 @@
 
 #include "hpcontact/driver/contact_compare.hpp"
 #include "hpcontact/driver/contact_table.hpp"
+#include "hpcontact/driver/output_folder.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "hpcontact/model/problem_spec.hpp"
 #include "hpcontact/post/summary.hpp"
@@ -16,7 +17,10 @@
 namespace hpcontact::driver {
 
 struct RunOptions {
-  std::string out_dir;           ///< where results go; empty: write nothing
+  std::string out_dir;           ///< the output folder (see OutputFolder); empty: write nothing
+  /// The output folder opened by the caller (the command line opens it before it reads the
+  /// problem file, to refuse a folder that holds it); when set, out_dir is not used.
+  OutputFolder* folder = nullptr;
   std::string effective_input;   ///< YAML text written as input.yaml (if not empty)
   std::function<void(const std::string&)> progress;  ///< one line per stage; may be empty
 };
@@ -30,13 +34,16 @@ struct RunResult {
   std::optional<PressureCurve> pressure_curve;
 };
 
-/// Creates the output folder and removes the files an earlier run left there (summary.json,
-/// contact.csv, ..., last-good/, rp/, hp/, steps/), so that the folder of a run that then fails holds
-/// nothing that could pass for its result. Files the program does not write are kept. IoError.
-void prepare_output_folder(const std::string& out_dir);
+/// The files a run writes into its output folder: summary.json (the marker), input.yaml,
+/// contact.csv, pressure.csv, path.csv, mesh.yaml, solution.vtu/.pvd, contact.vtu/.pvd, rp/ and hp/
+/// (pressure-N.csv), steps/ (step-NNNN.vtu, contact-NNNN.vtu), and all of these in last-good/.
+FolderLayout run_layout();
 
-/// Runs the problem (calling prepare_output_folder first when out_dir is set). Input and mesh errors propagate as exceptions before anything is written;
-/// summary.json is written last, so its presence means the run finished.
+/// Runs the problem. With an output folder, the results are written into its staging folder and
+/// moved in only when the run has succeeded; a run that fails after a converged state moves
+/// that state into last-good/ (with converged: false) and leaves the earlier results; any other
+/// failure leaves the folder as it was. The folder is refused, before anything is solved, if it
+/// holds the problem file or the reference of a compare section. Errors propagate as exceptions.
 RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options);
 
 }  // namespace hpcontact::driver

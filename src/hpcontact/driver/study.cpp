@@ -3,6 +3,8 @@
 #include "hpcontact/driver/study.hpp"
 
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -17,12 +19,13 @@
 #include <fstream>
 #include <iomanip>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <thread>
 
 #include "hpcontact/core/error.hpp"
-#include "hpcontact/post/summary.hpp"
+#include "hpcontact/post/output_file.hpp"
 
 extern char** environ;
 
@@ -53,24 +56,103 @@ std::string error_line(const fs::path& file) {
   return error.empty() ? last : error;
 }
 
-/// Starts `argv` with stdout and stderr into `log`; waits for it. Returns the exit code, or
-/// minus the signal that ended it.
-int run_process(const std::vector<std::string>& argv, const fs::path& log) {
+/// While it lives, SIGINT and SIGTERM are blocked in the calling thread and the threads it
+/// starts, and a watcher thread takes them: it records the signal and passes it on to every run
+/// started through spawn(), and spawn() starts no run after it.
+class SignalForwarder {
+public:
+  SignalForwarder() {
+    sigemptyset(&signals_);
+    sigaddset(&signals_, SIGINT);
+    sigaddset(&signals_, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &signals_, &previous_);
+    watcher_ = std::thread([this] { watch(); });
+  }
+  ~SignalForwarder() {
+    stop_ = true;
+    watcher_.join();
+    pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
+  }
+  SignalForwarder(const SignalForwarder&) = delete;
+  SignalForwarder& operator=(const SignalForwarder&) = delete;
+
+  /// Calls start() (which returns a child's pid, or 0 if none started) unless a signal came;
+  /// -1 if it did.
+  template <class Start>
+  pid_t spawn(Start start) {
+    std::lock_guard lock(mutex_);
+    if (signal_) return -1;
+    const pid_t pid = start();
+    if (pid > 0) running_.insert(pid);
+    return pid;
+  }
+  void ended(pid_t pid) {
+    std::lock_guard lock(mutex_);
+    running_.erase(pid);
+  }
+  /// The signal that stopped the study, or 0.
+  int signal() const { return signal_; }
+  /// The set of signals forwarded (for a child's default dispositions).
+  const sigset_t& signals() const { return signals_; }
+
+private:
+  void watch() {
+    const timespec tick{0, 50'000'000};
+    while (!stop_) {
+      const int sig = sigtimedwait(&signals_, nullptr, &tick);
+      if (sig <= 0) continue;
+      std::lock_guard lock(mutex_);
+      if (!signal_) signal_ = sig;
+      for (const pid_t pid : running_) kill(pid, sig);
+    }
+  }
+
+  sigset_t signals_, previous_;
+  std::mutex mutex_;
+  std::set<pid_t> running_;
+  std::atomic<int> signal_{0};
+  std::atomic<bool> stop_{false};
+  std::thread watcher_;
+};
+
+/// Starts `argv` with stdout and stderr into `log` (with the default dispositions of the
+/// forwarded signals, unblocked); waits for it. Returns the exit code, minus the signal that
+/// ended it, or nullopt if the study was stopped before the run could start.
+std::optional<int> run_process(const std::vector<std::string>& argv, const fs::path& log,
+                               SignalForwarder& forwarder) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW, 0644);
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   posix_spawn_file_actions_addclose(&actions, STDIN_FILENO);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t none;
+  sigemptyset(&none);
+  posix_spawnattr_setsigmask(&attributes, &none);
+  posix_spawnattr_setsigdefault(&attributes, &forwarder.signals());
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
+  int rc = 0;
+  const pid_t pid = forwarder.spawn([&] {
+    pid_t child = 0;
+    rc = posix_spawn(&child, args[0], &actions, &attributes, args.data(), environ);
+    return rc == 0 ? child : 0;
+  });
   posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
+  if (pid < 0) return std::nullopt;
   if (rc != 0) throw IoError(argv[0] + ": cannot start a run: " + std::strerror(rc));
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw IoError(argv[0] + ": lost a run: " + std::strerror(errno));
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno == EINTR) continue;
+    forwarder.ended(pid);
+    throw IoError(argv[0] + ": lost a run: " + std::strerror(errno));
+  }
+  forwarder.ended(pid);
   if (WIFSIGNALED(status)) return -WTERMSIG(status);
   return WEXITSTATUS(status);
 }
@@ -185,36 +267,63 @@ std::vector<std::string> study_columns(const io::StudySpec& study,
   return cols;
 }
 
-std::vector<StudyRowResult> run_study(const io::StudySpec& study, const StudyOptions& options) {
-  std::error_code ec;
-  fs::create_directories(fs::path(options.out_dir) / "runs", ec);
-  HPC_REQUIRE(!ec, IoError, options.out_dir, ": cannot create the study folder: ", ec.message());
-  for (const char* name : {"study.csv", "study.json"}) fs::remove(fs::path(options.out_dir) / name, ec);
+namespace {
+
+bool study_output(const std::string& relative, bool folder) {
+  if (relative == "study.csv" || relative == "study.json") return !folder;
+  if (relative == "runs") return folder;
+  if (relative.rfind("runs/", 0) != 0) return false;
+  const std::string rest = relative.substr(5);
+  const auto slash = rest.find('/');
+  if (slash == std::string::npos) return folder && !rest.empty();
+  return !folder && slash > 0 && rest.substr(slash + 1) == "log.txt";
+}
+
+}  // namespace
+
+FolderLayout study_layout() { return {"study.json", &study_output}; }
+
+StudyOutcome run_study(const io::StudySpec& study, const StudyOptions& options) {
+  std::optional<OutputFolder> own_folder;
+  OutputFolder* folder = options.folder;
+  if (!folder) {
+    own_folder.emplace(options.out_dir, study_layout(),
+                       std::vector<OutputFolder::Input>{{study.file, "the study file"}});
+    folder = &*own_folder;
+  }
+  const fs::path stage = folder->begin(), target = folder->target();
 
   const int total = static_cast<int>(study.runs.size());
-  std::vector<StudyRowResult> rows(total);
+  StudyOutcome outcome;
+  std::vector<StudyRowResult>& rows = outcome.rows;
+  rows.resize(total);
+  std::vector<fs::path> logs(total);
   for (int i = 0; i < total; ++i) {
+    const std::string name = folder_name(i, study.runs[i].label);
     rows[i].run = study.runs[i];
-    rows[i].run_dir = (fs::path(options.out_dir) / "runs" / folder_name(i, study.runs[i].label)).string();
+    rows[i].run_dir = (target / "runs" / name).string();
+    logs[i] = stage / "runs" / name / "log.txt";
   }
   std::atomic<int> next{0};
   std::mutex report;
   int done = 0;
   std::string failure;  // an IoError of a worker, rethrown after all have stopped
+  SignalForwarder forwarder;
   auto worker = [&] {
-    for (int i = next++; i < total; i = next++) {
+    for (int i = next++; i < total && !forwarder.signal(); i = next++) {
       StudyRowResult& row = rows[i];
       try {
-        fs::create_directories(row.run_dir);
+        fs::create_directories(logs[i].parent_path());
         std::vector<std::string> argv = {options.program, "run", row.run.case_file, "--out",
                                          row.run_dir, "-q"};
         for (const auto& s : row.run.sets) {
           argv.push_back("--set");
           argv.push_back(s);
         }
-        const fs::path log = fs::path(row.run_dir) / "log.txt";
         const auto t0 = std::chrono::steady_clock::now();
-        row.exit_code = run_process(argv, log);
+        const auto code = run_process(argv, logs[i], forwarder);
+        if (!code) break;
+        row.exit_code = *code;
         row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         const fs::path summary = fs::path(row.run_dir) / "summary.json";
         if (row.exit_code == 0 && fs::exists(summary)) {
@@ -223,7 +332,7 @@ std::vector<StudyRowResult> run_study(const io::StudySpec& study, const StudyOpt
           if (row.summary.is_discarded()) row.summary = nullptr;
         }
         if (!row.converged()) {
-          row.message = error_line(log);
+          row.message = error_line(logs[i]);
           if (row.exit_code < 0) row.message = "killed by signal " + std::to_string(-row.exit_code) +
                                                (row.message.empty() ? "" : " after: " + row.message);
           if (row.message.empty()) row.message = "exit code " + std::to_string(row.exit_code);
@@ -235,16 +344,22 @@ std::vector<StudyRowResult> run_study(const io::StudySpec& study, const StudyOpt
       }
       std::lock_guard lock(report);
       ++done;
-      if (options.finished) options.finished(row, done, total);
+      if (options.finished && !forwarder.signal()) options.finished(row, done, total);
     }
   };
-  const int jobs = std::clamp(options.jobs, 1, std::max(1, total));
-  std::vector<std::thread> threads;
-  for (int j = 0; j < jobs; ++j) threads.emplace_back(worker);
-  for (auto& t : threads) t.join();
-  write_tables(study, rows, options.out_dir);
+  {
+    const int jobs = std::clamp(options.jobs, 1, std::max(1, total));
+    std::vector<std::thread> threads;
+    for (int j = 0; j < jobs; ++j) threads.emplace_back(worker);
+    for (auto& t : threads) t.join();
+  }
+  // A stopped study writes no table: its rows would pass for runs that failed.
+  outcome.signal = forwarder.signal();
+  if (outcome.signal) return outcome;
+  write_tables(study, rows, stage.string());
+  folder->commit();
   HPC_REQUIRE(failure.empty(), IoError, study.file, ": ", failure);
-  return rows;
+  return outcome;
 }
 
 }  // namespace hpcontact::driver

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hpcontact/driver/output_folder.hpp"
 #include "hpcontact/io/study_reader.hpp"
 
 namespace hpcontact::driver {
@@ -25,15 +26,28 @@ struct StudyRowResult {
 struct StudyOptions {
   std::string program;  ///< the hpcontact executable each run is started with
   std::string out_dir;  ///< OUT: OUT/runs/NN-label/ per run, OUT/study.csv, OUT/study.json
+  /// OUT opened by the caller (before reading the study file); when set, out_dir is not used.
+  OutputFolder* folder = nullptr;
   int jobs = 1;         ///< runs at a time
   /// Called (from one thread at a time) when a run finishes: the row, how many are done.
   std::function<void(const StudyRowResult&, int done, int total)> finished;
 };
 
+/// The files a study writes into OUT (an OutputFolder): study.json (the marker), study.csv and
+/// runs/NN-label/log.txt; each run's own files are its folder's.
+FolderLayout study_layout();
+
+struct StudyOutcome {
+  std::vector<StudyRowResult> rows;
+  /// SIGINT or SIGTERM if the study was stopped by one: it was passed on to the running runs,
+  /// they were waited for, and no table was written; 0 otherwise.
+  int signal = 0;
+};
+
 /// Runs every row (`program run CASE --out OUT/runs/NN-label -q --set ...`, its output in the
 /// folder's log.txt) and writes OUT/study.csv and OUT/study.json. A run that fails is a row with
 /// its message, not an exception. IoError if OUT cannot be written or a process not started.
-std::vector<StudyRowResult> run_study(const io::StudySpec& study, const StudyOptions& options);
+StudyOutcome run_study(const io::StudySpec& study, const StudyOptions& options);
 
 /// The table's columns for these rows: label, case, converged, dofs, wall time, energy,
 /// iterations, the contact and error measures any row has, the study's columns, seed_* values.

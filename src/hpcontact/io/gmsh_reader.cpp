@@ -16,13 +16,9 @@
 #include "hpcontact/io/gmsh_reader.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -31,6 +27,7 @@
 #include <utility>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/io/text_file.hpp"
 #include "hpcontact/io/yaml_source.hpp"
 
 namespace hpcontact::io {
@@ -579,22 +576,7 @@ GmshMesh parse_gmsh(std::string_view text, const std::string& file_label) {
 }
 
 GmshMesh read_gmsh(const std::string& path) {
-  // Only regular files: a device or a pipe (/dev/zero, /dev/stdin) would never end or block.
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw IoError(path + ": cannot read mesh file: " + std::strerror(EISDIR));
-  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
-    throw IoError(path + ": cannot read mesh file: not a regular file");
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                             &std::fclose);
-  if (!file) throw IoError(path + ": cannot open mesh file: " + std::strerror(errno));
-  std::string text;
-  char buffer[1 << 16];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) text.append(buffer, n);
-  if (std::ferror(file.get()))
-    throw IoError(path + ": cannot read mesh file: " + std::strerror(errno));
-  return parse_gmsh(text, path);
+  return parse_gmsh(read_bounded_file(path, "mesh file", kMaxMeshFileBytes), path);
 }
 
 }  // namespace hpcontact::io

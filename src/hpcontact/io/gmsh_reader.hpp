@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <map>
 #include <string>
 #include <string_view>
@@ -68,8 +69,12 @@ std::string gmsh_type_name(int type);
 /// "<file>:<line>: <what was expected> (got '<text>')".
 GmshMesh parse_gmsh(std::string_view text, const std::string& file_label);
 
+/// Largest .msh file read (bytes): some 10⁷ nodes and elements.
+constexpr std::size_t kMaxMeshFileBytes = std::size_t{1} << 30;
+
 /// Reads and parses the .msh file at `path` (the label in messages is `path` as given). Throws
-/// IoError if it cannot be read or is not a regular file, InputError as parse_gmsh().
+/// IoError if it cannot be read, is not a regular file or is larger than kMaxMeshFileBytes,
+/// InputError as parse_gmsh().
 GmshMesh read_gmsh(const std::string& path);
 
 }  // namespace hpcontact::io

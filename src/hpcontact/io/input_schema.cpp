@@ -3,6 +3,10 @@
 
 #include <sstream>
 
+#include "hpcontact/io/gmsh_reader.hpp"
+#include "hpcontact/io/problem_reader.hpp"
+#include "hpcontact/io/text_file.hpp"
+
 namespace hpcontact::io {
 
 namespace {
@@ -204,7 +208,11 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "discretization.element", .type = T::choice, .default_yaml = "Q8",
        .doc = "h-version element (ignored by the p-version).", .choices = {"Q4", "Q8", "Q9"}},
       {.path = "discretization.quadrature_extra", .type = T::integer, .default_yaml = "2",
-       .doc = "Gauss points per direction = max(p_xi, p_eta) + this.", .lower = at_least(0)},
+       .doc = "Gauss points per direction = max(p_xi, p_eta) + this.", .lower = at_least(0),
+       .upper = at_most(50),
+       .upper_why = "an element's quadrature points grow as the square of this, and beyond p + 50 "
+                    "points per direction the integrals of these polynomial and smooth integrands "
+                    "change by round-off only"},
       {.path = "discretization.condense", .type = T::boolean, .default_yaml = "false",
        .doc = "Static condensation of the internal modes."},
 
@@ -221,16 +229,22 @@ const std::vector<KeySpec>& input_schema() {
               "3.35-3.36; slow, for comparison).",
        .choices = {"analytic", "finite-difference"}},
       {.path = "solver.load_steps", .type = T::integer, .default_yaml = "1",
-       .doc = "Number of equal load steps.", .lower = at_least(1)},
+       .doc = "Number of equal load steps.", .lower = at_least(1), .upper = at_most(10000),
+       .upper_why = "each step is at least one solve of the whole system; a path that needs more "
+                    "is one for solver.control: arc-length"},
       {.path = "solver.max_iterations", .type = T::integer, .default_yaml = "30",
-       .doc = "Newton iterations per load step.", .lower = at_least(1)},
+       .doc = "Newton iterations per load step.", .lower = at_least(1), .upper = at_most(1000),
+       .upper_why = "Newton converges in tens of iterations or not at all; load steps or line "
+                    "search help where more iterations do not"},
       {.path = "solver.tolerance", .type = T::number, .default_yaml = "1e-10",
        .doc = "Newton convergence: relative residual norm.",
        .lower = greater_than(0)},
       {.path = "solver.max_cuts", .type = T::integer, .default_yaml = "5",
        .doc = "Halvings in a row of a load step that does not converge (the step doubles "
               "again, up to the nominal one, after two converged steps).",
-       .lower = at_least(0)},
+       .lower = at_least(0), .upper = at_most(50),
+       .upper_why = "a step halved 50 times is 1e-15 of its length, below what double precision "
+                    "resolves of the load factor"},
       {.path = "solver.line_search", .type = T::choice, .default_yaml = "auto",
        .doc = "Backtracking line search on the residual norm (a Newton correction that does not "
               "reduce |R| is halved, up to 10 times): auto = on with friction (its stick/slip "
@@ -266,7 +280,9 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "solver.stages[].loads", .type = T::number, .default_yaml = "1",
        .doc = "Factor on every load (edge loads, nodal forces, body force) at the end of the stage."},
       {.path = "solver.stages[].steps", .type = T::integer,
-       .doc = "Load steps of the stage; absent: solver.load_steps.", .lower = at_least(1)},
+       .doc = "Load steps of the stage; absent: solver.load_steps.", .lower = at_least(1),
+       .upper = at_most(10000),
+       .upper_why = "each step is at least one solve of the whole system"},
       {.path = "solver.target_resultant", .type = T::section,
        .doc = "Load control by force: the prescribed displacements are scaled until the contact "
               "resultant's component equals value."},
@@ -413,13 +429,15 @@ const std::vector<KeySpec>& input_schema() {
        .lower = greater_than(0)},
       {.path = "adapt.max_iterations", .type = T::integer, .default_yaml = "20",
        .doc = "rp: relocations after the first solve; not reaching the tolerance is a failure.",
-       .lower = at_least(1)},
+       .lower = at_least(1), .upper = at_most(200),
+       .upper_why = "each relocation is a full solve; rp converges in a few or stalls"},
       {.path = "adapt.factor", .type = T::number, .default_yaml = "0.5",
        .doc = "hp: size of the element at Γ* relative to the one it is cut from, per step (the "
               "seed's 0.5; 0.17 is the classical optimum for corner singularities).",
        .lower = greater_than(0), .upper = less_than(1)},
       {.path = "adapt.steps", .type = T::integer, .default_yaml = "8",
-       .doc = "hp: refinement steps.", .lower = at_least(1), .upper = at_most(40)},
+       .doc = "hp: refinement steps; with adapt.factor, factor^steps at least 1e-11 (see Limits).",
+       .lower = at_least(1), .upper = at_most(40)},
       {.path = "adapt.degree", .type = T::choice, .default_yaml = "rising",
        .doc = "hp: rising: min_degree at Γ* and one more per layer away from it (elements far "
               "from Γ* get min_degree + steps + 1); constant: discretization.degree everywhere.",
@@ -447,7 +465,9 @@ const std::vector<KeySpec>& input_schema() {
               "factor (force control: the step number, as the factor goes back and forth)."},
       {.path = "output.vtu_subdivisions", .type = T::integer, .default_yaml = "0",
        .doc = "Sub-cells per element edge in the .vtu file; 0: automatic from the degree.",
-       .lower = at_least(0)},
+       .lower = at_least(0), .upper = at_most(100),
+       .upper_why = "the file holds (this + 1)² points per element, and 100² cells per element are "
+                    "finer than any plot of it shows"},
       {.path = "output.effective_input", .type = T::boolean, .default_yaml = "true",
        .doc = "Write the effective input (defaults filled, --set applied) to reproduce the run."},
   };
@@ -520,9 +540,13 @@ std::string describe_default(const KeySpec& key) {
 void render_section(std::ostringstream& md, std::string_view parent_pattern) {
   const std::vector<const KeySpec*> children = child_key_specs(parent_pattern);
   md << "| key | type | default | unit | meaning |\n|---|---|---|---|---|\n";
-  for (const KeySpec* key : children)
+  for (const KeySpec* key : children) {
+    std::string doc(key->doc);
+    if (!key->upper_why.empty())
+      doc += " At most " + format_number(key->upper->value) + ": " + std::string(key->upper_why) + ".";
     md << "| `" << key->path << "` | " << escape_cell(describe_type(*key)) << " | "
-       << describe_default(*key) << " | " << key->unit << " | " << escape_cell(key->doc) << " |\n";
+       << describe_default(*key) << " | " << key->unit << " | " << escape_cell(doc) << " |\n";
+  }
   for (const KeySpec* key : children) {
     if (key->type != T::section && key->type != T::section_list) continue;
     const std::string pattern = std::string(key->path) + (key->type == T::section_list ? "[]" : "");
@@ -576,6 +600,58 @@ std::string input_schema_markdown() {
         "method follows (D. Franke, TU München; references.md), \"seed eq. 3.19\" its "
         "equation.\n\n## Top level\n\n";
   render_section(md, "");
+  md << "\n## Limits\n\n"
+        "What a run may ask for is bounded, so that a mistake is an error at once instead of a "
+        "run that never ends or runs out of memory:\n\n"
+        "- Files: the problem file and a study file are read only if they are regular files (not "
+        "a device such as /dev/zero, a pipe or a folder) of at most "
+     << (kMaxProblemFileBytes >> 20)
+     << " MB (the YAML tree takes some 150 bytes per byte of the file: give large meshes as a "
+        "Gmsh file); a .msh file of at most "
+     << (kMaxMeshFileBytes >> 20) << " MB; a `compare.reference` curve of at most "
+     << (kMaxReferenceBytes >> 20) << " MB.\n"
+        "- Numbers: every real number of the file (values, node coordinates, numbers given where "
+        "a formula may be, and the values formulas take) is 0 or of a magnitude between 1e-100 and 1e100, so that "
+        "products of them stay within double precision (1e-308 to 1e308); every result is "
+        "checked to be finite before it is reported.\n"
+        "- Keys with an upper bound say it and why in the tables above.\n"
+        "- Keys that multiply are bounded together, when the problem is read: the elements' modes "
+        "(elements × 2(p_xi+1)(p_eta+1)) at most "
+     << kMaxUnknowns << ", quadrature points (elements × (p + quadrature_extra)²) at most "
+     << kMaxQuadraturePoints << ", contact Gauss points (contact edges × quadrature, twice for "
+        "two bodies) at most "
+     << kMaxContactPoints << ", points of solution.vtu (elements × (vtu_subdivisions + 1)²) at "
+        "most "
+     << kMaxVtuPoints << "; hp: the smallest elements, adapt.factor ^ adapt.steps of the first "
+        "ones, at least "
+     << kMinHpScale << " (at factor 0.5 36 steps, at 0.17 14).\n";
+  md << "\n## The output folder\n\n"
+        "`hpcontact run` (and `hpcontact study`, and the Python module's `run(out=...)`) writes "
+        "its results into an output folder (`--out`, default `results/<problem file name>`):\n\n"
+        "- The files are written into a staging folder inside it (`.hpcontact-staging-XXXXXX`) "
+        "and moved into place, each by a rename, only when the run has succeeded. A run that "
+        "fails after a converged state replaces only `last-good/` (that state, with `converged: "
+        "false`); any other failure, a wrong `--set` or an interrupted run leaves the folder as it "
+        "was. The next run removes a staging folder an interrupted run left.\n"
+        "- `.hpcontact-manifest` lists the files the last run wrote; a run replaces or removes "
+        "only those. A file with an output name (`summary.json`, `input.yaml`, `contact.csv`, "
+        "`pressure.csv`, `path.csv`, `mesh.yaml`, `solution.vtu`, `contact.vtu`, "
+        "`solution.pvd`, `contact.pvd`, `rp/pressure-N.csv`, `hp/pressure-N.csv`, "
+        "`steps/step-NNNN.vtu`, `steps/contact-NNNN.vtu`, all of these in `last-good/`; for a "
+        "study `study.csv`, `study.json`, `runs/NN-label/log.txt`) that the manifest does not "
+        "list is someone else's: the run is refused, naming it, before anything is solved. "
+        "Other files are never touched. (Results of an hpcontact without manifests count as "
+        "someone else's: remove them.)\n"
+        "- A folder that holds the problem file or a `compare` section's `reference` file "
+        "(directly or in a folder below) is refused.\n"
+        "- Symbolic links inside the folder are never followed: a link where an output goes "
+        "refuses the folder. The folder itself may be a link.\n"
+        "- A run holds a lock on the folder (`.hpcontact-lock`) while it writes; a second run into "
+        "the same folder fails at once.\n"
+        "- Every file is checked to the disk (each write, fsync and close): a full disk ends the "
+        "run with exit code 1 and a message naming the file and the system's reason.\n"
+        "- `study` passes SIGINT and SIGTERM on to its running runs, waits for them, writes no "
+        "table and ends by the same signal.\n";
   return md.str();
 }
 

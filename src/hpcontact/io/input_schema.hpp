@@ -47,6 +47,9 @@ struct KeySpec {
   std::string_view doc;           ///< one-line meaning, including rules that involve other keys
   std::vector<std::string_view> choices;  ///< allowed values of a ValueType::choice
   std::optional<Bound> lower, upper;      ///< number, integer, degree, degree_table
+  /// Why the upper bound (what a larger value would cost): said when it is exceeded, and in the
+  /// docs.
+  std::string_view upper_why;
   int min_items = 0;                      ///< least number of entries of a list or table
 };
 

@@ -56,6 +56,11 @@ YAML::Node find_key(const YAML::Node& map, const std::string& key) {
 }  // namespace
 
 void apply_override(YAML::Node& root, const std::string& override_text, YamlSource& source) {
+  try {
+    require_utf8(override_text, source.file() + ": --set", "override");
+  } catch (const InputError& e) {
+    throw CommandLineError(e.what());
+  }
   const std::string label = source.file() + ": --set " + override_text + ": ";
   const std::size_t equals = override_text.find('=');
   if (equals == std::string::npos)

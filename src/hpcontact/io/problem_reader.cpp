@@ -5,11 +5,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
+#include <iomanip>
 #include <map>
 #include <memory>
 #include <set>
@@ -20,6 +17,7 @@
 #include "hpcontact/io/gmsh_import.hpp"
 #include "hpcontact/io/overrides.hpp"
 #include "hpcontact/io/schema_check.hpp"
+#include "hpcontact/io/text_file.hpp"
 #include "hpcontact/io/yaml_source.hpp"
 
 namespace hpcontact::io {
@@ -78,10 +76,86 @@ class SpecBuilder {
     if (root["exact"]) spec.exact = exact(root["exact"]);
     if (root["adapt"]) spec.adapt = adapt(root["adapt"], spec);
     spec.output = output(root["output"]);
+    require_bounded_work(spec, root);
     return spec;
   }
 
  private:
+  /// Keys whose values multiply into the work of a run are bounded together (each alone has its
+  /// schema bound): unknowns ~ elements × 2(p+1)², quadrature points ~ elements ×
+  /// (p + quadrature_extra)², contact points ~ contact edges × quadrature, VTU points ~ elements ×
+  /// (subdivisions + 1)². Refused before anything is built, naming the keys and the limit.
+  void require_bounded_work(const ProblemSpec& spec, const YAML::Node& root) {
+    const auto& disc = spec.discretization;
+    double unknowns = 0, gauss_points = 0, vtu_points = 0, contact_points = 0;
+    for (const auto& b : spec.bodies)
+      for (std::size_t q = 0; q < b.elements.size(); ++q) {
+        std::array<int, 2> p = b.degree.value_or(disc.degree);
+        if (const auto it = b.element_degrees.find(b.element_ids[q]); it != b.element_degrees.end())
+          p = it->second;
+        if (disc.method == Method::h) p = {2, 2};
+        const double pmax = std::max(p[0], p[1]);
+        unknowns += 2.0 * (p[0] + 1) * (p[1] + 1);
+        gauss_points += (pmax + disc.quadrature_extra) * (pmax + disc.quadrature_extra);
+        const double s = spec.output.vtu_subdivisions > 0 ? spec.output.vtu_subdivisions
+                                                          : std::clamp(pmax, 2.0, 16.0);
+        vtu_points += (s + 1) * (s + 1);
+      }
+    for (const auto& pair : spec.contact) {
+      double edges = 0;
+      for (const auto& b : spec.bodies)
+        if (b.name == pair.body)
+          for (const auto& set : b.edge_sets)
+            if (std::find(pair.edge_sets.begin(), pair.edge_sets.end(), set.name) !=
+                pair.edge_sets.end())
+              edges += static_cast<double>(set.edges.size());
+      // Two bodies: the other side's edges get as many points.
+      contact_points += edges * pair.quadrature * (pair.obstacle.kind == ObstacleKind::body ? 2 : 1);
+    }
+    auto require = [&](double value, double limit, const YAML::Node& node, const std::string& path,
+                       const std::string& what, const std::string& why) {
+      if (value <= limit) return;
+      std::ostringstream os;
+      os << std::setprecision(3) << what << " come to " << value << ", more than the " << limit
+         << " a run may have: " << why;
+      source_.fail(node, path, os.str());
+    };
+    require(unknowns, kMaxUnknowns, root["discretization"], "discretization",
+            "the elements' modes (elements × 2(p_xi+1)(p_eta+1), the bound of the unknowns)",
+            "the sparse factorisation of that many high-order unknowns needs more memory than a "
+            "workstation has; use fewer elements or lower degrees");
+    require(gauss_points, kMaxQuadraturePoints, root["discretization"]["quadrature_extra"],
+            "discretization.quadrature_extra",
+            "the quadrature points (elements × (p + quadrature_extra)²)",
+            "every assembly evaluates the shape functions at each; lower quadrature_extra or the "
+            "degree");
+    if (!spec.contact.empty())
+      require(contact_points, kMaxContactPoints, root["contact"], "contact",
+              "the contact Gauss points (contact edges × contact[].quadrature)",
+              "every Newton iteration intersects each with the other side; lower "
+              "contact[].quadrature");
+    if (spec.adapt.method == AdaptMethod::hp) {
+      // The smallest elements are factor^steps of the first ones; below kMinHpScale their arcs
+      // span less than the geometry resolves (arc angles of 1e-12).
+      const double scale = std::pow(spec.adapt.factor, spec.adapt.steps);
+      if (scale < kMinHpScale) {
+        int most = 0;
+        while (std::pow(spec.adapt.factor, most + 1) >= kMinHpScale) ++most;
+        std::ostringstream os;
+        os << std::setprecision(3) << "the smallest elements after " << spec.adapt.steps
+           << " steps at adapt.factor " << spec.adapt.factor << " are " << scale
+           << " of the first ones, below the " << kMinHpScale
+           << " the geometry resolves: at most " << most << " steps at this factor";
+        source_.fail(root["adapt"]["steps"], "adapt.steps", os.str());
+      }
+    }
+    if (spec.output.vtu)
+      require(vtu_points, kMaxVtuPoints, root["output"]["vtu_subdivisions"],
+              "output.vtu_subdivisions", "the points of solution.vtu (elements × (subdivisions + 1)²)",
+              "each takes ~300 bytes of ASCII; lower output.vtu_subdivisions or set output.vtu: "
+              "false");
+  }
+
   BodySpec body(const YAML::Node& node, const std::string& path) {
     BodySpec b;
     b.name = node["name"].Scalar();
@@ -256,6 +330,7 @@ class SpecBuilder {
       c.where = source_.where(node, item_path);
       b.constraints.push_back(std::move(c));
     }
+    require_single_prescription(b, list, path);
   }
 
   void read_loads(const YAML::Node& list, const std::string& path, BodySpec& b) {
@@ -267,7 +342,7 @@ class SpecBuilder {
       const YAML::Node node = list[i];
       const std::string item_path = join_index(path, i);
       EdgeLoadSpec load;
-      load.edge_sets = edge_set_names(node["edges"], item_path + ".edges", b);
+      load.edge_sets = edge_set_names(node["edges"], item_path + ".edges", b, true);
       if (bool(node["pressure"]) == bool(node["traction"]))
         source_.fail(node, item_path,
                      std::string("must have exactly one of 'pressure' and 'traction' (got ") +
@@ -315,10 +390,18 @@ class SpecBuilder {
   }
 
   /// The edge set names of a constraint or load, each one defined in the body.
+  /// The edge set names of a list; each must exist and be named once. With `each_edge_once` (a
+  /// load, a contact side: what an edge contributes would count twice) no edge may be in two of
+  /// the sets.
   std::vector<std::string> edge_set_names(const YAML::Node& list, const std::string& path,
-                                          const BodySpec& b) {
+                                          const BodySpec& b, bool each_edge_once = false) {
     std::vector<std::string> names;
+    std::map<Edge, std::string> set_of;  // edge -> the listed set that has it
     for (std::size_t k = 0; k < list.size(); ++k) {
+      if (std::find(names.begin(), names.end(), list[k].Scalar()) != names.end())
+        source_.fail(list[k], join_index(path, k),
+                     "edge set listed twice (got '" + list[k].Scalar() + "')" +
+                         (each_edge_once ? ": its edges would count twice" : ""));
       names.push_back(list[k].Scalar());
       const bool defined =
           std::any_of(b.edge_sets.begin(), b.edge_sets.end(),
@@ -330,8 +413,52 @@ class SpecBuilder {
                      "no such edge set (defined: " + (known.empty() ? "none" : known) + ") (got '" +
                          names.back() + "')");
       }
+      if (!each_edge_once) continue;
+      for (const EdgeSetSpec& set : b.edge_sets) {
+        if (set.name != names.back()) continue;
+        for (const auto& e : set.edges) {
+          const auto [at, inserted] = set_of.emplace(undirected(e), set.name);
+          if (!inserted)
+            source_.fail(list[k], join_index(path, k),
+                         "the edge " + shown_pair(e) + " of edge set '" + set.name +
+                             "' is in edge set '" + at->second +
+                             "' too: it would count twice (got '" + set.name + "')");
+        }
+      }
     }
     return names;
+  }
+
+  /// Two constraints of a body may not prescribe the same component on the same edge or node:
+  /// one of them would silently win.
+  void require_single_prescription(const BodySpec& b, const YAML::Node& list,
+                                   const std::string& path) {
+    std::map<std::pair<std::string, int>, std::size_t> first;  // (what, component) -> constraint
+    for (std::size_t i = 0; i < b.constraints.size(); ++i) {
+      const ConstraintSpec& c = b.constraints[i];
+      std::vector<std::string> places;
+      for (const auto& name : c.edge_sets)
+        for (const EdgeSetSpec& set : b.edge_sets)
+          if (set.name == name)
+            for (const auto& e : set.edges) {
+              const Edge u = undirected(e);
+              places.push_back("edge " + shown_pair({u.first, u.second}));
+            }
+      for (int n : c.nodes) places.push_back("node " + std::to_string(n));
+      std::sort(places.begin(), places.end());
+      places.erase(std::unique(places.begin(), places.end()), places.end());
+      for (int comp = 0; comp < 2; ++comp) {
+        if (!(comp == 0 ? c.ux : c.uy)) continue;
+        for (const auto& place : places) {
+          const auto [at, inserted] = first.emplace(std::make_pair(place, comp), i);
+          if (!inserted)
+            source_.fail(list[i], join_index(path, i),
+                         std::string("prescribes ") + (comp == 0 ? "ux" : "uy") + " on " + place +
+                             ", which " + join_index(path, at->second) +
+                             " prescribes already (one of them would silently win)");
+        }
+      }
+    }
   }
 
   void require_node(const YAML::Node& node, const std::string& path, int id,
@@ -455,7 +582,7 @@ class SpecBuilder {
       ContactPairSpec c;
       c.body = node["body"].Scalar();
       const BodySpec& body = body_named(node["body"], item_path + ".body", bodies);
-      c.edge_sets = edge_set_names(node["edges"], item_path + ".edges", body);
+      c.edge_sets = edge_set_names(node["edges"], item_path + ".edges", body, true);
       c.obstacle = obstacle(node["obstacle"], item_path + ".obstacle", bodies, c.body);
       c.enforcement = node["enforcement"].Scalar() == "augmented-lagrangian"
                           ? Enforcement::augmented_lagrangian
@@ -515,7 +642,7 @@ class SpecBuilder {
       if (o.body == self)
         source_.fail(node["body"], path + ".body",
                      "must be another body than the contact's own (got '" + o.body + "')");
-      o.edge_sets = edge_set_names(node["edges"], path + ".edges", other);
+      o.edge_sets = edge_set_names(node["edges"], path + ".edges", other, true);
     }
     o.point = point(node["point"]);
     o.normal = point(node["normal"]);
@@ -608,22 +735,6 @@ std::string effective_yaml(const YAML::Node& root, const std::string& file_label
   return text + out.c_str() + "\n";
 }
 
-std::string read_text_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw IoError(path + ": cannot read problem file: " + std::strerror(EISDIR));
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                             &std::fclose);
-  if (!file) throw IoError(path + ": cannot open problem file: " + std::strerror(errno));
-  std::string text;
-  char buffer[1 << 16];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) text.append(buffer, n);
-  if (std::ferror(file.get()))
-    throw IoError(path + ": cannot read problem file: " + std::strerror(errno));
-  return text;
-}
-
 }  // namespace
 
 ReadResult parse_problem_full(const std::string& yaml_text, const std::string& file_label,
@@ -644,10 +755,12 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
   }
 }
 
-std::string read_input_file(const std::string& path) { return read_text_file(path); }
+std::string read_input_file(const std::string& path) {
+  return read_bounded_file(path, "problem file", kMaxProblemFileBytes);
+}
 
 ReadResult read_problem_full(const std::string& path, const std::vector<std::string>& overrides) {
-  return parse_problem_full(read_text_file(path), path, overrides);
+  return parse_problem_full(read_input_file(path), path, overrides);
 }
 
 model::ProblemSpec parse_problem(const std::string& yaml_text, const std::string& file_label,

@@ -1,6 +1,7 @@
 // Reading a YAML problem file (with --set overrides) into a validated model::ProblemSpec.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -8,6 +9,16 @@
 #include "hpcontact/model/problem_spec.hpp"
 
 namespace hpcontact::io {
+
+/// Bounds on the work of one run, checked when a problem is read (keys that multiply; each key
+/// alone has its schema bound). docs/input.md ("Limits") lists them.
+constexpr double kMaxUnknowns = 5e7;          ///< elements × 2(p_xi+1)(p_eta+1)
+constexpr double kMaxQuadraturePoints = 2e8;  ///< elements × (p + quadrature_extra)²
+constexpr double kMaxContactPoints = 1e6;     ///< contact edges × contact[].quadrature
+constexpr double kMaxVtuPoints = 1e7;         ///< elements × (vtu_subdivisions + 1)²
+constexpr double kMinHpScale = 1e-11;         ///< hp: adapt.factor ^ adapt.steps
+/// Largest problem or study file read (bytes): its YAML tree takes ~150 bytes per byte.
+constexpr std::size_t kMaxProblemFileBytes = 16u << 20;
 
 /// A validated problem and the effective input it was built from.
 struct ReadResult {
@@ -38,8 +49,8 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
 ReadResult read_problem_full(const std::string& path,
                              const std::vector<std::string>& overrides = {});
 
-/// The whole text of an input file; IoError naming the path and the OS reason if it cannot be
-/// read (a folder, a missing file).
+/// The whole text of a problem or study file (a regular file of at most kMaxProblemFileBytes);
+/// IoError naming the path and the reason otherwise (a folder, a device, a missing file).
 std::string read_input_file(const std::string& path);
 
 /// parse_problem_full() without the effective input.

@@ -2,11 +2,13 @@
 #include "hpcontact/io/schema_check.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
 #include "hpcontact/io/input_schema.hpp"
+#include "hpcontact/model/problem_spec.hpp"
 
 namespace hpcontact::io {
 
@@ -77,6 +79,7 @@ class SchemaChecker {
       case T::scalar_text:
         if (!node.IsScalar() || node.Scalar().empty())
           source_.fail(node, path, "must be a number or a formula (got " + shown_value(node) + ")");
+        if (const auto value = to_number(node)) check_magnitude(node, *value, path);
         return;
       case T::number: check_number(node, key, path); return;
       case T::integer: check_integer(node, key, path); return;
@@ -167,7 +170,19 @@ class SchemaChecker {
     if (key.upper && (key.upper->inclusive ? value > key.upper->value : value >= key.upper->value))
       source_.fail(node, path,
                    std::string("must be ") + (key.upper->inclusive ? "<= " : "< ") +
-                       shown_bound(key.upper->value) + " (got " + node.Scalar() + ")");
+                       shown_bound(key.upper->value) + " (got " + node.Scalar() + ")" +
+                       (key.upper_why.empty() ? "" : ": " + std::string(key.upper_why)));
+  }
+
+  /// The rule for every real number (model::kMaxMagnitude).
+  void check_magnitude(const YAML::Node& node, double value, const std::string& path) {
+    const double a = std::abs(value);
+    if (a > model::kMaxMagnitude || (a > 0 && a < 1 / model::kMaxMagnitude))
+      source_.fail(node, path,
+                   "must be 0 or of magnitude between " + shown_bound(1 / model::kMaxMagnitude) + " and " +
+                       shown_bound(model::kMaxMagnitude) + " (got " + node.Scalar() +
+                       "): products of the input's values must stay within double precision "
+                       "(1e-308 to 1e308)");
   }
 
   static std::string shown_bound(double v) {
@@ -179,6 +194,7 @@ class SchemaChecker {
   void check_number(const YAML::Node& node, const KeySpec& key, const std::string& path) {
     const std::optional<double> value = to_number(node);
     if (!value) source_.fail(node, path, "must be a number (got " + quoted_value(node) + ")");
+    check_magnitude(node, *value, path);
     check_bounds(node, *value, key, path);
   }
 

@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+
+#include <yaml-cpp/depthguard.h>
 
 #include "hpcontact/core/error.hpp"
 
@@ -59,11 +62,99 @@ void YamlSource::fail(const YAML::Node& node, const std::string& path,
   throw InputError(ref.str() + ": " + what);
 }
 
+namespace {
+
+/// The length of the UTF-8 sequence at text[i], or 0 if it is not a valid one (overlong forms,
+/// surrogates and code points above U+10FFFF included).
+std::size_t utf8_sequence(std::string_view text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char c = byte(i);
+  if (c < 0x80) return 1;
+  const std::size_t n = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3
+                        : c >= 0xf0 && c <= 0xf4                ? 4
+                                                                : 0;
+  if (n == 0 || i + n > text.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k)
+    if ((byte(i + k) & 0xc0) != 0x80) return 0;
+  const unsigned char c1 = byte(i + 1);
+  if ((c == 0xe0 && c1 < 0xa0) || (c == 0xed && c1 > 0x9f) || (c == 0xf0 && c1 < 0x90) ||
+      (c == 0xf4 && c1 > 0x8f))
+    return 0;
+  return n;
+}
+
+/// InputError if the text holds a second YAML document: content after a line '---' or '...' at
+/// column 0 that follows the first document's content (a document marker wherever it stands:
+/// YAML forbids them inside scalars; '---' before any content starts the one document, and
+/// markers with nothing after them are harmless). Found by reading the lines: yaml-cpp's
+/// LoadAll loops forever on some malformed input.
+void require_one_document(std::string_view text, const std::string& file_label,
+                          const std::string& what) {
+  bool content = false;       // the first document has begun
+  std::size_t boundary = 0;   // the line of a marker after it, 0 if none
+  std::size_t number = 0;
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    const std::string_view line = text.substr(start, end - start);
+    start = end + 1;
+    ++number;
+    const auto rest_from = [&](std::size_t at) {
+      const std::size_t k = line.find_first_not_of(" \t\r", at);
+      return k == std::string_view::npos || line[k] == '#' ? std::string_view() : line.substr(k);
+    };
+    const bool marker = (line.rfind("---", 0) == 0 || line.rfind("...", 0) == 0) &&
+                        (line.size() == 3 || line[3] == ' ' || line[3] == '\t' || line[3] == '\r');
+    bool has_content;
+    if (marker) {
+      if (content && !boundary) boundary = number;
+      has_content = !rest_from(3).empty();  // "--- {a: 1}": the document it starts
+    } else {
+      has_content = !rest_from(0).empty() && !(!content && line[0] == '%');  // not a directive
+    }
+    if (!has_content) continue;
+    if (boundary)
+      throw InputError(file_label + ":" + std::to_string(boundary) +
+                       ": a second YAML document starts here; a " + what +
+                       " is one document: remove the line '---' (or '...') or split the file");
+    content = true;
+  }
+}
+
+}  // namespace
+
+void require_utf8(std::string_view text, const std::string& file_label, const std::string& what) {
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = utf8_sequence(text, i);
+    if (n == 0) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02x", static_cast<unsigned char>(text[i]));
+      throw InputError(file_label + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                       ": the " + what + " is not UTF-8 text (byte " + hex +
+                       "): write it in UTF-8");
+    }
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+    i += n;
+  }
+}
+
 YAML::Node load_yaml_map(const std::string& text, const std::string& file_label,
                          const std::string& what, const std::string& expected) {
+  require_utf8(text, file_label, what);
+  require_one_document(text, file_label, what);
   YAML::Node root;
   try {
     root = YAML::Load(text);
+  } catch (const YAML::DeepRecursion& e) {
+    throw InputError(file_label + ":" + std::to_string(e.mark.line + 1) + ":" +
+                     std::to_string(e.mark.column + 1) + ": lists and maps nested " +
+                     std::to_string(e.depth()) + " deep (or more); a " + what +
+                     " needs a few levels");
   } catch (const YAML::ParserException& e) {
     throw InputError(file_label + ":" + std::to_string(e.mark.line + 1) + ":" +
                      std::to_string(e.mark.column + 1) +

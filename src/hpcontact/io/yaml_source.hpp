@@ -48,7 +48,11 @@ class YamlSource {
   std::vector<std::pair<std::string, std::string>> generated_paths_;  // path, origin
 };
 
-/// The top-level map of an input file's text. InputError naming `file_label`:
+/// InputError "<file>:<line>:<col>: the <what> is not UTF-8 text (byte 0x..)" at the first byte
+/// that is not UTF-8: YAML is Unicode, and names end up in JSON, which must be.
+void require_utf8(std::string_view text, const std::string& file_label, const std::string& what);
+
+/// The top-level map of an input file's text (UTF-8, one YAML document, nested a few levels). InputError naming `file_label`:
 /// "<file>:<line>:<col>: YAML syntax error: ...", "<file>: empty <what>", or
 /// "<file>: must be <expected> (got ...)" when the text is not a map.
 YAML::Node load_yaml_map(const std::string& text, const std::string& file_label,

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "hpcontact/basis/quadrature.hpp"
 #include "hpcontact/core/error.hpp"
@@ -51,24 +52,33 @@ Vec2 ElementMap::map(double xi, double eta, Mat2* J) const {
 
 void check_jacobian(const ElementMap& map, const Mesh& mesh, int q, int n_points) {
   const auto& rule = basis::gauss_legendre(n_points);
-  Mat2 J;
-  // At the Gauss points det J must be positive. At a corner it may vanish: two edges of one
-  // element on the same smooth curve meet there at 180° (the quarter-disc 2×2 mesh), which is
-  // harmless because no quadrature point sits at a corner; only a negative value is an error.
+  // At the Gauss points det J must be positive, beyond round-off of the map's scale |J|². At a
+  // corner it may vanish: two edges of one element on the same smooth curve meet there at 180°
+  // (the quarter-disc 2×2 mesh), which is harmless because no quadrature point sits at a corner;
+  // only a negative value is an error.
+  struct Point {
+    double xi, eta, det;
+    bool corner;
+  };
+  std::vector<Point> points;
   double scale = 0;
-  auto check = [&](double xi, double eta, bool corner = false) {
+  auto add = [&](double xi, double eta, bool corner) {
+    Mat2 J;
     map.map(xi, eta, &J);
-    const double det = J.determinant();
+    points.push_back({xi, eta, J.determinant(), corner});
     scale = std::max(scale, J.squaredNorm());
-    const bool ok = corner ? det >= -1e-10 * scale : det > 0;
-    HPC_REQUIRE(ok && std::isfinite(det), MeshError, mesh.context(), ": element ",
-                mesh.quad_id(q), " has a non-positive Jacobian determinant ", det, " at (xi, eta) = (",
-                xi, ", ", eta, "): it is inverted or its curved edges cross");
   };
   for (double xi : rule.points)
-    for (double eta : rule.points) check(xi, eta);
+    for (double eta : rule.points) add(xi, eta, false);
   for (double xi : {-1.0, 1.0})
-    for (double eta : {-1.0, 1.0}) check(xi, eta, true);
+    for (double eta : {-1.0, 1.0}) add(xi, eta, true);
+  for (const Point& p : points) {
+    const bool ok = p.corner ? p.det >= -1e-10 * scale : p.det > 1e-12 * scale;
+    HPC_REQUIRE(ok && std::isfinite(p.det), MeshError, mesh.context(), ": element ",
+                mesh.quad_id(q), " has a ", p.det > 0 ? "vanishing" : "non-positive",
+                " Jacobian determinant ", p.det, " at (xi, eta) = (", p.xi, ", ", p.eta,
+                "): it is inverted or degenerate, or its curved edges cross");
+  }
 }
 
 }  // namespace hpcontact::mesh

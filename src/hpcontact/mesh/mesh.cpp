@@ -2,6 +2,7 @@
 #include "hpcontact/mesh/mesh.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include "hpcontact/core/error.hpp"
 
@@ -12,6 +13,14 @@ long long pair_key(int a, int b) {
   if (a > b) std::swap(a, b);
   return (static_cast<long long>(a) << 32) | static_cast<unsigned>(b);
 }
+
+std::array<int, 4> sorted_corners(std::array<int, 4> v) {
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+/// Corners closer than this fraction of the element's diameter are one point.
+constexpr double kCornerTolerance = 1e-8;
 }  // namespace
 
 Mesh::Mesh(std::vector<Vec2> nodes, std::vector<int> node_ids, std::vector<std::array<int, 4>> quads,
@@ -30,6 +39,7 @@ Mesh::Mesh(std::vector<Vec2> nodes, std::vector<int> node_ids, std::vector<std::
   }
   quad_edges_.resize(quads_.size());
   quad_edge_reversed_.resize(quads_.size());
+  std::map<std::array<int, 4>, int> corner_sets;  // sorted corners -> element id
   for (int q = 0; q < n_quads(); ++q) {
     HPC_REQUIRE(quad_of_id_.emplace(quad_ids_[q], q).second, MeshError, context_,
                 ": duplicate element id ", quad_ids_[q]);
@@ -38,6 +48,22 @@ Mesh::Mesh(std::vector<Vec2> nodes, std::vector<int> node_ids, std::vector<std::
       HPC_REQUIRE(v[k] >= 0 && v[k] < n_nodes(), MeshError, context_, ": element ", quad_ids_[q],
                   " refers to a missing node");
     }
+    // Distinct corners: two closer than a round-off of the element's size make it a triangle
+    // (det J = 0 at that corner), whatever the sign test below says of the tiny edge.
+    double diameter = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        diameter = std::max(diameter, (nodes_[v[i]] - nodes_[v[j]]).norm());
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        HPC_REQUIRE((nodes_[v[i]] - nodes_[v[j]]).norm() > kCornerTolerance * diameter, MeshError,
+                    context_, ": element ", quad_ids_[q], " is degenerate: its corners ",
+                    node_ids_[v[i]], " and ", node_ids_[v[j]], " are at one point (",
+                    (nodes_[v[i]] - nodes_[v[j]]).norm(), " apart, the element's size is ",
+                    diameter, ")");
+    HPC_REQUIRE(corner_sets.emplace(sorted_corners(v), quad_ids_[q]).second, MeshError, context_,
+                ": elements ", corner_sets[sorted_corners(v)], " and ", quad_ids_[q],
+                " have the same corners: an element is given twice");
     // Counter-clockwise corners: every corner turns left (a convex, positively oriented polygon
     // of the vertices; curved edges are checked later through the Jacobian).
     for (int k = 0; k < 4; ++k) {

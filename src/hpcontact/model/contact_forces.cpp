@@ -7,6 +7,7 @@
 
 #include "hpcontact/contact/two_body.hpp"
 #include "hpcontact/fem/finite_strain.hpp"
+#include "hpcontact/model/parallel.hpp"
 
 namespace hpcontact::model {
 
@@ -57,13 +58,12 @@ bool FiniteStrainForces::add(const Eigen::VectorXd& u, Eigen::VectorXd& R,
                              std::vector<Eigen::Triplet<double>>* t, std::string* inverted) const {
   const int ne = static_cast<int>(elements_.size());
   std::vector<fem::FiniteStrainElement> el(ne);
-#pragma omp parallel for schedule(dynamic)
-  for (int i = 0; i < ne; ++i) {
+  parallel_for(ne, [&](int i) {
     const Body& body = d_.bodies[elements_[i].body];
     const int q = elements_[i].q;
     el[i] = fem::finite_strain_element(values_[i], body.material_of(q), body.law, body.thickness,
                                        body.element_coefficients(q, u), t != nullptr);
-  }
+  });
   for (int i = 0; i < ne; ++i) {
     const Body& body = d_.bodies[elements_[i].body];
     const int q = elements_[i].q;

@@ -16,6 +16,41 @@
 
 namespace hpcontact::model {
 
+namespace {
+
+/// Why force control has nothing to scale: the first pair's resultant R at the state u of the
+/// displacement factor `factor` has no component `component`. Says which of the usual causes it
+/// is: nothing prescribed to scale, the force in the other component, or no contact (and how far
+/// the body is from it).
+std::string no_force_to_scale(const SolverSpec& ss, const Discretization& d,
+                              const ContactPair& pair, const Eigen::VectorXd& u,
+                              const Eigen::VectorXd* multipliers, double factor, const Vec2& R) {
+  const auto& tr = *ss.target_resultant;
+  const char* axis = tr.component == 0 ? "x" : "y";
+  std::ostringstream os;
+  os << ss.where.str() << ".target_resultant: the prescribed displacements (factor " << factor
+     << ") give the contact resultant (" << R.x() << ", " << R.y() << "), no force in " << axis
+     << " to scale to the target " << tr.value << ": ";
+  const ContactResult c = evaluate_contact(d, pair, u, multipliers);
+  double closest = std::numeric_limits<double>::infinity();
+  for (const auto& st : c.states) closest = std::min(closest, st.gap);
+  if (d.prescribed.cwiseAbs().maxCoeff() == 0)
+    os << "no displacement is prescribed, and force control scales only prescribed "
+          "displacements (give the push as ux or uy)";
+  else if (std::abs(R(1 - tr.component)) > 0)
+    os << "the force is in " << (tr.component == 0 ? "y" : "x")
+       << "; is target_resultant.component right?";
+  else if (closest > 0)
+    os << "the body does not reach the obstacle (its closest contact point stays " << closest
+       << " away): give a larger push, or check the obstacle's position and normal and the push's "
+          "sign";
+  else
+    os << "points touch the obstacle but press on nothing (is the push's sign right?)";
+  return os.str();
+}
+
+}  // namespace
+
 NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d,
                                 const ProgressFn& progress, const StartState& start,
                                 const StepFn& on_step) {
@@ -308,9 +343,12 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     // The resultant of the last converged step, as record() took it for the load path.
     auto measured = [&]() { return std::abs(sol.path.back().resultant(tr.component)); };
     double l0 = lambda, f0 = measured() - tr.value;
-    HPC_REQUIRE(f0 + tr.value > 0, InputError, ss.where.str(),
-                ".target_resultant: the prescribed displacements produce no contact force, so they "
-                "cannot be scaled to the target");
+    if (!(f0 + tr.value > 0)) {
+      const auto multipliers = system.multipliers(x);
+      throw InputError(no_force_to_scale(ss, d, pairs.front(), system.solution(x),
+                                         multipliers[0].size() ? &multipliers[0] : nullptr, l0,
+                                         sol.path.back().resultant));
+    }
     double l1 = l0 * tr.value / (f0 + tr.value);
     for (int it = 0; it < 50; ++it) {
       if (!advance_to(lambda, l1)) return failed();

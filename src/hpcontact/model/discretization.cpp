@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "hpcontact/basis/legendre.hpp"
 #include "hpcontact/basis/quadrature.hpp"
@@ -29,9 +30,20 @@ geometry::CurvePtr make_curve(const CurveSpec& c, const Vec2& a, const Vec2& b) 
     return geometry::arc_through(a, b, Vec2(c.center[0], c.center[1]), c.radius, c.ccw, where);
   auto fx = std::make_shared<Expression>(c.x_expr, std::vector<std::string>{"s"}, where + ".x");
   auto fy = std::make_shared<Expression>(c.y_expr, std::vector<std::string>{"s"}, where + ".y");
-  return std::make_shared<geometry::FunctionCurve>(
+  auto curve = std::make_shared<geometry::FunctionCurve>(
       [fx, fy](double s) { return Vec2((*fx)(s), (*fy)(s)); }, nullptr,
       "parametric(" + c.x_expr + ", " + c.y_expr + ")");
+  // Its ends must be its nodes (as an arc's nodes must be on its circle): the node is moved
+  // onto the end only by the round-off of the node's digits.
+  const double tol = 1e-6 * (b - a).norm();
+  for (const auto& [s, node, id] : {std::tuple{0.0, a, c.node_a}, std::tuple{1.0, b, c.node_b}}) {
+    const Vec2 end = curve->point(s);
+    HPC_REQUIRE((end - node).norm() <= tol, InputError, where, ": the curve's end at s = ", s,
+                " is (", end.x(), ", ", end.y(), "), ", (end - node).norm(), " away from its node ",
+                id, " at (", node.x(), ", ", node.y(),
+                "): a curve must end at its nodes (to 1e-6 of the distance between them)");
+  }
+  return curve;
 }
 
 Body make_body(const ProblemSpec& spec, int b) {

@@ -7,8 +7,24 @@
 #include <muParser.h>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/model/problem_spec.hpp"
 
 namespace hpcontact::model {
+
+namespace {
+/// The formula as messages quote it: whole if short, else its start and its length.
+std::string shown(const std::string& text) {
+  constexpr std::size_t kShown = 80;
+  if (text.size() <= kShown) return "'" + text + "'";
+  return "'" + text.substr(0, kShown) + "...' (" + std::to_string(text.size()) + " characters)";
+}
+
+/// muparser's message, which may quote the formula again, cut to a line.
+std::string shown_message(const std::string& message) {
+  constexpr std::size_t kShown = 200;
+  return message.size() <= kShown ? message : message.substr(0, kShown) + "...";
+}
+}  // namespace
 
 struct Expression::Impl {
   mu::Parser parser;
@@ -32,7 +48,7 @@ Expression::Expression(const std::string& text, const std::vector<std::string>& 
     impl_->parser.SetExpr(text_);
     impl_->parser.Eval();
   } catch (const mu::Parser::exception_type& e) {
-    throw InputError(where_ + ": cannot evaluate '" + text_ + "': " + e.GetMsg());
+    throw InputError(where_ + ": cannot evaluate " + shown(text_) + ": " + shown_message(e.GetMsg()));
   }
 }
 
@@ -49,10 +65,13 @@ double Expression::operator()(double a, double b) const {
   try {
     v = impl_->parser.Eval();
   } catch (const mu::Parser::exception_type& e) {
-    throw InputError(where_ + ": cannot evaluate '" + text_ + "': " + e.GetMsg());
+    throw InputError(where_ + ": cannot evaluate " + shown(text_) + ": " + shown_message(e.GetMsg()));
   }
-  HPC_REQUIRE(std::isfinite(v), InputError, where_, ": '", text_, "' is not finite at (", a, ", ",
-              b, ")");
+  HPC_REQUIRE(std::isfinite(v), InputError, where_, ": ", shown(text_), " is not finite at (", a,
+              ", ", b, ")");
+  HPC_REQUIRE(std::abs(v) <= kMaxMagnitude, InputError, where_, ": ", shown(text_), " is ", v, " at (",
+              a, ", ", b, "), beyond the magnitude ", kMaxMagnitude,
+              " of input values (products of them must stay within double precision)");
   return v;
 }
 

@@ -1,14 +1,46 @@
 // The elastic operator (with or without static condensation) and the linear solve built on it.
 #include "hpcontact/model/linear_solve.hpp"
 
+#include <charconv>
 #include <chrono>
+#include <cmath>
 
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/elasticity.hpp"
 #include "hpcontact/fem/element_values.hpp"
+#include "hpcontact/model/parallel.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
 
 namespace hpcontact::model {
+
+namespace {
+/// The shortest text that reads back as v (0.49999999999999994, not 0.5).
+std::string exact(double v) {
+  char buffer[32];
+  return {buffer, std::to_chars(buffer, buffer + sizeof buffer, v).ptr};
+}
+
+constexpr const char* kOverflow =
+    "a load, prescribed displacement, length or material value of the input is too large (or "
+    "too small) for double precision";
+
+/// NumericalError if a vector over all dofs holds a value that is not finite; `what` names it.
+void require_finite(const Discretization& d, const Eigen::VectorXd& v, const std::string& what) {
+  for (Eigen::Index i = 0; i < v.size(); ++i)
+    if (!std::isfinite(v(i)))
+      throw NumericalError(what + " is not finite (" + exact(v(i)) + ") at " +
+                           describe_dof(d, static_cast<int>(i)) + ": " + kOverflow);
+}
+
+/// A message naming an element and its material, for a stiffness that is broken.
+std::string element_failure(const Body& body, int q, const std::string& what) {
+  const auto& m = body.material_of(q);
+  return body.mesh.context() + ": element " + std::to_string(body.mesh.quad_id(q)) + ": " + what +
+         " (E = " + exact(m.youngs_modulus) + ", nu = " + exact(m.poisson_ratio) +
+         ", thickness " + exact(body.thickness) + ")";
+}
+
+}  // namespace
 
 Eigen::MatrixXd element_stiffness(const Body& body, int q) {
   const auto ev =
@@ -31,17 +63,25 @@ ElasticOperator assemble_elastic(const Discretization& d, bool condense) {
   // Element work in parallel: stiffness, and condensation with the element's share of the load.
   std::vector<Eigen::MatrixXd> Ke(refs.size());
   std::vector<ElasticOperator::CondensedElement> ce(condense ? refs.size() : 0);
-#pragma omp parallel for schedule(dynamic)
-  for (int i = 0; i < static_cast<int>(refs.size()); ++i) {
+  parallel_for(static_cast<int>(refs.size()), [&](int i) {
     const Body& body = d.bodies[refs[i].body];
     const int q = refs[i].q;
     Ke[i] = element_stiffness(body, q);
-    if (!condense) continue;
+    if (!Ke[i].allFinite())
+      throw NumericalError(element_failure(body, q, "its stiffness matrix is not finite") + ": " +
+                           kOverflow);
+    if (!condense) return;
     Eigen::VectorXd fe(Ke[i].rows());
     for (int a = 0; a < fe.size(); ++a) fe(a) = d.load(body.global_dof(q, a));
     const auto& es = body.dofs.element(q);
-    ce[i] = {refs[i].body, q, fem::condense(Ke[i], fe, es.n_modes(), es.n_internal)};
-  }
+    try {
+      ce[i] = {refs[i].body, q, fem::condense(Ke[i], fe, es.n_modes(), es.n_internal)};
+    } catch (const NumericalError& e) {
+      throw NumericalError(element_failure(body, q, e.what()) +
+                           ": a nu this close to 0.5, or an E or thickness this close to 0, is "
+                           "lost to round-off");
+    }
+  });
   std::vector<Eigen::Triplet<double>> t;
   for (size_t i = 0; i < refs.size(); ++i) {
     const Body& body = d.bodies[refs[i].body];
@@ -115,6 +155,8 @@ void ElasticOperator::recover_internal(const Discretization& d, Eigen::VectorXd&
 LinearSolution solve_linear(const Discretization& d, const LinearSolveOptions& options) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
+  require_finite(d, d.load, "the load vector");
+  require_finite(d, d.prescribed, "the prescribed displacement");
   const ElasticOperator op = assemble_elastic(d, options.condense);
   const solve::SparseMatrix K = op.unknown_block(d);
   // K_uu x = f_u - K_u,prescribed u_p, i.e. the residual K u - f at x = 0 with its sign turned.
@@ -131,6 +173,7 @@ LinearSolution solve_linear(const Discretization& d, const LinearSolveOptions& o
   }
   sol.u = op.expand(d, solver.solve(f), 1.0);
   op.recover_internal(d, sol.u, 1.0);
+  require_finite(d, sol.u, "the solution");
   sol.solve_seconds = std::chrono::duration<double>(Clock::now() - t1).count();
   sol.n_system = op.n_unknowns;
   return sol;

@@ -9,6 +9,12 @@
 
 namespace hpcontact::model {
 
+/// Every real number of a problem file (values, coordinates, numbers and values of formulas) is
+/// 0 or of a magnitude in [1/kMaxMagnitude, kMaxMagnitude] (formulas: at most kMaxMagnitude):
+/// products of a few of them (a modulus times a length squared times a displacement) then stay
+/// inside double precision's 1e±308.
+constexpr double kMaxMagnitude = 1e100;
+
 /// Where a value came from, for messages: "thick-cylinder.yaml:12:5: bodies[0].material.nu".
 struct SourceRef {
   std::string file;

@@ -1,11 +1,11 @@
 // Contact points as VTK polylines, and .pvd collections, in ASCII (no VTK dependency).
 #include "hpcontact/post/contact_vtu.hpp"
 
-#include <fstream>
 #include <iomanip>
 #include <utility>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/post/output_file.hpp"
 #include "hpcontact/post/vtk_grid.hpp"
 
 namespace hpcontact::post {
@@ -49,14 +49,14 @@ void write_contact_vtu(const std::string& path, const std::vector<model::Contact
 
 void write_pvd(const std::string& path, const std::vector<std::string>& files,
                const std::vector<double>& times) {
-  std::ofstream out(path);
-  HPC_REQUIRE(out, IoError, path, ": cannot open for writing");
+  OutputFile file(path);
+  std::ostream& out = file.stream();
   out << std::setprecision(12);
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
   for (std::size_t i = 0; i < files.size(); ++i)
     out << "<DataSet timestep=\"" << times[i] << "\" part=\"0\" file=\"" << files[i] << "\"/>\n";
   out << "</Collection>\n</VTKFile>\n";
-  HPC_REQUIRE(out.good(), IoError, path, ": write failed");
+  file.close();
 }
 
 }  // namespace hpcontact::post

@@ -1,10 +1,7 @@
-// JSON rendering and atomic writing of summary.json.
+// JSON rendering and writing of summary.json.
 #include "hpcontact/post/summary.hpp"
 
-#include <cstdio>
-#include <fstream>
-
-#include "hpcontact/core/error.hpp"
+#include "hpcontact/post/output_file.hpp"
 
 namespace hpcontact::post {
 
@@ -29,17 +26,6 @@ nlohmann::json to_json(const Summary& s) {
   }
   for (auto it = s.extra.begin(); it != s.extra.end(); ++it) j[it.key()] = it.value();
   return j;
-}
-
-void write_text_file(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    HPC_REQUIRE(out, IoError, path, ": cannot open for writing");
-    out << text;
-    HPC_REQUIRE(out.good(), IoError, path, ": write failed");
-  }
-  HPC_REQUIRE(std::rename(tmp.c_str(), path.c_str()) == 0, IoError, path, ": cannot rename ", tmp);
 }
 
 void write_summary(const std::string& path, const Summary& s) {

@@ -31,11 +31,8 @@ struct Summary {
 
 nlohmann::json to_json(const Summary& s);
 
-/// Writes atomically (a temporary file renamed into place), so a crash never leaves a partial
-/// summary. Throws IoError.
+/// Writes summary.json (checked to the close, see OutputFile); IoError on failure. A run writes
+/// it into its staging folder, which the output folder moves into place whole.
 void write_summary(const std::string& path, const Summary& s);
-
-/// Writes `text` to `path` atomically; IoError on failure.
-void write_text_file(const std::string& path, const std::string& text);
 
 }  // namespace hpcontact::post

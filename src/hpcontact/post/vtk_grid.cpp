@@ -3,14 +3,11 @@
 
 #include <iomanip>
 
-#include "hpcontact/core/error.hpp"
-
 namespace hpcontact::post {
 
 VtkGrid::VtkGrid(const std::string& path, const std::vector<Vec2>& points,
                  const std::vector<std::vector<int>>& cells, int vtk_cell_type, int precision)
-    : path_(path), out_(path), n_points_(points.size()), n_cells_(cells.size()) {
-  HPC_REQUIRE(out_, IoError, path, ": cannot open for writing");
+    : file_(path), out_(file_.stream()), n_points_(points.size()), n_cells_(cells.size()) {
   out_ << std::setprecision(precision);
   out_ << "<?xml version=\"1.0\"?>\n"
        << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
@@ -63,7 +60,7 @@ void VtkGrid::cell_scalar(const std::string& name, const std::function<double(st
 
 void VtkGrid::finish() {
   out_ << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-  HPC_REQUIRE(out_.good(), IoError, path_, ": write failed");
+  file_.close();
 }
 
 void VtkGrid::array(const std::string& name, const std::string& type, std::size_t n,

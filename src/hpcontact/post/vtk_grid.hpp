@@ -2,12 +2,12 @@
 #pragma once
 
 #include <cstddef>
-#include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "hpcontact/geometry/vec2.hpp"
+#include "hpcontact/post/output_file.hpp"
 
 namespace hpcontact::post {
 
@@ -28,15 +28,15 @@ public:
   void begin_cell_data(const std::string& scalars = "");
   void cell_scalar(const std::string& name, const std::function<double(std::size_t)>& value,
                    const std::string& type = "Int32");
-  /// Ends the cell data and the file; checks the stream.
+  /// Ends the cell data and closes the file, checked to the disk (OutputFile::close).
   void finish();
 
 private:
   void array(const std::string& name, const std::string& type, std::size_t n,
              const std::function<double(std::size_t)>& value);
 
-  std::string path_;
-  std::ofstream out_;
+  OutputFile file_;
+  std::ostream& out_;
   std::size_t n_points_ = 0, n_cells_ = 0;
 };
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <vector>
@@ -28,6 +29,9 @@ public:
     if (!L || L->minor >= L->n) return -1;
     return static_cast<const int*>(L->Perm)[L->minor];
   }
+
+  /// Whether an analysis left a factor to fill (CHOLMOD returns none when it runs out of memory).
+  bool has_factor() const { return m_cholmodFactor != nullptr; }
 
   /// Calls f(row of A, pivot) for every column of the factor.
   template <typename F>
@@ -55,6 +59,30 @@ public:
     }
   }
 };
+
+/// After a CHOLMOD call (`stage`: analysis, factorisation, solve) on a system of n unknowns
+/// with nnz stored entries: ResourceError if it failed for want of memory or of integer range,
+/// with the size of the factor when the analysis got that far. (A matrix that is not positive
+/// definite is a warning status, handled by the caller through the factor's pivots.)
+void require_cholmod_resources(const CholmodWithPivots& c, const char* stage, Eigen::Index n,
+                               Eigen::Index nnz) {
+  const cholmod_common& cm = const_cast<CholmodWithPivots&>(c).cholmod();
+  if (cm.status >= CHOLMOD_OK && c.has_factor()) return;
+  std::ostringstream os;
+  os << "the sparse Cholesky solver (CHOLMOD) failed in its " << stage << " of the system of "
+     << n << " unknowns";
+  if (nnz > 0) os << " (" << nnz << " stored matrix entries)";
+  os << ": "
+     << (cm.status == CHOLMOD_OUT_OF_MEMORY ? "out of memory"
+         : cm.status == CHOLMOD_TOO_LARGE   ? "the system is too large for its integers"
+                                            : "status " + std::to_string(cm.status));
+  if (cm.lnz > 0)
+    os << "; the factor has " << cm.lnz << " entries, at least " << std::setprecision(3)
+       << cm.lnz * sizeof(double) / 1e9 << " GB";
+  os << "; memory in use at the peak " << std::setprecision(3) << cm.memory_usage / 1e9
+     << " GB. Use fewer elements or a lower degree (or static condensation), or more memory";
+  throw ResourceError(os.str());
+}
 
 /// A pivot this small relative to its diagonal entry of A means the row is (to round-off) a
 /// combination of the rows eliminated before it: the matrix is singular. Well-posed stiffness
@@ -159,7 +187,12 @@ void LinearSolver::factorize(const SparseMatrix& A_in) {
     solver.factorize(A);
   };
   if (kind_ == LinearSolverKind::cholmod) {
-    compute(impl_->cholmod);
+    if (analyse) {
+      impl_->cholmod.analyzePattern(A);
+      require_cholmod_resources(impl_->cholmod, "analysis", A.rows(), A.nonZeros());
+    }
+    impl_->cholmod.factorize(A);
+    require_cholmod_resources(impl_->cholmod, "factorisation", A.rows(), A.nonZeros());
     ok = impl_->cholmod.info() == Eigen::Success;
     const Eigen::VectorXd diagonal = ok ? Eigen::VectorXd(A.diagonal()) : Eigen::VectorXd();
     if (ok)
@@ -204,7 +237,11 @@ void LinearSolver::factorize(const SparseMatrix& A_in) {
 
 Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
   switch (kind_) {
-    case LinearSolverKind::cholmod: return impl_->cholmod.solve(b);
+    case LinearSolverKind::cholmod: {
+      Eigen::VectorXd x = impl_->cholmod.solve(b);
+      require_cholmod_resources(impl_->cholmod, "solve", b.size(), 0);
+      return x;
+    }
     case LinearSolverKind::ldlt: return impl_->ldlt.solve(b);
     case LinearSolverKind::lu: break;
   }
@@ -213,7 +250,11 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
 
 Eigen::MatrixXd LinearSolver::solve_columns(const Eigen::MatrixXd& B) const {
   switch (kind_) {
-    case LinearSolverKind::cholmod: return impl_->cholmod.solve(B);
+    case LinearSolverKind::cholmod: {
+      Eigen::MatrixXd X = impl_->cholmod.solve(B);
+      require_cholmod_resources(impl_->cholmod, "solve", B.rows(), 0);
+      return X;
+    }
     case LinearSolverKind::ldlt: return impl_->ldlt.solve(B);
     case LinearSolverKind::lu: break;
   }

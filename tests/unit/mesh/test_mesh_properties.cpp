@@ -176,6 +176,30 @@ TEST(MeshChecks, ClockwiseElementIsRejected) {
   EXPECT_THROW(Mesh(dart, {1, 2, 3, 4}, {{0, 1, 2, 3}}, {1}, {}, "ctx"), MeshError);
 }
 
+// Two corners at one point up to round-off of the element's size (distinct node ids) make a
+// triangle; they shall be rejected naming the element and the nodes, at any scale of the mesh.
+TEST(MeshChecks, CornersAtOnePointAreRejectedAtAnyScale) {
+  for (double h : {1e-9, 1.0, 1e9}) {
+    const std::vector<Vec2> nodes = {Vec2(0, 0), h * Vec2(1e-9, 0), h * Vec2(1, 1), h * Vec2(0, 1)};
+    const std::string msg = message_of([&] { Mesh(nodes, {1, 2, 3, 4}, {{0, 1, 2, 3}}, {8}, {}, "ctx"); });
+    EXPECT_NE(msg.find("element 8 is degenerate: its corners 1 and 2 are at one point"),
+              std::string::npos)
+        << msg;
+    // A short edge that is not round-off (1e-6 of the element) is an element, if a poor one.
+    const std::vector<Vec2> short_edge = {Vec2(0, 0), h * Vec2(1e-6, 0), h * Vec2(1, 1), h * Vec2(0, 1)};
+    EXPECT_NO_THROW(Mesh(short_edge, {1, 2, 3, 4}, {{0, 1, 2, 3}}, {8}, {}, "ctx")) << h;
+  }
+}
+
+// The same element under two ids (its edges then have two elements each, and pass the topology
+// check) shall be rejected.
+TEST(MeshChecks, ElementGivenTwiceIsRejected) {
+  const std::vector<Vec2> nodes = {Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)};
+  const std::string msg =
+      message_of([&] { Mesh(nodes, {1, 2, 3, 4}, {{0, 1, 2, 3}, {1, 2, 3, 0}}, {5, 6}, {}, "ctx"); });
+  EXPECT_NE(msg.find("elements 5 and 6 have the same corners"), std::string::npos) << msg;
+}
+
 // A duplicate node id shall be rejected with a MeshError naming the id.
 TEST(MeshChecks, DuplicateNodeIdIsRejected) {
   const std::vector<Vec2> nodes = {Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)};

@@ -1,0 +1,33 @@
+// Parallel element loops: an exception leaves the OpenMP region as the error it is.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include "hpcontact/core/error.hpp"
+#include "hpcontact/model/parallel.hpp"
+
+using namespace hpcontact;
+
+TEST(ParallelFor, EveryIndexRunsOnce) {
+  std::vector<std::atomic<int>> calls(1000);
+  model::parallel_for(1000, [&](int i) { ++calls[i]; });
+  for (const auto& c : calls) EXPECT_EQ(c.load(), 1);
+}
+
+// Several calls throw: the one of the smallest index reaches the caller, with its type and
+// message, whatever the threads' timing (run repeatedly).
+TEST(ParallelFor, SmallestFailingIndexIsRethrownAsItsType) {
+  for (int repeat = 0; repeat < 20; ++repeat) {
+    try {
+      model::parallel_for(500, [](int i) {
+        if (i % 97 == 41) throw NumericalError("element " + std::to_string(i));
+        if (i == 300) throw std::bad_alloc();
+      });
+      FAIL() << "no exception";
+    } catch (const NumericalError& e) {
+      EXPECT_EQ(std::string(e.what()), "element 41");
+    }
+  }
+}
