@@ -219,9 +219,10 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "solver", .type = T::section, .default_yaml = "{}",
        .doc = "How the equations are solved."},
       {.path = "solver.linear", .type = T::choice, .default_yaml = "cholmod",
-       .doc = "Sparse direct solver: CHOLMOD, Eigen's SimplicialLDLT, or UMFPACK's LU (used "
-              "whatever is set with tangent: finite-difference and with contact between two "
-              "bodies, whose tangents can be indefinite).",
+       .doc = "Sparse direct solver: CHOLMOD (in a contact solve it gives way to LU from the first "
+              "tangent that is not positive definite), Eigen's SimplicialLDLT, or UMFPACK's LU "
+              "(used whatever is set with tangent: finite-difference, finite strain and friction, "
+              "whose tangents can be indefinite or unsymmetric).",
        .choices = {"cholmod", "ldlt", "lu"}},
       {.path = "solver.tangent", .type = T::choice, .default_yaml = "analytic",
        .doc = "Newton tangent: analytic (consistent), or the seed's central finite differences of "

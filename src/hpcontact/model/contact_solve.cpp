@@ -67,13 +67,14 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   no.max_iterations = ss.max_iterations;
   no.tolerance = ss.tolerance;
   no.linear_solver = solve::linear_solver_kind(ss.linear, ss.where.str() + ".linear");
+  // The contact tangent's curvature terms (−p_N M between two bodies, a curve obstacle's
+  // curvature) can make it indefinite away from the solution (a deep trial penetration): it
+  // is not a missing constraint, so CHOLMOD gives way to LU for the rest of the solve.
+  if (no.linear_solver == solve::LinearSolverKind::cholmod)
+    no.linear_solver = solve::LinearSolverKind::cholmod_else_lu;
   // A finite-difference column that straddles a point's contact switch is inconsistent with
   // its neighbours: the symmetric part can be indefinite, so it is solved by LU.
   if (ss.tangent == "finite-difference") no.linear_solver = solve::LinearSolverKind::lu;
-  // Between two bodies the tangent's curvature terms (−p_N M) can make it indefinite away from
-  // the solution (a deep first step): symmetric, but solved by LU.
-  for (const auto& pair : pairs)
-    if (pair.other >= 0) no.linear_solver = solve::LinearSolverKind::lu;
   // The finite-strain tangent is indefinite wherever the body is unstable under compression
   // (and may be on the way to a stable state): solved by LU.
   if (d.finite_strain()) no.linear_solver = solve::LinearSolverKind::lu;

@@ -165,7 +165,10 @@ LinearSolverKind linear_solver_kind(const std::string& name, const std::string& 
   throw InputError(where + ": unknown linear solver '" + name + "' (expected cholmod, ldlt or lu)");
 }
 
-LinearSolver::LinearSolver(LinearSolverKind kind) : kind_(kind), impl_(std::make_unique<Impl>()) {
+LinearSolver::LinearSolver(LinearSolverKind kind)
+    : kind_(kind == LinearSolverKind::cholmod_else_lu ? LinearSolverKind::cholmod : kind),
+      lu_when_indefinite_(kind == LinearSolverKind::cholmod_else_lu),
+      impl_(std::make_unique<Impl>()) {
   impl_->cholmod.cholmod().print = 0;  // failures are reported through info(), not printed
 }
 LinearSolver::~LinearSolver() = default;
@@ -194,6 +197,10 @@ void LinearSolver::factorize(const SparseMatrix& A_in) {
     impl_->cholmod.factorize(A);
     require_cholmod_resources(impl_->cholmod, "factorisation", A.rows(), A.nonZeros());
     ok = impl_->cholmod.info() == Eigen::Success;
+    if (!ok && lu_when_indefinite_) {  // not positive definite: LU from now on
+      kind_ = LinearSolverKind::lu;
+      return factorize(A_in);
+    }
     const Eigen::VectorXd diagonal = ok ? Eigen::VectorXd(A.diagonal()) : Eigen::VectorXd();
     if (ok)
       impl_->cholmod.for_each_pivot(
@@ -243,7 +250,8 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
       return x;
     }
     case LinearSolverKind::ldlt: return impl_->ldlt.solve(b);
-    case LinearSolverKind::lu: break;
+    case LinearSolverKind::lu:
+    case LinearSolverKind::cholmod_else_lu: break;  // kind_ is never cholmod_else_lu
   }
   return impl_->lu.solve(b);
 }
@@ -256,9 +264,18 @@ Eigen::MatrixXd LinearSolver::solve_columns(const Eigen::MatrixXd& B) const {
       return X;
     }
     case LinearSolverKind::ldlt: return impl_->ldlt.solve(B);
-    case LinearSolverKind::lu: break;
+    case LinearSolverKind::lu:
+    case LinearSolverKind::cholmod_else_lu: break;  // kind_ is never cholmod_else_lu
   }
-  return impl_->lu.solve(B);
+  // Many columns (a Schur complement's): without UMFPACK's iterative refinement, which would
+  // triple the cost of each; the LU with pivoting is backward stable, and the Newton iteration
+  // that uses these columns converges on its exact residual.
+  auto& control = impl_->lu.umfpackControl();
+  const double refinement = control[UMFPACK_IRSTEP];
+  control[UMFPACK_IRSTEP] = 0;
+  Eigen::MatrixXd X = impl_->lu.solve(B);
+  control[UMFPACK_IRSTEP] = refinement;
+  return X;
 }
 
 }  // namespace hpcontact::solve

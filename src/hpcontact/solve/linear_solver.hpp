@@ -10,7 +10,10 @@ namespace hpcontact::solve {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
-enum class LinearSolverKind { cholmod, ldlt, lu };
+/// cholmod_else_lu: CHOLMOD while the matrices are positive definite, UMFPACK's LU from the first
+/// that is not (a contact tangent made indefinite by a curvature term at a deep trial
+/// penetration) — a singular matrix is still refused, by the LU.
+enum class LinearSolverKind { cholmod, ldlt, lu, cholmod_else_lu };
 
 /// Parses "cholmod" / "ldlt" / "lu"; InputError naming `where` otherwise.
 LinearSolverKind linear_solver_kind(const std::string& name, const std::string& where);
@@ -39,10 +42,13 @@ public:
   Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& B) const;
   /// Symbolic analyses done so far (a new one for each new sparsity pattern), for tests.
   int analyses() const { return analyses_; }
+  /// The factorisation in use: for cholmod_else_lu, lu once a matrix was not positive definite.
+  LinearSolverKind kind() const { return kind_; }
 
 private:
   struct Impl;
   LinearSolverKind kind_;
+  bool lu_when_indefinite_ = false;
   int last_singular_row_ = -1;
   int analyses_ = 0;
   std::unique_ptr<Impl> impl_;

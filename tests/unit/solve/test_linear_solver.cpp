@@ -121,6 +121,31 @@ TEST(LinearSolver, IndefiniteMatrixIsANumericalError) {
   }
 }
 
+// cholmod_else_lu shall solve an indefinite but nonsingular matrix by LU (and stay with LU),
+// solve a positive definite one by CHOLMOD, and still refuse a singular one.
+TEST(LinearSolver, CholmodGivesWayToLuOnAnIndefiniteMatrix) {
+  const SparseMatrix indefinite = from_triplets(2, {{0, 0, 1}, {0, 1, 2}, {1, 0, 2}, {1, 1, 1}});
+  const SparseMatrix definite = from_triplets(2, {{0, 0, 2}, {0, 1, 1}, {1, 0, 1}, {1, 1, 2}});
+  LinearSolver s(LinearSolverKind::cholmod_else_lu);
+  s.factorize(definite);
+  EXPECT_EQ(s.kind(), LinearSolverKind::cholmod);
+  s.factorize(indefinite);
+  EXPECT_EQ(s.kind(), LinearSolverKind::lu);
+  const Eigen::Vector2d b(1, 5);  // [[1,2],[2,1]] x = b: x = (3, -1)
+  const Eigen::VectorXd x = s.solve(b);
+  EXPECT_NEAR(x(0), 3, 1e-14);
+  EXPECT_NEAR(x(1), -1, 1e-14);
+  const Eigen::MatrixXd X = s.solve_columns(Eigen::Matrix2d::Identity() * 3);
+  EXPECT_LT((Eigen::MatrixXd(indefinite) * X - Eigen::Matrix2d::Identity() * 3).norm(), 1e-14);
+  s.factorize(definite);  // LU from now on, still right
+  EXPECT_EQ(s.kind(), LinearSolverKind::lu);
+  EXPECT_LT((Eigen::MatrixXd(definite) * s.solve(b) - b).norm(), 1e-14);
+
+  const SparseMatrix singular = from_triplets(2, {{0, 0, 1}, {0, 1, 1}, {1, 0, 1}, {1, 1, 1}});
+  LinearSolver t(LinearSolverKind::cholmod_else_lu);
+  EXPECT_THROW(t.factorize(singular), NumericalError);
+}
+
 // Solver names shall parse ("cholmod", "ldlt"); anything else is an InputError naming the key.
 TEST(LinearSolver, KindFromName) {
   EXPECT_EQ(solve::linear_solver_kind("cholmod", "k"), LinearSolverKind::cholmod);
