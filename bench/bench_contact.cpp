@@ -1,4 +1,4 @@
-// The Hertz contact problem: whole solves with the analytic tangent and with the seed's
+// The Hertz contact problem by the seed's penalty: whole solves with the analytic tangent and with the seed's
 // finite-difference tangent (eq. 3.36), one tangent evaluation of each at the solution; the
 // examples end to end as `hpcontact run` does them (read, solve, write every file).
 #include <benchmark/benchmark.h>
@@ -26,7 +26,7 @@ const char* kTangent[] = {"analytic", "finite-difference"};
 void BM_HertzSolve(benchmark::State& state) {
   const int p = static_cast<int>(state.range(0));
   const auto spec = io::read_problem(
-      hertz(p), {std::string("solver.tangent=") + kTangent[state.range(1)],
+      hertz(p), {"contact[0].enforcement=penalty", std::string("solver.tangent=") + kTangent[state.range(1)],
                  std::string("discretization.condense=") + (state.range(2) ? "true" : "false")});
   const auto d = model::discretize(spec);
   int iterations = 0;
@@ -55,7 +55,8 @@ BENCHMARK(BM_HertzSolve)
 void BM_HertzTangent(benchmark::State& state) {
   const int p = static_cast<int>(state.range(0));
   const bool fd = state.range(1) != 0;
-  const auto spec = io::read_problem(hertz(p), {"discretization.condense=false"});
+  const auto spec =
+      io::read_problem(hertz(p), {"contact[0].enforcement=penalty", "discretization.condense=false"});
   const auto d = model::discretize(spec);
   const auto sol = model::solve_contact(spec, d);
   for (auto _ : state) benchmark::DoNotOptimize(model::contact_tangent(spec, d, sol, fd));

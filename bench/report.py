@@ -193,8 +193,9 @@ def ratios_table(ratios):
 
 def contact_section(runs):
     out = ["## Contact: analytic against the dissertation's finite-difference tangent", "",
-           "The Hertz examples p5 and p8 (examples/hertz), the whole contact solve (force control:",
-           "six load steps, about 45 Newton iterations), discretisation outside the timed region.",
+           "The Hertz examples p5 and p8 (examples/hertz) with the seed's penalty (`enforcement: penalty`),",
+           "the whole contact solve (force control: six load steps, about 45 Newton iterations),",
+           "discretisation outside the timed region.",
            "`analytic` is the consistent tangent solved by CHOLMOD; `FD` is the dissertation's tangent",
            "(D. Franke's, docs/references.md; eq. 3.36: central differences of the whole residual, one column per unknown, normals of",
            "the undisturbed state) solved by UMFPACK LU; `full` runs Newton on all free unknowns, as",
@@ -253,8 +254,9 @@ def adapt_section(runs):
            "Whole loops on the Hertz examples, from reading the input to the last solve, without",
            "post-processing or files: the rp relocation loop of examples/hertz/rp5.yaml and rp8.yaml",
            "(secant steps, to 1e-10 of the body size) and the 8-step hp loop of examples/hertz/hp.yaml",
-           "with the refinement factor 0.17 (the example's) and the dissertation's 0.5. Each solve is a force-",
-           "controlled Newton solve started from the previous mesh's load factor.", "",
+           "with the refinement factor 0.17 (the example's) and the dissertation's 0.5, with exact contact",
+           "(the default). Each solve is a force-controlled Newton solve started from the previous mesh's",
+           "solution carried onto the new mesh.", "",
            "| loop | final dofs | solves | Newton iterations | time | spread |",
            "|---|---:|---:|---:|---:|---:|"]
     rows = [(f"BM_RpLoop/p:{p}", f"rp, p = {p}") for p in (5, 8)]
@@ -271,7 +273,8 @@ def adapt_section(runs):
 def nonlinear_section(runs):
     out = ["## Finite strain, friction, arc-length (issue 5)", "",
            "Whole solves of the examples, from the discretised problem to the converged last step",
-           "(no files): load steps, Newton iterations, and the time per load step. The axle in the",
+           "(no files), with exact contact (the default): load steps, Newton iterations, and the time per",
+           "load step. The axle in the",
            "ring (Neo-Hooke, 20 nominal steps), the two bars (press, then push in 4 steps; stick and",
            "Coulomb), the snap-through of the shallow arch (tests/cli/data) under load control and",
            "with the arc-length method, the composite ring on the foundation (arc-length).", "",
@@ -290,7 +293,7 @@ def nonlinear_section(runs):
             out.append(f"| {label} | {int(b['dofs'])} | {steps} | {int(b['newton_iterations'])} | "
                        f"{fmt_time(b['real_time'])} | {fmt_time(b['real_time'] / steps)} | "
                        f"{spread(runs, name)} |")
-    out += ["", "One Newton step's linear solve on the two bars (p = [15, 5], tangent at the converged",
+    out += ["", "One Newton step's linear solve on the two bars (p = [15, 5], penalty tangent at the converged",
             "state): the unsymmetric Coulomb tangent by LU (UMFPACK) against the symmetric stick tangent",
             "by LU and by Cholesky (CHOLMOD), same mesh and unknowns.", "",
             "| tangent | solver | dofs | nonzeros | factorise + solve | spread |",
@@ -304,6 +307,52 @@ def nonlinear_section(runs):
     a, c = central(runs, "BM_TwoBarsLinearStep/coulomb/lu"), central(runs, "BM_TwoBarsLinearStep/stick/cholmod")
     if a and c:
         out += ["", f"Unsymmetric (LU) / symmetric (CHOLMOD): {fmt_ratio(a['real_time'], c['real_time'])}."]
+    return out
+
+
+ENFORCEMENT_CASES = ["examples/hertz/p8.yaml", "examples/hertz/rp8.yaml", "examples/hertz/hp.yaml",
+                     "examples/hertz/bilateral.yaml", "examples/curve-obstacle/crowned-rail.yaml",
+                     "examples/two-bars/stick.yaml", "examples/two-bars/coulomb.yaml",
+                     "examples/axle-ring/ring12-p4.yaml", "examples/ring-foundation/ring.yaml"]
+
+
+def enforcement_section(runs):
+    out = ["## Exact contact against the penalty (issue 15)", "",
+           "Each case solved twice in this run, from reading the input to the last solve (no files):",
+           "with exact contact (the default: multipliers at the Gauss–Lobatto nodes, semi-smooth Newton,",
+           "bordered force control, warm starts in the rp and hp loops) and with every pair turned to",
+           "`enforcement: penalty` (the seed's method; the bilateral example, which gives no penalty,",
+           "with its former 1.05e8). `solves` counts the meshes solved (rp relocations, hp steps).",
+           "The CPU column sums all threads.", "",
+           "| case | dofs | penalty: solves | Newton | time | CPU | exact: solves | Newton | time | CPU |"
+           " penalty / exact time | spread |",
+           "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    ratios = []
+    for case in ENFORCEMENT_CASES:
+        pen, ex = (central(runs, f"BM_Enforcement/{k}/{case}") for k in ("penalty", "exact"))
+        if not (pen and ex):
+            continue
+        worst = max((spread(runs, f"BM_Enforcement/{k}/{case}") for k in ("penalty", "exact")),
+                    key=lambda text: float(text.split()[0]) if text else 0.0)
+        out.append(f"| {case} | {int(ex['dofs'])} | {int(pen['solves'])} | {int(pen['newton_iterations'])} | "
+                   f"{fmt_time(pen['real_time'])} | {fmt_time(pen['cpu_time'])} | {int(ex['solves'])} | "
+                   f"{int(ex['newton_iterations'])} | {fmt_time(ex['real_time'])} | {fmt_time(ex['cpu_time'])} | "
+                   f"{fmt_ratio(pen['real_time'], ex['real_time'])} | {worst} |")
+        if ex.get("most_per_relocation"):
+            ratios.append(f"| {case}: most Newton iterations of one relocation after the first, exact "
+                          f"(penalty) | {int(ex['most_per_relocation'])} ({int(pen['most_per_relocation'])}) |")
+    p8, linear = central(runs, "BM_Enforcement/exact/examples/hertz/p8.yaml"), central(runs, "BM_HertzP8LinearSolve")
+    if p8 and linear:
+        ratios.insert(0, f"| Hertz p8, force controlled, exact: Newton iterations | {int(p8['newton_iterations'])} |")
+        ratios.insert(1, "| Hertz p8, force controlled, exact / one linear elastic solve of the same mesh "
+                         f"({fmt_time(linear['real_time'])}): time | {fmt_ratio(p8['real_time'], linear['real_time'])} |")
+        ratios.insert(2, f"| the same, CPU time | {fmt_ratio(p8['cpu_time'], linear['cpu_time'])} |")
+    hp = central(runs, "BM_Enforcement/exact/examples/hertz/hp.yaml")
+    if hp:
+        ratios.append(f"| hp loop of hp.yaml, exact: Newton iterations over all its solves | {int(hp['newton_iterations'])} |")
+    out += ratios_table(ratios)
+    out += ["", "The linear elastic solve is examples/hertz/p8.yaml without its contact pair (its prescribed",
+            "displacement only): discretise, assemble (condensed, as the contact solve), factorise, solve."]
     return out
 
 
@@ -338,7 +387,7 @@ def main(results_path, output_path):
             width=95),
         "",
     ]
-    lines += element_section(runs) + [""] + solve_section(runs) + [""] + contact_section(runs) + [""] + adapt_section(runs) + [""] + nonlinear_section(runs) + [""]
+    lines += element_section(runs) + [""] + solve_section(runs) + [""] + enforcement_section(runs) + [""] + contact_section(runs) + [""] + adapt_section(runs) + [""] + nonlinear_section(runs) + [""]
     with open(output_path, "w", encoding="utf-8") as f:
         f.write("\n".join(lines))
 
