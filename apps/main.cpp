@@ -153,8 +153,12 @@ int check_command(const std::string& file, const std::vector<std::string>& sets)
                 << " Gauss points)";
     else
       std::cout << "a rigid " << (spec.contact[k].obstacle.kind == model::ObstacleKind::plane ? "plane" : "circle");
-    std::cout << ", penalty " << pair.penalty
-              << (spec.contact[k].friction.law == "none" ? "" : ", friction " + spec.contact[k].friction.law)
+    if (pair.constraints)
+      std::cout << ", exact: " << pair.constraints->size() << " multiplier nodes, "
+                << (pair.constraints->rule == model::ConstraintRule::mortar ? "mortar" : "collocation");
+    else
+      std::cout << ", penalty " << pair.penalty;
+    std::cout << (spec.contact[k].friction.law == "none" ? "" : ", friction " + spec.contact[k].friction.law)
               << '\n';
   }
   driver::require_references(spec);

@@ -249,7 +249,10 @@ def test_check_builds_the_contact_pairs(hpcontact, root, tmp_path):
     case = os.path.join(root, "examples/hertz/p5.yaml")
     r = hpcontact("check", case)
     assert r.returncode == 0, r.stderr
-    assert "contact[0]: body 'cylinder', 2 edges, 100 Gauss points, against a rigid plane" in r.stdout
+    assert "contact[0]: body 'cylinder', 2 edges, 100 Gauss points, against a rigid plane, " \
+           "exact: 11 multiplier nodes, collocation" in r.stdout, r.stdout  # 2 edges of p = 5
+    r = hpcontact("check", case, "--set", "contact[0].enforcement=penalty")
+    assert "against a rigid plane, penalty 2.1e+08" in r.stdout, r.stdout
     with open(case) as f:
         text = f.read().replace("normal: [0, 1]", "normal: [0, -1]")
     bad = tmp_path / "wrong-normal.yaml"
