@@ -177,3 +177,21 @@ def test_long_formula_is_not_echoed_whole(hpcontact, root, tmp_path):
     assert len(r.stderr) < 1000, len(r.stderr)
     assert "bodies[0].constraints[0].ux: cannot evaluate 'x+x+" in r.stderr
     assert "(1000002 characters)" in r.stderr, r.stderr
+
+
+def test_exact_contact_that_does_not_converge_says_where_the_constraint_stands(hpcontact, root,
+                                                                               tmp_path):
+    """Exact contact out of Newton iterations: the message names the pair, its active multiplier
+    nodes, how many changed at the last tangent and the largest penetration; the bordered force
+    control's own failure comes first; nothing claims success, last-good/ says converged: false."""
+    import json
+    out = tmp_path / "out"
+    r = hpcontact("run", os.path.join(root, "examples/hertz/p8.yaml"), "--out", out, "-q",
+                  "--set", "solver.max_iterations=3", "--set", "solver.max_cuts=0")
+    assert r.returncode == 1, r.stderr
+    assert "force control as one Newton system did not converge (no convergence in 3 " \
+           "iterations" in r.stderr, r.stderr
+    assert "contact[0]: 4 of 17 multiplier nodes active, 1 changed at the last tangent, largest " \
+           "penetration 0.01779 at (0.7816, -0.01779)" in r.stderr, r.stderr
+    assert not (out / "summary.json").exists()
+    assert json.load(open(out / "last-good" / "summary.json"))["converged"] is False

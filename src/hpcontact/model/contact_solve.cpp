@@ -223,7 +223,9 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   const double first = ss.target_resultant && start.factor > 0 ? start.factor : 1.0;
   double lambda = 0;
   // A failed run keeps the last converged state, marked not converged.
+  std::string first_attempt;  // why force control as one system gave way, if it did
   auto failed = [&]() {
+    if (!first_attempt.empty()) sol.message = first_attempt + "; then " + sol.message;
     system.set_force_target(std::nullopt);
     x.conservativeResize(system.size());
     system.set_factors(converged.displacements, converged.loads);
@@ -314,6 +316,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
            << " -> " << rep.residual_history.back();
         say(os.str());
       } else {
+        first_attempt = "force control as one Newton system did not converge (" + rep.message + ")";
         say("force control as one Newton system did not converge (" + failure_reason(rep) +
             "): load steps and the secant on the factor instead");
         x = x0;

@@ -3,7 +3,9 @@
 #include "hpcontact/model/contact_system.hpp"
 
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 
 #include "hpcontact/core/error.hpp"
 
@@ -153,6 +155,30 @@ double ContactSystem::admissible_step(const Eigen::VectorXd& x, const Eigen::Vec
   return std::abs(da) > limit ? limit / std::abs(da) : 1.0;
 }
 
+std::string ContactSystem::describe() const {
+  std::ostringstream os;
+  os << std::setprecision(4);
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    if (z_offset_[k] < 0 || k >= deepest_.size()) continue;
+    const int o = z_offset_[k], m = pairs_[k].constraints->size();
+    int active = 0, changed = 0;
+    for (int j = 0; j < m; ++j) {
+      active += states_[o + j] != 0;
+      if (tangent_states_.size() == states_.size() && previous_tangent_states_.size() == states_.size())
+        changed += tangent_states_[o + j] != previous_tangent_states_[o + j];
+    }
+    if (os.tellp() > 0) os << "; ";
+    os << "contact[" << k << "]: " << active << " of " << m << " multiplier nodes active, " << changed
+       << " changed at the last tangent";
+    if (deepest_[k].gap < 0)
+      os << ", largest penetration " << -deepest_[k].gap << " at (" << deepest_[k].x.x() << ", "
+         << deepest_[k].x.y() << ")";
+    else
+      os << ", no penetration";
+  }
+  return os.str();
+}
+
 void ContactSystem::factorize(solve::LinearSolver& sparse, const solve::SparseMatrix& K) {
   if (n_z_ == 0) return sparse.factorize(K);
   saddle_.factorize(sparse, K, n_u_, gamma_);
@@ -211,6 +237,10 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
       if (pair.moving) fi.obstacle_increment = (alpha - factor_committed_) * pair.moving->direction();
     }
     const ConstraintState s = evaluate_constraints(d_, pair, u, lambda, &R, t, T != nullptr, fi);
+    deepest_.resize(pairs_.size());
+    deepest_[k] = {};
+    for (const auto& q : s.points)
+      if (q.gap < deepest_[k].gap) deepest_[k] = {q.gap, q.x};
     if (states) (*states)[k] = s.points;
     int active_nodes = 0;
     for (int j = 0; j < c.size(); ++j) {

@@ -99,6 +99,9 @@ public:
   /// The multiplier nodes' states (inactive, active; open, stick, slip) at the last two
   /// tangents were the same.
   bool settled() const override { return tangent_states_ == previous_tangent_states_; }
+  /// Per exact pair at the last evaluation: its active nodes, how many changed since the
+  /// tangent before, and the largest penetration with where it is.
+  std::string describe() const override;
   Eigen::VectorXd solve(const solve::LinearSolver& sparse, const Eigen::VectorXd& b) const override;
 
 private:
@@ -144,6 +147,12 @@ private:
   /// The state of each multiplier row at the last evaluation, and at the last two with a
   /// tangent (settled()).
   mutable std::vector<char> states_;
+  /// Per pair at the last evaluation (exact pairs): the deepest point and its gap.
+  struct Deepest {
+    double gap = 0;
+    Vec2 x = Vec2::Zero();
+  };
+  mutable std::vector<Deepest> deepest_;
   std::vector<char> tangent_states_, previous_tangent_states_;
   Eigen::VectorXd K_prescribed_;   ///< K times the prescribed displacements (for ∂/∂α)
   Eigen::VectorXd u_committed_;    ///< all dofs at the last converged step (exact friction)

@@ -48,6 +48,7 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
       std::ostringstream os;
       os << "no convergence in " << it << " iterations: |R| = " << rn << " (tolerance "
          << options.tolerance * scale << ")";
+      if (const std::string state = system.describe(); !state.empty()) os << "; " << state;
       report.status = SolveStatus::max_iterations;
       report.message = os.str();
       report.iterations = it;

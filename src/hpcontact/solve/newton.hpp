@@ -31,6 +31,9 @@ public:
   /// tangents: a semi-smooth system has converged only when the step that led to the current
   /// state was solved with the state's own active set.
   virtual bool settled() const { return true; }
+  /// What a failure message should add about the last state evaluated (e.g. the contact
+  /// constraints still violated); empty if nothing.
+  virtual std::string describe() const { return {}; }
   /// The fraction τ ∈ (0, 1] of the correction dx at x that the system admits (a trust region on
   /// some unknowns); Newton takes τ dx.
   virtual double admissible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const {
