@@ -43,11 +43,7 @@ struct Cost {
 Cost run_case(const model::ProblemSpec& spec) {
   Cost c;
   if (spec.adapt.method == model::AdaptMethod::rp) {
-    adapt::RpOptions o;
-    o.tolerance = spec.adapt.tolerance;
-    o.max_iterations = spec.adapt.max_iterations;
-    o.secant = spec.adapt.secant;
-    const auto out = adapt::relocate_nodes(spec, o);
+    const auto out = adapt::relocate_nodes(spec, adapt::rp_options(spec.adapt));
     if (!out.converged) throw std::runtime_error(out.message);
     for (const auto& it : out.history) {
       c.newton += it.solve.newton_iterations;
@@ -56,12 +52,7 @@ Cost run_case(const model::ProblemSpec& spec) {
     c.solves = static_cast<int>(out.history.size());
     c.dofs = out.history.back().solve.dofs;
   } else if (spec.adapt.method == model::AdaptMethod::hp) {
-    adapt::HpOptions o;
-    o.factor = spec.adapt.factor;
-    o.steps = spec.adapt.steps;
-    o.rising_degree = spec.adapt.rising_degree;
-    o.min_degree = spec.adapt.min_degree;
-    const auto out = adapt::refine_towards_zone_ends(spec, o);
+    const auto out = adapt::refine_towards_zone_ends(spec, adapt::hp_options(spec.adapt));
     if (!out.converged) throw std::runtime_error(out.message);
     for (const auto& it : out.history) c.newton += it.solve.newton_iterations, c.solves += 1 + it.recentred;
     c.dofs = out.history.back().solve.dofs;

@@ -109,11 +109,7 @@ TEST(HpMesh, LayersCountRingsAroundTheCentre) {
 TEST(HpMesh, AdaptiveDegreesRiseByOnePerLayer) {
   const auto spec = io::read_problem(std::string(HPC_SOURCE_DIR) + "/examples/hertz/hp.yaml",
                                      {"adapt.steps=2"});
-  adapt::HpOptions o;
-  o.factor = spec.adapt.factor;
-  o.steps = spec.adapt.steps;
-  o.rising_degree = spec.adapt.rising_degree;
-  o.min_degree = spec.adapt.min_degree;
+  const adapt::HpOptions o = adapt::hp_options(spec.adapt);
   const auto out = adapt::refine_towards_zone_ends(spec, o);
   ASSERT_TRUE(out.converged) << out.message;
   ASSERT_EQ(out.history.size(), 3u);

@@ -58,6 +58,15 @@ model::ProblemSpec build_mesh(const model::ProblemSpec& input, const std::vector
 
 }  // namespace
 
+HpOptions hp_options(const model::AdaptSpec& adapt) {
+  HpOptions o;
+  o.factor = adapt.factor;
+  o.steps = adapt.steps;
+  o.rising_degree = adapt.rising_degree;
+  o.min_degree = adapt.min_degree;
+  return o;
+}
+
 HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptions& options,
                                    const model::ProgressFn& progress, const HpObserver& observe) {
   using Clock = std::chrono::steady_clock;

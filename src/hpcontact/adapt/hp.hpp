@@ -18,6 +18,9 @@ struct HpOptions {
   int max_recentre = 3;     ///< re-refinements of one step when Γ* leaves the smallest elements
 };
 
+/// The options an input's `adapt` section asks for.
+HpOptions hp_options(const model::AdaptSpec& adapt);
+
 struct HpIteration {
   int step = 0;  ///< 0: the input mesh
   SolveFigures solve;

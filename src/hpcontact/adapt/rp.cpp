@@ -11,6 +11,14 @@
 
 namespace hpcontact::adapt {
 
+RpOptions rp_options(const model::AdaptSpec& adapt) {
+  RpOptions o;
+  o.tolerance = adapt.tolerance;
+  o.max_iterations = adapt.max_iterations;
+  o.secant = adapt.secant;
+  return o;
+}
+
 RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& options,
                          const model::ProgressFn& progress, const IterationObserver& observe) {
   using Clock = std::chrono::steady_clock;

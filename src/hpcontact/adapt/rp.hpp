@@ -37,6 +37,9 @@ struct RpOptions {
   bool secant = true;        ///< secant steps on Γ*(node) − node; false: move onto the last Γ*
 };
 
+/// The options an input's `adapt` section asks for.
+RpOptions rp_options(const model::AdaptSpec& adapt);
+
 /// Called after every solve with its record and result (for post-processing per iteration).
 using IterationObserver = std::function<void(const RpIteration&, const Solved&)>;
 

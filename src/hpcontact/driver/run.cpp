@@ -390,12 +390,8 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     std::string message;
     nlohmann::json aj = {{"method", method}};
     if (rp) {
-      adapt::RpOptions ro;
-      ro.tolerance = spec.adapt.tolerance;
-      ro.max_iterations = spec.adapt.max_iterations;
-      ro.secant = spec.adapt.secant;
       const auto outcome = adapt::relocate_nodes(
-          spec, ro, options.progress, [&](const adapt::RpIteration& it, const adapt::Solved& solved) {
+          spec, adapt::rp_options(spec.adapt), options.progress, [&](const adapt::RpIteration& it, const adapt::Solved& solved) {
             nlohmann::json j = rp_iteration_json(it);
             add_pressure(j, it.iteration, solved);
             history.push_back(j);
@@ -406,13 +402,8 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       aj["tolerance"] = spec.adapt.tolerance;
       aj["update"] = spec.adapt.secant ? "secant" : "relocate";
     } else {
-      adapt::HpOptions ho;
-      ho.factor = spec.adapt.factor;
-      ho.steps = spec.adapt.steps;
-      ho.rising_degree = spec.adapt.rising_degree;
-      ho.min_degree = spec.adapt.min_degree;
       const auto outcome = adapt::refine_towards_zone_ends(
-          spec, ho, options.progress, [&](const adapt::HpIteration& it, const adapt::Solved& solved) {
+          spec, adapt::hp_options(spec.adapt), options.progress, [&](const adapt::HpIteration& it, const adapt::Solved& solved) {
             nlohmann::json j = hp_iteration_json(it);
             add_pressure(j, it.step, solved);
             history.push_back(j);
