@@ -152,7 +152,7 @@ int check_command(const std::string& file, const std::vector<std::string>& sets)
       std::cout << "body '" << printable(d.bodies[pair.other].name) << "' (" << pair.other_points.size()
                 << " Gauss points)";
     else
-      std::cout << "a rigid " << (spec.contact[k].obstacle.kind == model::ObstacleKind::plane ? "plane" : "circle");
+      std::cout << printable(pair.obstacle->describe());
     if (pair.constraints)
       std::cout << ", exact: " << pair.constraints->size() << " multiplier nodes, "
                 << (pair.constraints->rule == model::ConstraintRule::mortar ? "mortar" : "collocation");
@@ -162,6 +162,19 @@ int check_command(const std::string& file, const std::vector<std::string>& sets)
               << '\n';
   }
   driver::require_references(spec);
+  // The compare sections' preconditions, as a run checks them before solving.
+  const auto comparisons = driver::make_comparisons(spec, d, pairs);
+  for (std::size_t k = 0; k < comparisons.size(); ++k)
+    if (comparisons[k]) {
+      const auto& in = comparisons[k]->inputs();
+      std::cout << "  contact[" << k << "].compare: E* " << in.effective_modulus << ", R* "
+                << in.effective_radius << " (R1 " << in.radius << ", R2 " << in.other_radius
+                << "), F ";
+      if (in.force) std::cout << *in.force;
+      else std::cout << "from the resultant";
+      std::cout
+                << (in.models_of_whole == 2 ? " (a symmetric half carries F/2)" : "") << '\n';
+    }
   return 0;
 }
 

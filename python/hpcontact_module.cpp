@@ -204,6 +204,10 @@ py::dict contact_table(const Result& res) {
   out["tangential_traction"] = to_numpy(t.tangential_traction);
   out["slip"] = to_numpy(t.slip);
   out["state"] = py::module_::import("numpy").attr("array")(py::cast(t.state), "U7");
+  out["body"] = py::module_::import("numpy").attr("array")(py::cast(t.body));
+  out["s"] = to_numpy(t.s);
+  out["traction"] = to_numpy(t.traction);
+  out["minus_sigma_nn"] = to_numpy(t.minus_sigma_nn);
   return out;
 }
 
@@ -212,8 +216,10 @@ py::object pressure_curve(const Result& res) {
   if (!c) return py::none();
   py::dict out;
   out["x"] = to_numpy(c->x);
-  out["pressure_from_stress"] = to_numpy(c->from_stress);
-  out[c->multiplier ? "pressure_multiplier" : "pressure_penalty"] = to_numpy(c->penalty);
+  out["pressure_from_stress"] = to_numpy(c->pressure_from_stress);
+  out[c->multiplier ? "pressure_multiplier" : "pressure_penalty"] = to_numpy(c->traction);
+  out["pressure"] = to_numpy(c->pressure);
+  out["minus_sigma_nn"] = to_numpy(c->minus_sigma_nn);
   out["hertz"] = to_numpy(c->hertz);
   out["shtayerman"] = to_numpy(c->shtayerman);
   if (!c->reference.empty()) out["reference"] = to_numpy(c->reference);

@@ -1,8 +1,10 @@
 """End-to-end runs of the hpcontact program: results written, bad input refused clearly."""
+import csv
 import json
 import os
 import xml.etree.ElementTree as ET
 
+import numpy as np
 import pytest
 
 LAME = "examples/lame/thick-cylinder.yaml"
@@ -145,8 +147,8 @@ def test_hertz_run_writes_contact_curve(hpcontact, root, tmp_path):
     assert abs(s["contact"]["resultant"][1] - 35000) < 35
     lines = (tmp_path / "contact.csv").read_text().splitlines()
     assert lines[0] == ("pair,X,Y,x,y,gap,pressure,pressure_from_stress,tangential_gap,"
-                        "tangential_traction,slip,state")
-    assert {line.rsplit(",", 1)[1] for line in lines[1:]} <= {"open", "contact"}  # frictionless
+                        "tangential_traction,slip,state,body,s,traction,minus_sigma_nn")
+    assert {line.split(",")[11] for line in lines[1:]} <= {"open", "contact"}  # frictionless
     # a row per multiplier node: 8 + 1 Gauss-Lobatto points on each of the 2 contact edges,
     # their shared vertex once (exact enforcement against a rigid plane: collocation)
     assert len(lines) == 1 + 2 * 8 + 1
@@ -156,7 +158,8 @@ def test_hertz_run_writes_contact_curve(hpcontact, root, tmp_path):
         assert key in s["contact"], key
     assert abs(s["contact"]["hertz_half_width"] - 1.96524) < 1e-5
     curve = (tmp_path / "pressure.csv").read_text().splitlines()
-    assert curve[0] == "x,pressure_from_stress,pressure_multiplier,hertz,shtayerman"
+    assert curve[0] == ("x,pressure_from_stress,pressure_multiplier,hertz,shtayerman,pressure,"
+                        "minus_sigma_nn")
     # 1001 uniform samples, plus each end of the contact zone (the kink a reference must keep)
     ends = [g for g in s["contact"]["gamma_star"] if 0 < g[0] < 1.5 * 1.96524]
     assert len(curve) == 1002 + len(ends)
@@ -249,10 +252,11 @@ def test_check_builds_the_contact_pairs(hpcontact, root, tmp_path):
     case = os.path.join(root, "examples/hertz/p5.yaml")
     r = hpcontact("check", case)
     assert r.returncode == 0, r.stderr
-    assert "contact[0]: body 'cylinder', 2 edges, 100 Gauss points, against a rigid plane, " \
-           "exact: 11 multiplier nodes, collocation" in r.stdout, r.stdout  # 2 edges of p = 5
+    assert ("contact[0]: body 'cylinder', 2 edges, 100 Gauss points, against plane(point=(0,0), "
+            "normal=(0,1)), exact: 11 multiplier nodes, collocation") in r.stdout, r.stdout
+    assert "contact[0].compare: E* 230769, R* 10 (R1 10, R2 inf), F 70000" in r.stdout
     r = hpcontact("check", case, "--set", "contact[0].enforcement=penalty")
-    assert "against a rigid plane, penalty 2.1e+08" in r.stdout, r.stdout
+    assert "normal=(0,1)), penalty 2.1e+08" in r.stdout, r.stdout
     with open(case) as f:
         text = f.read().replace("normal: [0, 1]", "normal: [0, -1]")
     bad = tmp_path / "wrong-normal.yaml"
@@ -273,3 +277,40 @@ def test_help_on_every_sub_command_and_version(hpcontact):
         assert all(o in r.stdout for o in options), (sub, r.stdout)
     r = hpcontact("--version")
     assert r.returncode == 0 and r.stdout.startswith("hpcontact ")
+
+
+def test_pressure_is_force_per_unit_length_along_the_obstacle(hpcontact, root, tmp_path):
+    """contact.csv's pressure is the contact force per unit length along the obstacle: on the
+    Hertz cylinder (p = 8, exact contact, force control to F/2 = 35000) it is the multiplier
+    times dS/dx = 1/cos θ, and its integral over x, ∫ λ_h (dS/dx) dx = ∫ λ_h R dθ with λ_h the
+    degree-8 polynomial through each edge's nodes (Gauss–Legendre in θ, exact), is the applied
+    force within 1e-6; summary.json says what its pressure figures are measured as."""
+    r = hpcontact("run", os.path.join(root, "examples/hertz/p8.yaml"), "--out", tmp_path, "-q")
+    assert r.returncode == 0, r.stderr
+    with open(tmp_path / "contact.csv") as f:
+        rows = list(csv.DictReader(f))
+    # the nodes of each edge: 9 Gauss–Lobatto nodes, x ascending, the shared vertex once
+    x = np.array([float(row["s"]) for row in rows])
+    p = np.array([float(row["pressure"]) for row in rows])
+    lam = np.array([float(row["traction"]) for row in rows])
+    order = np.argsort(x)
+    x, p, lam = x[order], p[order], lam[order]
+    # p = λ dS/dx with dS/dx = 1/cos θ = R / sqrt(R² − x²) on the undeformed circle R = 10
+    R = 10.0
+    assert np.allclose(p, lam * R / np.sqrt(R**2 - x**2), rtol=1e-9)
+    assert np.all(p >= lam - 1e-9)
+    # ∫ p dx = ∫ λ dS: on each edge λ is the degree-8 polynomial through its nodes in the
+    # edge parameter, θ linear in it (an exact arc), so integrate in θ exactly.
+    theta = np.arcsin(x / R)
+    force = 0.0
+    for edge in (slice(0, 9), slice(8, 17)):
+        t_nodes = theta[edge]
+        coef = np.polyfit(t_nodes, lam[edge], 8)
+        g, w = np.polynomial.legendre.leggauss(12)
+        a, b = t_nodes[0], t_nodes[-1]
+        tq = 0.5 * (a + b) + 0.5 * (b - a) * g
+        force += 0.5 * (b - a) * np.sum(w * np.polyval(coef, tq)) * R
+    assert abs(force / 35000 - 1) < 1e-6, force
+    s = json.loads((tmp_path / "summary.json").read_text())
+    assert s["contact"]["pressure_measured_as"] == "force per unit length along the obstacle"
+    assert s["contact"]["pressure_max"] == pytest.approx(float(p.max()), rel=1e-9)

@@ -17,6 +17,18 @@ constexpr double pi = std::numbers::pi;
 const basis::QuadratureRule1D& rule() { return basis::gauss_legendre(200); }
 }  // namespace
 
+double contact_modulus(double E, double nu, bool plane_strain) {
+  return plane_strain ? E / (1 - nu * nu) : E;
+}
+
+double pair_modulus(double m1, double m2) { return 1 / (1 / m1 + 1 / m2); }
+
+double pair_radius(double r1, double r2) {
+  const double curvature = 1 / r1 + 1 / r2;
+  HPC_ASSERT(curvature > 0, "pair_radius: 1/R1 + 1/R2 = ", curvature, " must be > 0");
+  return 1 / curvature;
+}
+
 double Hertz::half_width() const {
   return std::sqrt(4 * force * radius * (1 - poisson_ratio * poisson_ratio) /
                    (pi * youngs_modulus));
@@ -60,6 +72,21 @@ Shtayerman Shtayerman::circle(double R, double force, double E, double nu) {
   return Shtayerman([R](double t) { return t / std::sqrt(R * R - t * t); },
                     [R](double t) { return R * R / std::pow(R * R - t * t, 1.5); }, force, E, nu,
                     0.1 * R);
+}
+
+Shtayerman Shtayerman::two_circles(double R1, double R2, double force, double E_star) {
+  // f'(t) = t / sqrt(R² − t²) of each convex circle, with the sign of R for a concave one; a
+  // plane (R = ∞) adds nothing.
+  auto df = [](double R, double t) {
+    return std::isinf(R) ? 0.0 : std::copysign(1.0, R) * t / std::sqrt(R * R - t * t);
+  };
+  auto d2f = [](double R, double t) {
+    return std::isinf(R) ? 0.0 : std::copysign(1.0, R) * R * R / std::pow(R * R - t * t, 1.5);
+  };
+  const double r = std::min(R1, std::abs(R2));
+  return Shtayerman([=](double t) { return df(R1, t) + df(R2, t); },
+                    [=](double t) { return d2f(R1, t) + d2f(R2, t); }, force, E_star, 0.0,
+                    0.1 * r);
 }
 
 Shtayerman Shtayerman::parabola(double R, double force, double E, double nu) {

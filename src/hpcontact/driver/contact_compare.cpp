@@ -2,6 +2,7 @@
 #include "hpcontact/driver/contact_compare.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -90,39 +91,62 @@ void require_references(const model::ProblemSpec& spec) {
 }
 
 PressureComparison::PressureComparison(const model::ProblemSpec& spec,
-                                       const model::PressureCompareSpec& cmp,
-                                       const material::LinearElastic& mat)
-    : hertz_{cmp.radius, cmp.force, mat.youngs_modulus, mat.poisson_ratio},
-      shtayerman_(analytic::Shtayerman::circle(cmp.radius, cmp.force, mat.youngs_modulus,
-                                               mat.poisson_ratio)),
-      reference_name_(cmp.reference) {
-  HPC_REQUIRE(mat.plane == material::Plane::strain, InputError, cmp.where.str(),
-              ": Hertz and Shtayerman are implemented for plane strain");
+                                       const model::PressureCompareSpec& cmp, HertzInputs inputs)
+    : in_(std::move(inputs)), reference_name_(cmp.reference) {
   if (!cmp.reference.empty()) reference_ = read_reference(reference_path(spec, cmp), cmp.where.str());
+  if (in_.force) check_reference_force(*in_.force);
+}
+
+void PressureComparison::check_reference_force(double force) const {
+  if (!reference_) return;
+  // ∫ p dx over x >= 0 by the trapezoidal rule: the half of F it carries.
+  const auto& x = reference_->x;
+  const auto& p = reference_->p;
+  double carried = 0;
+  for (size_t i = 0; i + 1 < x.size(); ++i)
+    if (x[i + 1] > 0) {
+      const double a = std::max(x[i], 0.0);
+      carried += (x[i + 1] - a) * 0.5 * ((*reference_)(a) + p[i + 1]);
+    }
+  HPC_REQUIRE(std::abs(2 * carried - force) <= 1e-2 * force, InputError, in_.where, ".reference: '",
+              reference_name_, "' carries F = ", 2 * carried, " (twice its integral over x >= 0) but "
+              "the closed forms are computed for F = ", force,
+              ": a reference of another load (or of the pressure on the body's own normal, "
+              "pressure.csv of hpcontact before force per unit length along the obstacle)");
+}
+
+PressureComparison::ClosedForms PressureComparison::closed_forms(
+    const model::ContactPair& pair, const model::ContactResult& result) const {
+  const double F = comparison_force(in_, pair, result);
+  if (!in_.force) check_reference_force(F);
+  return {F, analytic::Hertz::pair(in_.effective_radius, F, in_.effective_modulus),
+          analytic::Shtayerman::two_circles(in_.radius, in_.other_radius, F, in_.effective_modulus)};
 }
 
 nlohmann::json PressureComparison::measure(const model::Discretization& d,
                                            const model::ContactPair& pair,
-                                           const Eigen::VectorXd& u,
-                                           const std::vector<double>& zone_ends,
-                                           const std::string& csv_path,
+                                           const model::ContactResult& result,
+                                           const Eigen::VectorXd& u, const std::string& csv_path,
                                            const Eigen::VectorXd* multipliers) const {
+  const ClosedForms cf = closed_forms(pair, result);
+  const auto& hertz = cf.hertz;
+  const auto& shtayerman = cf.shtayerman;
   // Hertz and the reference are integrated on the same points: locate each point only once.
   const model::BoundaryPressureProbe probe(d, pair, u, multipliers);
-  std::unordered_map<double, std::pair<double, double>> located;  // x -> (from stress, penalty)
+  std::unordered_map<double, std::pair<double, double>> located;  // x -> (from stress, method)
   auto at = [&](double x) {
     if (auto it = located.find(x); it != located.end()) return it->second;
-    const auto bp = probe(x);
-    return located[x] = bp ? std::pair(bp->from_stress, bp->penalty) : std::pair(0.0, 0.0);
+    const auto bp = probe(in_.side * x);
+    return located[x] = bp ? std::pair(bp->pressure_from_stress, bp->pressure) : std::pair(0.0, 0.0);
   };
-  const double b = hertz_.half_width(), p0 = hertz_.peak_pressure();
-  const std::function<double(double)> hertz_p = [&](double x) { return hertz_.pressure(x); };
-  const std::function<double(double)> shtayerman_p = [&](double x) { return shtayerman_.pressure(x); };
-  // The errors of one FE pressure (from the stresses or the penalty traction), keys of summary.json (docs/tutorial.md §8).
+  const double b = hertz.half_width(), p0 = hertz.peak_pressure();
+  const std::function<double(double)> hertz_p = [&](double x) { return hertz.pressure(x); };
+  const std::function<double(double)> shtayerman_p = [&](double x) { return shtayerman.pressure(x); };
+  // The errors of one FE pressure (from the stresses or the method's), keys of summary.json.
   auto errors = [&](const std::function<double(double)>& fe) {
     nlohmann::json e;
     const auto eh = post::pressure_errors(fe, hertz_p, b, p0);
-    const auto es = post::pressure_errors(fe, shtayerman_p, shtayerman_.half_width(), p0);
+    const auto es = post::pressure_errors(fe, shtayerman_p, shtayerman.half_width(), p0);
     e["e_L2_hertz_percent"] = eh.e_L2;
     e["e_seed_hertz_percent"] = eh.e_seed;
     e["e_L2_shtayerman_percent"] = es.e_L2;
@@ -137,36 +161,64 @@ nlohmann::json PressureComparison::measure(const model::Discretization& d,
   nlohmann::json j = errors([&](double x) { return at(x).first; });
   j["hertz_half_width"] = b;
   j["hertz_peak_pressure"] = p0;
-  j["shtayerman_half_width"] = shtayerman_.half_width();
+  j["shtayerman_half_width"] = shtayerman.half_width();
   j["pressure_measured_from"] = "stress";
+  j["pressure_measured_as"] = "force per unit length along the obstacle";
+  // What the closed forms are computed for (docs/input.md, contact[].compare).
+  j["compared_for"] = {{"force", cf.force},
+                       {"force_from", in_.force_given ? "compare.force"
+                                      : in_.force     ? "solver.target_resultant"
+                                                      : "resultant"},
+                       {"force_carried", carried_force(in_, pair, result)},
+                       {"model_fraction", 1 / in_.models_of_whole},
+                       {"radius", in_.radius},
+                       {"other_radius", std::isinf(in_.other_radius) ? nlohmann::json("infinite")
+                                                                     : nlohmann::json(in_.other_radius)},
+                       {"effective_radius", in_.effective_radius},
+                       {"modulus", in_.modulus},
+                       {"other_modulus", std::isinf(in_.other_modulus) ? nlohmann::json("rigid")
+                                                                       : nlohmann::json(in_.other_modulus)},
+                       {"effective_modulus", in_.effective_modulus}};
   // The same measures of the contact pressure the method itself carries: the penalty traction
   // eps_N <-g_N> (oscillating while Γ* lies inside an element, clean once a node sits on it), or
-  // the multiplier of exact enforcement.
+  // the multiplier of exact enforcement, as force per unit length along the obstacle.
   j[pair.constraints ? "multiplier" : "penalty_traction"] = errors([&](double x) { return at(x).second; });
+  const double carried = carried_force(in_, pair, result);
+  const double mismatch = 100 * (carried - cf.force) / cf.force;
+  j["compared_for"]["force_mismatch_percent"] = mismatch;
+  if (std::abs(mismatch) > 1)
+    j["compared_for"]["warning"] =
+        "the closed forms are computed for compare.force = " + std::to_string(cf.force) +
+        " but the pair carries F = " + std::to_string(carried) +
+        ": leave compare.force out to compare at the force applied";
   if (reference_) j["reference"] = reference_name_;
   if (!csv_path.empty())
-    post::write_text_file(csv_path, pressure_csv(curve(d, pair, u, zone_ends, multipliers)));
+    post::write_text_file(csv_path, pressure_csv(curve(d, pair, result, u, multipliers)));
   return j;
 }
 
 PressureCurve PressureComparison::curve(const model::Discretization& d,
-                                        const model::ContactPair& pair, const Eigen::VectorXd& u,
-                                        const std::vector<double>& zone_ends,
+                                        const model::ContactPair& pair,
+                                        const model::ContactResult& result,
+                                        const Eigen::VectorXd& u,
                                         const Eigen::VectorXd* multipliers) const {
+  const ClosedForms cf = closed_forms(pair, result);
   const model::BoundaryPressureProbe probe(d, pair, u, multipliers);
-  const double b = hertz_.half_width();
+  const double b = cf.hertz.half_width();
   PressureCurve c;
   c.multiplier = pair.constraints != nullptr;
   for (int i = 0; i <= 1000; ++i) c.x.push_back(1.5 * b * i / 1000);
-  for (double z : zone_ends)
-    if (z > 0 && z < 1.5 * b) c.x.push_back(z);
+  for (const Vec2& g : result.gamma_star)
+    if (const double z = in_.side * pair.coordinate(g); z > 0 && z < 1.5 * b) c.x.push_back(z);
   std::sort(c.x.begin(), c.x.end());
   for (const double x : c.x) {
-    const auto bp = probe(x);
-    c.from_stress.push_back(bp ? bp->from_stress : 0.0);
-    c.penalty.push_back(bp ? bp->penalty : 0.0);
-    c.hertz.push_back(hertz_.pressure(x));
-    c.shtayerman.push_back(shtayerman_.pressure(x));
+    const auto bp = probe(in_.side * x);
+    c.pressure.push_back(bp ? bp->pressure : 0.0);
+    c.pressure_from_stress.push_back(bp ? bp->pressure_from_stress : 0.0);
+    c.traction.push_back(bp ? bp->traction : 0.0);
+    c.minus_sigma_nn.push_back(bp ? bp->minus_sigma_nn : 0.0);
+    c.hertz.push_back(cf.hertz.pressure(x));
+    c.shtayerman.push_back(cf.shtayerman.pressure(x));
     if (reference_) c.reference.push_back((*reference_)(x));
   }
   return c;
@@ -176,11 +228,21 @@ std::string pressure_csv(const PressureCurve& c) {
   std::ostringstream csv;
   csv.precision(12);
   csv << "x,pressure_from_stress," << (c.multiplier ? "pressure_multiplier" : "pressure_penalty")
-      << ",hertz,shtayerman\n";
+      << ",hertz,shtayerman,pressure,minus_sigma_nn\n";
   for (size_t i = 0; i < c.x.size(); ++i)
-    csv << c.x[i] << ',' << c.from_stress[i] << ',' << c.penalty[i] << ',' << c.hertz[i] << ','
-        << c.shtayerman[i] << '\n';
+    csv << c.x[i] << ',' << c.pressure_from_stress[i] << ',' << c.traction[i] << ',' << c.hertz[i]
+        << ',' << c.shtayerman[i] << ',' << c.pressure[i] << ',' << c.minus_sigma_nn[i] << '\n';
   return csv.str();
+}
+
+std::vector<std::optional<PressureComparison>> make_comparisons(
+    const model::ProblemSpec& spec, const model::Discretization& d,
+    const std::vector<model::ContactPair>& pairs) {
+  std::vector<std::optional<PressureComparison>> out(pairs.size());
+  for (size_t k = 0; k < pairs.size() && k < spec.contact.size(); ++k)
+    if (const auto& cmp = spec.contact[k].compare)
+      out[k].emplace(spec, *cmp, hertz_inputs(spec, d, pairs, k));
+  return out;
 }
 
 }  // namespace hpcontact::driver

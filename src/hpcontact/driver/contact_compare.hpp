@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hpcontact/analytic/hertz.hpp"
+#include "hpcontact/driver/hertz_inputs.hpp"
 #include "hpcontact/material/linear_elastic.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 
@@ -21,20 +22,26 @@ struct ReferenceCurve {
   double operator()(double s) const;
 };
 
-/// The curves of pressure.csv: a pair's pressure and the closed forms along the obstacle.
+/// The curves of pressure.csv: a pair's pressures and the closed forms along the obstacle.
 struct PressureCurve {
-  std::vector<double> x;            ///< coordinate along the obstacle, ascending
-  std::vector<double> from_stress;  ///< -n·σ·n (0 where no contact edge reaches x)
-  std::vector<double> penalty;      ///< the pressure the method carries: eps_N <-g_N>, or the multiplier
+  std::vector<double> x;  ///< coordinate along the obstacle from obstacle.point, ascending
+  /// The contact pressure: normal force per unit length along the obstacle, of the method
+  /// (0 where no contact edge reaches x), and the same from the stresses.
+  std::vector<double> pressure, pressure_from_stress;
+  /// The traction the method carries per unit undeformed boundary length: eps_N <-g_N>, or
+  /// the multiplier (column pressure_penalty or pressure_multiplier).
+  std::vector<double> traction;
+  std::vector<double> minus_sigma_nn;  ///< −n·σ·n on the body's undeformed normal
   std::vector<double> hertz, shtayerman;
   std::vector<double> reference;    ///< the reference curve; empty when the input names none
-  /// Whether `penalty` holds the multiplier of exact enforcement (column pressure_multiplier)
+  /// Whether `traction` holds the multiplier of exact enforcement (column pressure_multiplier)
   /// rather than the penalty traction (pressure_penalty).
   bool multiplier = false;
 };
 
 /// The curve as CSV text: x,pressure_from_stress,pressure_penalty (or pressure_multiplier),
-/// hertz,shtayerman (the reference is not written: it is an input), 12 significant digits.
+/// hertz,shtayerman,pressure,minus_sigma_nn (the columns of earlier versions first; the
+/// reference is not written: it is an input), 12 significant digits.
 std::string pressure_csv(const PressureCurve& curve);
 
 /// The file a compare section's `reference` names (relative to the problem file's folder).
@@ -45,39 +52,55 @@ std::string reference_path(const model::ProblemSpec& spec, const model::Pressure
 /// cannot be read or is no reference curve. `check` and a run (before solving) call it.
 void require_references(const model::ProblemSpec& spec);
 
-/// The contact pressure of a pair against Hertz, Shtayerman (for the exact circle) and, if the
-/// input names one, a reference curve (docs/cases.md §1). Built once per run: the closed forms and
-/// the reference file are set up when constructed, each solve is then measured with measure().
+/// The contact pressure of a pair against Hertz, Shtayerman (two circles of radii R_1, R_2,
+/// the pair's E*) and, if the input names one, a reference curve (docs/cases.md §1), all on
+/// force per unit length along the obstacle. Built once per run, before the solve (so that
+/// what contradicts the input fails before it); each solve is then measured with measure().
 class PressureComparison {
 public:
-  /// For the material of the body in contact; InputError (naming the key) when it is not plane
-  /// strain or the reference file cannot be read.
+  /// InputError (naming the key) when the reference file cannot be read, or its force
+  /// differs from the known F/2 by more than 1 %.
   PressureComparison(const model::ProblemSpec& spec, const model::PressureCompareSpec& cmp,
-                     const material::LinearElastic& material);
+                     HertzInputs inputs);
 
-  /// The error measures of the pair's pressure from the stresses (the seed's plotted pressure)
-  /// and, under "penalty_traction", of the penalty traction, over [0, 1.5 b] against Hertz
-  /// (b_Hertz), Shtayerman (b_Shtayerman) and the reference (b_Hertz); keys as in summary.json
-  /// plus the half widths. If csv_path is not empty, writes the curves on 1001 points of
-  /// [0, 1.5 b_Hertz] and on the ends of the contact zone `zone_ends` (coordinates along the
-  /// obstacle) there (pressure_csv(curve(...))), so that a curve read back as a reference
-  /// keeps its kink.
+  /// The error measures of the pair's pressure from the stresses and, under "multiplier" or
+  /// "penalty_traction", of the method's pressure, over [0, 1.5 b] against Hertz (b_Hertz),
+  /// Shtayerman (b_Shtayerman) and the reference (b_Hertz); keys as in summary.json plus the
+  /// half widths and what they are computed for (F, E*, R*). If csv_path is not empty, writes
+  /// the curves (pressure_csv(curve(...))). InputError when a given force contradicts the
+  /// load (comparison_force).
   nlohmann::json measure(const model::Discretization& d, const model::ContactPair& pair,
-                         const Eigen::VectorXd& u, const std::vector<double>& zone_ends,
+                         const model::ContactResult& result, const Eigen::VectorXd& u,
                          const std::string& csv_path,
                          const Eigen::VectorXd* multipliers = nullptr) const;
 
-  /// The pair's pressure on 1001 points of [0, 1.5 b_Hertz] and on the zone ends inside it,
-  /// with Hertz, Shtayerman and the reference there.
+  /// The pair's pressures on 1001 points of [0, 1.5 b_Hertz] and on the ends of the contact
+  /// zone inside it (so that a curve read back as a reference keeps its kink), with Hertz,
+  /// Shtayerman and the reference there.
   PressureCurve curve(const model::Discretization& d, const model::ContactPair& pair,
-                      const Eigen::VectorXd& u, const std::vector<double>& zone_ends,
+                      const model::ContactResult& result, const Eigen::VectorXd& u,
                       const Eigen::VectorXd* multipliers = nullptr) const;
 
+  const HertzInputs& inputs() const { return in_; }
+
 private:
-  analytic::Hertz hertz_;
-  analytic::Shtayerman shtayerman_;
+  struct ClosedForms {
+    double force;
+    analytic::Hertz hertz;
+    analytic::Shtayerman shtayerman;
+  };
+  ClosedForms closed_forms(const model::ContactPair& pair, const model::ContactResult& result) const;
+  void check_reference_force(double force) const;
+
+  HertzInputs in_;
   std::optional<ReferenceCurve> reference_;
   std::string reference_name_;
 };
+
+/// Per pair of the problem, its comparison (nullopt without a compare section), every
+/// precondition checked (hertz_inputs, the reference files).
+std::vector<std::optional<PressureComparison>> make_comparisons(
+    const model::ProblemSpec& spec, const model::Discretization& d,
+    const std::vector<model::ContactPair>& pairs);
 
 }  // namespace hpcontact::driver

@@ -13,6 +13,7 @@
 #include "hpcontact/adapt/rp.hpp"
 #include "hpcontact/analytic/lame.hpp"
 #include "hpcontact/driver/contact_compare.hpp"
+#include "hpcontact/driver/contact_history.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/linear_solve.hpp"
@@ -70,7 +71,7 @@ bool run_output(const std::string& relative, bool folder) {
   if (slash == std::string::npos) {
     if (folder) return r == "rp" || r == "hp" || r == "steps";
     for (const char* name : {"summary.json", "input.yaml", "contact.csv", "pressure.csv", "path.csv",
-                             "mesh.yaml", "solution.vtu", "contact.vtu", "solution.pvd",
+                             "contact_history.csv", "mesh.yaml", "solution.vtu", "contact.vtu", "solution.pvd",
                              "contact.pvd"})
       if (r == name) return true;
     return false;
@@ -106,45 +107,62 @@ nlohmann::json points_json(const std::vector<Vec2>& points) {
   return j;
 }
 
-/// The pressure comparison of a problem with a compare section, set up once for the run (the
-/// closed forms and the reference file), at its first solved state.
-class LazyComparison {
-public:
-  explicit LazyComparison(const model::ProblemSpec& spec) : spec_(spec) {}
-  const PressureComparison* operator()(const SolvedState& st) {
-    const auto& cmp = spec_.contact.front().compare;
-    if (!cmp) return nullptr;
-    if (!comparison_)
-      comparison_.emplace(spec_, *cmp, st.d->bodies[st.pairs.front().body].material);
-    return &*comparison_;
-  }
+/// The pressure comparisons of a problem's pairs, set up before the first solve (the closed
+/// forms' inputs and the reference files, every precondition checked): per pair, or nullopt.
+using Comparisons = std::vector<std::optional<PressureComparison>>;
 
-private:
-  const model::ProblemSpec& spec_;
-  std::optional<PressureComparison> comparison_;
-};
-
-/// The ends of the first pair's contact zone as coordinates along its obstacle.
-std::vector<double> zone_ends(const SolvedState& st) {
-  std::vector<double> ends;
-  for (const auto& g : st.contact.front().gamma_star) ends.push_back(st.pairs.front().coordinate(g));
-  return ends;
+/// The comparisons of a problem, on its discretisation before the solve.
+Comparisons comparisons_of(const model::ProblemSpec& spec, const model::Discretization& d) {
+  bool any = false;
+  for (const auto& c : spec.contact) any = any || c.compare.has_value();
+  if (!any) return {};
+  return make_comparisons(spec, d, model::make_contact_pairs(spec, d));
 }
 
-/// The contact figures of a state for summary.json; with a comparison also the pressure errors,
-/// and the pressure curve into csv_path if not empty.
-nlohmann::json contact_json(const SolvedState& st, const PressureComparison* comparison,
+const PressureComparison* comparison_of(const Comparisons& c, size_t k) {
+  return k < c.size() && c[k] ? &*c[k] : nullptr;
+}
+
+/// The first pair with a comparison (its curve is pressure.csv), or -1.
+int compared_pair(const Comparisons& c) {
+  for (size_t k = 0; k < c.size(); ++k)
+    if (c[k]) return static_cast<int>(k);
+  return -1;
+}
+
+/// The units of the results (summary.json "units"): the input's.
+nlohmann::json units_note() {
+  return {{"note",
+           "hpcontact has no unit system: every result is in the units of the input's numbers "
+           "(consistent units, e.g. N and mm: lengths and displacements mm; forces per unit "
+           "thickness, resultants and compare.force N/mm; stresses, pressures, tractions and "
+           "moduli N/mm²; strain energy N·mm per unit thickness)"}};
+}
+
+/// The contact figures of pair k of a state for summary.json; with a comparison also the
+/// pressure errors, and the pressure curve into csv_path if not empty.
+nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureComparison* comparison,
                             const std::string& csv_path) {
   nlohmann::json cj;
-  const auto& c = st.contact.front();
+  const auto& c = st.contact[k];
+  const auto& pair = st.pairs[k];
+  cj["pair"] = k;
+  cj["body"] = st.d->bodies[pair.body].name;
+  cj["obstacle"] = pair.other >= 0 ? "body '" + st.d->bodies[pair.other].name + "'"
+                                   : pair.obstacle->describe();
   cj["half_width"] = c.half_width;
+  cj["contact_length"] = c.contact_length;
   cj["gamma_star"] = points_json(c.gamma_star);
   cj["gamma_star_deformed"] = points_json(c.gamma_star_deformed);
-  if (st.pairs.front().other >= 0) cj["gamma_star_other"] = points_json(c.other_zone_ends.X);
+  if (pair.other >= 0) cj["gamma_star_other"] = points_json(c.other_zone_ends.X);
   cj["p_max"] = c.p_max;
+  cj["traction_max"] = c.p_max;
+  cj["pressure_max"] = c.pressure_max;
   cj["resultant"] = {c.resultant.x(), c.resultant.y()};
+  cj["normal_force"] = c.resultant.dot(pair.normal());
+  cj["tangential_force"] = c.resultant.dot(pair.tangent);
   cj["max_penetration"] = c.max_penetration;
-  if (const auto& pair = st.pairs.front(); pair.friction.active()) {
+  if (pair.friction.active()) {
     // Stick and slip along the interface: counts, the largest |t_T| / (mu p_N) of each state,
     // and where the state changes between neighbouring points (midway between them).
     nlohmann::json fj;
@@ -181,15 +199,22 @@ nlohmann::json contact_json(const SolvedState& st, const PressureComparison* com
     cj["friction"] = fj;
   }
   if (comparison)
-    cj.update(comparison->measure(*st.d, st.pairs.front(), st.u, zone_ends(st), csv_path,
-                                  st.multipliers_of(0)));
+    cj.update(comparison->measure(*st.d, pair, c, st.u, csv_path, st.multipliers_of(k)));
   return cj;
+}
+
+/// Every pair's figures (summary.json "contact_pairs").
+nlohmann::json contact_pairs_json(const SolvedState& st, const Comparisons& comparisons) {
+  nlohmann::json all = nlohmann::json::array();
+  for (size_t k = 0; k < st.contact.size(); ++k)
+    all.push_back(contact_json(st, k, comparison_of(comparisons, k), ""));
+  return all;
 }
 
 /// Fills the summary and the interface curves of a solved state and writes its files (except
 /// summary.json) into out_dir (nothing if empty).
 void post_process(const model::ProblemSpec& spec, const SolvedState& st, const std::string& out_dir,
-                  const RunOptions& options, LazyComparison& comparison, RunResult& r) {
+                  const RunOptions& options, const Comparisons& comparisons, RunResult& r) {
   namespace fs = std::filesystem;
   auto say = [&](const std::string& line) {
     if (options.progress) options.progress(line);
@@ -206,12 +231,14 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
               st.u.cwiseAbs().maxCoeff(), "): a load, prescribed displacement, length or material "
               "value of the input is too large for double precision");
   s.error = exact_error(spec, disc, st.u, s.strain_energy);
+  s.extra["units"] = units_note();
   if (!st.contact.empty()) {
-    const PressureComparison* cmp = comparison(st);
-    s.extra["contact"] = contact_json(st, cmp, "");
-    r.contact = contact_table(st.contact, st.pairs);
-    if (cmp)
-      r.pressure_curve = cmp->curve(disc, st.pairs.front(), st.u, zone_ends(st), st.multipliers_of(0));
+    // Every pair; "contact" is the first (as before several pairs were reported).
+    s.extra["contact_pairs"] = contact_pairs_json(st, comparisons);
+    s.extra["contact"] = s.extra["contact_pairs"][0];
+    r.contact = contact_table(disc, st.contact, st.pairs);
+    if (const int k = compared_pair(comparisons); k >= 0)
+      r.pressure_curve = comparisons[k]->curve(disc, st.pairs[k], st.contact[k], st.u, st.multipliers_of(k));
   }
   if (out_dir.empty()) return;
   const fs::path out(out_dir);
@@ -229,22 +256,36 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
 }
 
 /// The load path (path.csv): a row per converged step, with the monitored node and the first
-/// pair's resultant. Nothing without an output folder.
+/// pair's resultant, then every further pair's (pair1_resultant_x, ...; from the contact
+/// history, a row per pair and step). Nothing without an output folder.
 void write_path(const model::ProblemSpec& spec, const model::NonlinearSolution& sol,
-                const std::string& out_dir) {
+                const std::vector<ContactHistoryRow>& history, const std::string& out_dir) {
   if (out_dir.empty() || sol.path.empty()) return;
   std::ostringstream csv;
   csv << std::setprecision(12) << "step,displacement_factor,load_factor,iterations,arc_length";
   if (!spec.solver.monitor_body.empty()) csv << ",monitor_ux,monitor_uy";
-  csv << ",resultant_x,resultant_y\n";
+  csv << ",resultant_x,resultant_y";
+  int n_pairs = 0;
+  for (const auto& h : history) n_pairs = std::max(n_pairs, h.pair + 1);
+  for (int k = 1; k < n_pairs; ++k) csv << ",pair" << k << "_resultant_x,pair" << k << "_resultant_y";
+  csv << '\n';
   for (size_t i = 0; i < sol.path.size(); ++i) {
     const auto& p = sol.path[i];
     csv << i + 1 << ',' << p.displacements << ',' << p.loads << ',' << p.iterations << ','
         << p.arc_length;
     if (!spec.solver.monitor_body.empty()) csv << ',' << p.monitor.x() << ',' << p.monitor.y();
-    csv << ',' << p.resultant.x() << ',' << p.resultant.y() << '\n';
+    csv << ',' << p.resultant.x() << ',' << p.resultant.y();
+    for (int k = 1; k < n_pairs; ++k) {
+      const size_t row = i * n_pairs + k;
+      if (row < history.size()) csv << ',' << history[row].resultant.x() << ',' << history[row].resultant.y();
+      else csv << ",,";
+    }
+    csv << '\n';
   }
   post::write_text_file((std::filesystem::path(out_dir) / "path.csv").string(), csv.str());
+  if (!history.empty())
+    post::write_text_file((std::filesystem::path(out_dir) / "contact_history.csv").string(),
+                          contact_history_csv(history));
 }
 
 /// The final adapted mesh of every body as a problem-file fragment (nodes, elements, curves,
@@ -354,13 +395,18 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
 
   RunResult result;
   post::Summary& s = result.summary;
-  LazyComparison comparison(spec);
   auto write_summary = [&](const std::string& out_dir) {
     s.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
     if (out_dir.empty()) return;
     post::write_summary((fs::path(out_dir) / "summary.json").string(), s);
     say("wrote summary.json");
   };
+
+  // The comparisons' preconditions are checked before anything is solved (on the input's mesh).
+  std::optional<model::Discretization> d0;
+  if (spec.adapt.method != model::AdaptMethod::none) d0.emplace(model::discretize(spec));
+  Comparisons comparisons;
+  if (spec.adapt.method != model::AdaptMethod::none) comparisons = comparisons_of(spec, *d0);
 
   if (spec.adapt.method != model::AdaptMethod::none) {
     // rp / hp: every iteration's pressure curve and errors are kept; the final mesh is the result.
@@ -373,13 +419,13 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     auto add_pressure = [&](nlohmann::json& j, int iteration, const adapt::Solved& solved) {
       const auto& sol = solved.solution;
       const SolvedState st{&solved.discretization, sol.u, sol.contact, sol.pairs, sol.multipliers};
-      const PressureComparison* cmp = comparison(st);
-      if (!cmp) return;
+      const int k = compared_pair(comparisons);
+      if (k < 0) return;
       const std::string csv =
           iter_dir.empty() ? ""
                            : (fs::path(iter_dir) / ("pressure-" + std::to_string(iteration) + ".csv"))
                                  .string();
-      const nlohmann::json cj = contact_json(st, cmp, csv);
+      const nlohmann::json cj = contact_json(st, k, &*comparisons[k], csv);
       for (const char* key : {"half_width", "e_L2_hertz_percent", "e_L2_shtayerman_percent",
                               "e_seed_hertz_percent", "e_seed_shtayerman_percent",
                               "e_L2_reference_percent"})
@@ -433,7 +479,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     if (!out_dir.empty()) fs::create_directories(out_dir);
     SolvedState st{&last->discretization, last->solution.u, last->solution.contact,
                    last->solution.pairs, last->solution.multipliers};
-    post_process(last->spec, st, out_dir, options, comparison, result);
+    post_process(last->spec, st, out_dir, options, comparisons, result);
     if (!out_dir.empty())
       post::write_text_file((fs::path(out_dir) / "mesh.yaml").string(), mesh_yaml(last->spec));
     s.converged = converged;
@@ -455,6 +501,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
 
   model::Discretization d = model::discretize(spec);
   model::require_held(spec, d);
+  comparisons = comparisons_of(spec, d);
   {
     std::ostringstream os;
     int n_el = 0;
@@ -485,12 +532,25 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     // collected in solution.pvd (contact.pvd) at time = the step's number (the row of path.csv).
     std::vector<std::string> step_files, contact_files;
     std::vector<double> step_times;
-    model::StepFn on_step;
+    // Every converged step: each pair's row of contact_history.csv.
+    std::vector<ContactHistoryRow> history;
+    int n_steps = 0;
+    auto record_history = [&](const Eigen::VectorXd& u, const model::NonlinearSolution::PathPoint& at,
+                              const std::vector<model::ContactPair>& pairs,
+                              const std::vector<Eigen::VectorXd>& multipliers) {
+      ++n_steps;
+      for (size_t k = 0; k < pairs.size(); ++k)
+        history.push_back(contact_history_row(
+            n_steps, at, static_cast<int>(k), d.bodies[pairs[k].body].name, pairs[k],
+            model::evaluate_contact(d, pairs[k], u, multipliers[k].size() ? &multipliers[k] : nullptr)));
+    };
+    model::StepFn on_step = record_history;
     if (spec.output.steps && spec.output.vtu && !stage.empty()) {
       fs::create_directories(fs::path(stage) / "steps");
-      on_step = [&](const Eigen::VectorXd& u, const model::NonlinearSolution::PathPoint&,
+      on_step = [&](const Eigen::VectorXd& u, const model::NonlinearSolution::PathPoint& at,
                     const std::vector<model::ContactPair>& pairs,
                     const std::vector<Eigen::VectorXd>& multipliers) {
+        record_history(u, at, pairs, multipliers);
         std::ostringstream name;
         name << std::setw(4) << std::setfill('0') << step_files.size() + 1 << ".vtu";
         step_files.push_back("steps/step-" + name.str());
@@ -528,8 +588,8 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
         const std::string good = (fs::path(stage) / "last-good").string();
         fs::create_directories(good);
         const SolvedState last{&d, sol.u, sol.contact, sol.pairs, sol.multipliers};
-        post_process(spec, last, good, options, comparison, result);
-        write_path(spec, sol, good);
+        post_process(spec, last, good, options, comparisons, result);
+        write_path(spec, sol, history, good);
         s.converged = false;
         s.extra["message"] = sol.message;
         write_summary(good);
@@ -545,7 +605,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       }
       throw NumericalError(spec.file + ": the solver stopped: " + sol.message + kept);
     }
-    write_path(spec, sol, stage);
+    write_path(spec, sol, history, stage);
     st.u = sol.u;
     st.contact = std::move(sol.contact);
     st.pairs = std::move(sol.pairs);
@@ -553,7 +613,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
   }
   result.discretization = std::move(d);
   st.d = &result.discretization;
-  post_process(spec, st, stage, options, comparison, result);
+  post_process(spec, st, stage, options, comparisons, result);
   s.converged = true;
   result.u = st.u;
   write_summary(stage);

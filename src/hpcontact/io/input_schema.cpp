@@ -350,18 +350,41 @@ const std::vector<KeySpec>& input_schema() {
               "parameter of convergence, not of the answer); absent: the normal one.",
        .lower = greater_than(0)},
       {.path = "contact[].compare", .type = T::section,
-       .doc = "Measure the contact pressure against Hertz and Shtayerman (a cylinder on the "
-              "obstacle) and, optionally, a reference curve; absent: no comparison."},
-      {.path = "contact[].compare.radius", .type = T::number, .required = true, .unit = "length",
-       .doc = "Radius of the cylinder.", .lower = greater_than(0)},
-      {.path = "contact[].compare.force", .type = T::number, .required = true,
-       .unit = "force/length",
-       .doc = "Force on the whole cylinder per unit thickness (F; the quarter model carries F/2).",
+       .doc = "Measure the contact pressure against Hertz and Shtayerman and, optionally, a "
+              "reference curve; absent: no comparison. The closed forms are those of the pair: "
+              "the contact modulus E* (1/E* = 1/E'_1 + 1/E'_2, E' = E/(1 - nu²) in plane "
+              "strain, E in plane stress, 1/E'_2 = 0 for a rigid obstacle; E and nu of the "
+              "element at the first contact edge) and radius R* (1/R* = 1/radius + "
+              "1/other_radius). They are measured on force per unit length along the obstacle "
+              "(contact.csv's pressure), over [0, 1.5 b] from obstacle.point. Checked before "
+              "the solve: the materials, the radii, the force against the load and the "
+              "reference curve's force. A force given under displacement control is a nominal "
+              "value: summary.json's compared_for reports the force the pair carries and the "
+              "difference (a warning beyond 1 %)."},
+      {.path = "contact[].compare.radius", .type = T::number, .unit = "length",
+       .doc = "Radius R_1 of the body's surface at the contact; absent: that of its contact "
+              "edges' arcs (all arcs of one circle), else required. A value that contradicts "
+              "those arcs is refused.",
+       .lower = greater_than(0)},
+      {.path = "contact[].compare.other_radius", .type = T::number, .unit = "length",
+       .doc = "Radius R_2 of the obstacle's surface, negative where it is concave (a hole); "
+              "absent: derived — a plane: infinite; a rigid circle: its radius (negative with "
+              "inside); another body: the arc of its contact edges (all arcs of one circle; "
+              "infinite if they are straight), else required; a curve: infinite. A value that "
+              "contradicts a plane or a circle is refused; not 0."},
+      {.path = "contact[].compare.force", .type = T::number, .unit = "force/length",
+       .doc = "Force F on the whole cylinder per unit thickness, which the closed forms are "
+              "computed for; absent: derived from the load — under solver.target_resultant "
+              "(pair 0 with its normal along the controlled component) before the solve, else "
+              "from the pair's resultant after it. A model whose contact boundary lies on one "
+              "side of obstacle.point (a symmetric half) carries F/2, a whole model F. A value "
+              "that contradicts the target is refused before the solve.",
        .lower = greater_than(0)},
       {.path = "contact[].compare.reference", .type = T::string,
-       .doc = "CSV with columns x (undeformed, along the obstacle) and pressure_from_stress: "
-              "the pressure.csv of an overkill run of the same model, relative to this file; "
-              "absent: none."},
+       .doc = "CSV with columns x (undeformed, along the obstacle) and pressure_from_stress "
+              "(force per unit length along the obstacle): the pressure.csv of an overkill run "
+              "of the same model, relative to this file; absent: none. Refused when its force, "
+              "∫ pressure dx over x >= 0, differs from F/2 by more than 1 %."},
 
       {.path = "contact[].obstacle.type", .type = T::choice, .required = true,
        .doc = "plane: a straight line; circle: a disc (or a hole with inside); curve: a smooth "
@@ -377,7 +400,9 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "contact[].obstacle.point", .type = T::point, .default_yaml = "[0, 0]",
        .unit = "length",
        .doc = "plane: a point of the line, [x, y]; curve: the origin of positions along it (half "
-              "width, pressure curves), which are measured along its chord."},
+              "width, pressure curves), which are measured along its tangent at the point of "
+              "the curve nearest to this one (the common tangent of the linear theory; not the "
+              "chord, which an asymmetric point list tilts)."},
       {.path = "contact[].obstacle.normal", .type = T::point, .default_yaml = "[0, 1]",
        .doc = "plane: normal pointing away from the obstacle towards the body, [nx, ny], non-zero "
               "(normalised when read)."},

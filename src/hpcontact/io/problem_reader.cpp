@@ -597,8 +597,9 @@ class SpecBuilder {
       c.quadrature = integer(node["quadrature"]);
       if (const YAML::Node cmp = node["compare"]) {
         PressureCompareSpec pc;
-        pc.radius = number(cmp["radius"]);
-        pc.force = number(cmp["force"]);
+        if (cmp["radius"]) pc.radius = number(cmp["radius"]);
+        if (cmp["other_radius"]) pc.other_radius = number(cmp["other_radius"]);
+        if (cmp["force"]) pc.force = number(cmp["force"]);
         if (cmp["reference"]) pc.reference = cmp["reference"].Scalar();
         pc.where = source_.where(cmp, item_path + ".compare");
         c.compare = pc;

@@ -95,11 +95,11 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       for (const auto& p : o.points) points.emplace_back(p[0], p[1]);
       auto curve = std::make_shared<contact::RigidCurve>(points);
       // Positions along it (half width, pressure curves) are measured from `point` along its
-      // chord (along its first tangent if it closes on itself).
-      const Vec2 chord = points.back() - points.front();
+      // tangent at the foot of `point`: the common tangent of the linear theory (the chord of
+      // an asymmetric point list is not).
       pair.reference_point = Vec2(o.point[0], o.point[1]);
-      pair.tangent = chord.norm() > 1e-9 * curve->spline().end() ? Vec2(chord.normalized())
-                                                                  : Vec2(curve->spline().derivative(0).normalized());
+      const auto& spline = curve->spline();
+      pair.tangent = spline.derivative(spline.closest_parameter(pair.reference_point)).normalized();
       pair.obstacle = curve;
     } else if (o.kind == ObstacleKind::circle) {
       pair.obstacle = std::make_shared<contact::RigidCircle>(Vec2(o.center[0], o.center[1]),

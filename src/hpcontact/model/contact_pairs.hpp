@@ -44,10 +44,17 @@ struct ContactPair {
     std::vector<contact::FrictionHistory> points_before, other_points_before;
   };
   std::shared_ptr<FrictionMemory> memory;
-  Vec2 reference_point = Vec2::Zero();  ///< obstacle point used for the half width
-  Vec2 tangent = Vec2(1, 0);            ///< obstacle tangent used for the half width
+  Vec2 reference_point = Vec2::Zero();  ///< obstacle point positions are measured from
+  /// The direction positions are measured along: a plane's; a curve's tangent at the foot of
+  /// reference_point (the common tangent of the linear theory); x for a circle and another body.
+  Vec2 tangent = Vec2(1, 0);
   /// Coordinate of a point along the obstacle: (X − reference point)·tangent.
   double coordinate(const Vec2& X) const { return (X - reference_point).dot(tangent); }
+  /// d coordinate / dh of the point X + h dX at h = 0 (dX a direction, e.g. dX/dt of a boundary).
+  double coordinate_rate(const Vec2& /*X*/, const Vec2& dX) const { return tangent.dot(dX); }
+  /// The pair's normal direction for resultants: left of `tangent` (a plane's normal; y for
+  /// a circle and another body).
+  Vec2 normal() const { return Vec2(-tangent.y(), tangent.x()); }
 };
 
 /// Contact pairs of a problem; InputError naming the key when a pair is wrong.

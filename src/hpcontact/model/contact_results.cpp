@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <optional>
+#include <tuple>
 #include <cmath>
 #include <limits>
 
@@ -77,24 +78,56 @@ std::pair<Vec2, Vec2> zone_end(const Body& body, const contact::Obstacle& obstac
   return {X, x};
 }
 
-/// -n·σ·n at local edge parameter t of element q, n the outward normal N of the undeformed
-/// boundary; under finite strain the Cauchy stress and the deformed normal F⁻ᵀN / |F⁻ᵀN|.
-double stress_pressure(const Body& body, int q, int le, double t, const Vec2& N,
-                       const Eigen::VectorXd& u) {
+/// What the stresses say at local edge parameter t of element q of a contact boundary, and the
+/// boundary's position and length per unit length along the obstacle.
+struct SideValues {
+  double s = 0;               ///< position along the obstacle (of the undeformed point)
+  double length_ratio = 1;    ///< dS/ds: undeformed boundary length per unit length along the obstacle
+  double minus_sigma_nn = 0;  ///< −n·σ·n, n the outward normal (under finite strain the deformed one)
+  double pressure_from_stress = 0;  ///< n_o·(P N) dS/ds
+};
+
+/// At local edge parameter t of element q of `body`, against `obstacle` (its normal n_o at the
+/// deformed point: the direction the contact force acts along; −N where the point has no foot):
+///   −n·σ·n,   n_o·(P N) dS/ds,
+/// N the undeformed outward normal, P N = J σ F⁻ᵀ N the traction per unit undeformed length
+/// (σ N in the linear theory), n = F⁻ᵀN / |F⁻ᵀN| (N in the linear theory).
+SideValues side_values(const Body& body, const ContactPair& pair, const contact::Obstacle& obstacle,
+                       int q, int le, double t, const Eigen::VectorXd& u) {
+  Vec2 N;
+  double dS_dt = 0;
+  const Vec2 X = fem::edge_geometry(body.maps[q], le, t, &N, &dS_dt);
   const auto r = fem::edge_reference_point(le, t);
   const auto pv = fem::point_values(body.dofs.element(q), body.maps[q], r[0], r[1]);
   const auto ps = point_stress(body, q, pv, body.element_coefficients(q, u));
+  Mat2 sigma;
+  sigma << ps.stress(0), ps.stress(2), ps.stress(2), ps.stress(1);
+  SideValues v;
+  v.s = pair.coordinate(X);
   const Vec2 n = body.finite_strain() ? Vec2(ps.F.inverse().transpose() * N).normalized() : N;
-  const Eigen::Vector3d& sig = ps.stress;
-  return -(n.x() * n.x() * sig(0) + n.y() * n.y() * sig(1) + 2 * n.x() * n.y() * sig(2));
+  v.minus_sigma_nn = -n.dot(sigma * n);
+  const Vec2 PN = body.finite_strain()
+                      ? Vec2(ps.F.determinant() * (sigma * (ps.F.inverse().transpose() * N)))
+                      : Vec2(sigma * N);
+  Vec2 x;
+  gap_at(body, contact::RigidPlane(Vec2::Zero(), Vec2(0, 1)), q, le, t, u, &x);
+  Vec2 n_o = -N;
+  Vec2 normal = Vec2::Zero();
+  if (std::isfinite(obstacle.gap(x, &normal, nullptr)) && normal.norm() > 0) n_o = normal;
+  // ds/dS along the boundary's unit tangent; where the boundary runs across the obstacle the
+  // ratio is capped (no pressure there).
+  const double ds_dS = std::abs(pair.coordinate_rate(X, Vec2(N.y(), -N.x())));
+  v.length_ratio = 1 / std::max(ds_dS, 1e-12);
+  v.pressure_from_stress = n_o.dot(PN) * v.length_ratio;
+  return v;
 }
 
-/// −n·σ·n at multiplier node j of an exactly enforced pair. A node on a vertex lies on two
-/// edges' elements: the stress is taken in the one whose map is regular at that corner, since
-/// where two edges of one smooth curve meet the element there has a 180° corner, its Jacobian
-/// vanishes at the corner and its stresses are singular. Where no element is regular at the
-/// corner, 1e-3 of the edge inside it.
-double node_stress_pressure(const Body& body, const ContactPair& pair, int j, const Eigen::VectorXd& u) {
+/// Where the stresses at multiplier node j of an exactly enforced pair are taken: a node on a
+/// vertex lies on two edges' elements, and the stress is taken in the one whose map is regular
+/// at that corner, since where two edges of one smooth curve meet the element there has a 180°
+/// corner, its Jacobian vanishes at the corner and its stresses are singular. Where no element
+/// is regular at the corner, 1e-3 of the edge inside it. (element, local edge, parameter).
+std::optional<std::tuple<int, int, double>> node_stress_point(const Body& body, const ContactPair& pair, int j) {
   const PairConstraints& c = *pair.constraints;
   struct Candidate {
     int q, le;
@@ -113,12 +146,10 @@ double node_stress_pressure(const Body& body, const ContactPair& pair, int j, co
       const double regularity = std::abs(J.determinant()) / std::max(J.squaredNorm(), 1e-300);
       if (!best || regularity > best->regularity) best = Candidate{q, le, t, regularity};
     }
-  if (!best) return 0;
+  if (!best) return std::nullopt;
   double t = best->t;
   if (best->regularity < 1e-6) t = std::clamp(t, -1 + 1e-3, 1 - 1e-3);
-  Vec2 normal;
-  fem::edge_geometry(body.maps[best->q], best->le, t, &normal, nullptr);
-  return stress_pressure(body, best->q, best->le, t, normal, u);
+  return std::tuple{best->q, best->le, t};
 }
 
 /// The ends of the contact zone along the contact points of one body (the states' gaps change
@@ -281,7 +312,43 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       }
       res.states.push_back(ps);
       res.X.push_back(n.X);
-      res.stress_pressure.push_back(node_stress_pressure(body, pair, j, u));
+      SideValues sv;
+      if (const auto at = node_stress_point(body, pair, j))
+        sv = side_values(body, pair, *pair.obstacle, std::get<0>(*at), std::get<1>(*at), std::get<2>(*at), u);
+      res.s.push_back(pair.coordinate(n.X));
+      res.pressure.push_back(n.pressure * sv.length_ratio);
+      res.pressure_from_stress.push_back(sv.pressure_from_stress);
+      res.minus_sigma_nn.push_back(sv.minus_sigma_nn);
+    }
+    if (pair.other >= 0) {
+      // The other body's points: their gap against this body's deformed boundary and the
+      // multiplier at their feet on it (the reaction, per unit length of this body's boundary).
+      const Body& other = d.bodies[pair.other];
+      const Eigen::VectorXd lambda = multipliers->head(c.size());
+      for (const auto& cp : pair.other_points) {
+        contact::PointState ps;
+        Vec2 X;
+        ps.gap = gap_at(other, *pair.boundary, cp.element, cp.local_edge, cp.t, u, &ps.x, &X);
+        double ratio = 0;
+        contact::BoundaryPoint foot;
+        if (pair.boundary->project(ps.x, foot)) {
+          ps.pressure = c.nodes.interpolate(foot.edge, foot.t, lambda);
+          ps.normal = foot.normal;
+          ps.traction = -ps.pressure * foot.normal;
+          const auto& edge = body.mesh.edge(pair.edges[foot.edge]);
+          Vec2 N;
+          double dS_dt = 0;
+          const Vec2 Xb = fem::edge_geometry(body.maps[edge.quads[0]], edge.local_edge[0], foot.t, &N, &dS_dt);
+          ratio = 1 / std::max(std::abs(pair.coordinate_rate(Xb, Vec2(N.y(), -N.x()))), 1e-12);
+        }
+        const SideValues sv = side_values(other, pair, *pair.boundary, cp.element, cp.local_edge, cp.t, u);
+        res.other_states.push_back(ps);
+        res.other_X.push_back(X);
+        res.other_s.push_back(sv.s);
+        res.other_pressure.push_back(ps.pressure * ratio);
+        res.other_pressure_from_stress.push_back(sv.pressure_from_stress);
+        res.other_minus_sigma_nn.push_back(sv.minus_sigma_nn);
+      }
     }
   } else {
     PairForces f = pair_forces(d, pair, u, nullptr);
@@ -292,11 +359,29 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       res.p_max = std::max(res.p_max, ps.pressure);
       if (std::isfinite(ps.gap)) res.max_penetration = std::max(res.max_penetration, -ps.gap);
     }
-    for (const auto& cp : pair.points) {
+    for (size_t i = 0; i < pair.points.size(); ++i) {
+      const auto& cp = pair.points[i];
+      const SideValues sv = side_values(body, pair, *pair.obstacle, cp.element, cp.local_edge, cp.t, u);
       res.X.push_back(cp.X);
-      res.stress_pressure.push_back(stress_pressure(body, cp.element, cp.local_edge, cp.t, cp.normal, u));
+      res.s.push_back(sv.s);
+      res.pressure.push_back(res.states[i].pressure * sv.length_ratio);
+      res.pressure_from_stress.push_back(sv.pressure_from_stress);
+      res.minus_sigma_nn.push_back(sv.minus_sigma_nn);
+    }
+    if (pair.other >= 0) {
+      const Body& other = d.bodies[pair.other];
+      for (size_t i = 0; i < pair.other_points.size(); ++i) {
+        const auto& cp = pair.other_points[i];
+        const SideValues sv = side_values(other, pair, *pair.boundary, cp.element, cp.local_edge, cp.t, u);
+        res.other_X.push_back(cp.X);
+        res.other_s.push_back(sv.s);
+        res.other_pressure.push_back(res.other_states[i].pressure * sv.length_ratio);
+        res.other_pressure_from_stress.push_back(sv.pressure_from_stress);
+        res.other_minus_sigma_nn.push_back(sv.minus_sigma_nn);
+      }
     }
   }
+  for (const double p : res.pressure) res.pressure_max = std::max(res.pressure_max, p);
   ZoneEnds own = pair.constraints ? node_zone_ends(body, pair, res.nodes, u, multipliers->head(pair.constraints->size()))
                                   : zone_ends(body, pair.points, res.states, *pair.obstacle, pair, u);
   res.gamma_star = std::move(own.X);
@@ -317,6 +402,20 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
   }
   for (const Vec2& g : res.gamma_star)
     res.half_width = std::max(res.half_width, std::abs(pair.coordinate(g)));
+  // The extent of the contact zone along the obstacle: its outer ends and the points in contact.
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (size_t i = 0; i < res.states.size(); ++i)
+    if (pair.constraints ? res.nodes[i].active : res.states[i].gap < 0) {
+      lo = std::min(lo, res.s[i]);
+      hi = std::max(hi, res.s[i]);
+    }
+  if (hi >= lo) {
+    for (const int k : res.outer_ends) {
+      lo = std::min(lo, pair.coordinate(res.gamma_star[k]));
+      hi = std::max(hi, pair.coordinate(res.gamma_star[k]));
+    }
+    res.contact_length = hi - lo;
+  }
   return res;
 }
 
@@ -331,6 +430,11 @@ BoundaryPressureProbe::BoundaryPressureProbe(const Discretization& d, const Cont
                                              const Eigen::VectorXd& u,
                                              const Eigen::VectorXd* multipliers)
     : d_(d), pair_(pair), u_(u), multipliers_(multipliers), coord_(pair.edges.size()) {
+  if (pair.other >= 0) {  // the other body's deformed boundary is the obstacle: at this state
+    const Body &a = d.bodies[pair.body], &b = d.bodies[pair.other];
+    pair.boundary->set_displacement(u.segment(a.dof_offset, a.dofs.n_dofs()));
+    pair.other_boundary->set_displacement(u.segment(b.dof_offset, b.dofs.n_dofs()));
+  }
   for (size_t k = 0; k < pair.edges.size(); ++k)
     for (int i = 0; i <= kSamples; ++i)
       coord_[k][i] = coordinate(static_cast<int>(k), -1 + 2.0 * i / kSamples);
@@ -356,15 +460,16 @@ std::optional<BoundaryPressure> BoundaryPressureProbe::operator()(double s) cons
                                     -1 + 2.0 * i / kSamples, -1 + 2.0 * (i + 1) / kSamples, fa, fb, tol);
       const auto& edge = body.mesh.edge(pair_.edges[k]);
       const int q = edge.quads[0], le = edge.local_edge[0];
-      Vec2 normal;
-      fem::edge_geometry(body.maps[q], le, t, &normal, nullptr);
       BoundaryPressure bp;
       const double g = gap_at(body, *pair_.obstacle, q, le, t, u_, &bp.x, &bp.X);
       if (pair_.constraints && multipliers_)
-        bp.penalty = pair_.constraints->nodes.interpolate(static_cast<int>(k), t, *multipliers_);
+        bp.traction = pair_.constraints->nodes.interpolate(static_cast<int>(k), t, *multipliers_);
       else
-        bp.penalty = g < 0 ? -pair_.penalty * g : 0.0;
-      bp.from_stress = stress_pressure(body, q, le, t, normal, u_);
+        bp.traction = g < 0 ? -pair_.penalty * g : 0.0;
+      const SideValues sv = side_values(body, pair_, *pair_.obstacle, q, le, t, u_);
+      bp.pressure = bp.traction * sv.length_ratio;
+      bp.pressure_from_stress = sv.pressure_from_stress;
+      bp.minus_sigma_nn = sv.minus_sigma_nn;
       return bp;
     }
   }

@@ -26,11 +26,26 @@ struct ContactResult {
   /// (collocation); the pressure of an exactly enforced pair is its multiplier there.
   std::vector<contact::PointState> states;
   std::vector<Vec2> X;  ///< the undeformed position of each state's point
-  /// Normal pressure -n·σ·n from the stresses of the body at each contact point (the seed's
-  /// plotted pressure), n the undeformed outward normal.
-  std::vector<double> stress_pressure;
+  /// Per state: its position along the obstacle (ContactPair::coordinate of X).
+  std::vector<double> s;
+  /// Per state: the contact pressure, the normal contact force per unit length along the
+  /// obstacle at s: the traction the method carries (states[i].pressure, per unit undeformed
+  /// boundary length) times dS/ds. What Hertz, Shtayerman and other codes give.
+  std::vector<double> pressure;
+  /// Per state: the same from the body's stresses, −n_o·(P N) dS/ds (P N the traction per unit
+  /// undeformed length, n_o the obstacle's normal at the point).
+  std::vector<double> pressure_from_stress;
+  /// Per state: −n·σ·n from the stresses, n the body's own undeformed outward normal (the
+  /// seed's plotted pressure; a factor cos²θ below `pressure` where the boundary is inclined).
+  std::vector<double> minus_sigma_nn;
   Vec2 resultant = Vec2::Zero();            ///< ∫ traction ds on the body
+  /// The largest traction the method carries (multiplier or penalty traction, per unit
+  /// undeformed boundary length) and penetration.
   double p_max = 0, max_penetration = 0;
+  double pressure_max = 0;  ///< the largest `pressure` (force per unit length along the obstacle)
+  /// The extent of the contact zone along the obstacle: from its first to its last end (a zone
+  /// end, or the last point in contact where the contact boundary ends in contact).
+  double contact_length = 0;
   /// Ends of the contact zone (Pegasus on the gap, seed §4.7) on the undeformed boundary: the
   /// points a node is moved to (rp) and where the closed forms of the linear theory put them.
   std::vector<Vec2> gamma_star;
@@ -40,10 +55,16 @@ struct ContactResult {
   /// nodes to. Sign changes between them are islands of opening inside the contact zone, which
   /// the penalty traction's oscillation produces on coarse discretisations.
   std::vector<int> outer_ends;
-  double half_width = 0;  ///< largest |(Γ* - reference point)·tangent|, Γ* undeformed
-  /// Against another body: the states of its points and the zone ends on its boundary.
+  /// Largest |coordinate(Γ*)|, Γ* undeformed (along the obstacle: ContactPair::coordinate).
+  double half_width = 0;
+  /// Against another body: the states of its points and the zone ends on its boundary. Under
+  /// exact enforcement the other body's points carry the multiplier at their feet on this body.
   std::vector<contact::PointState> other_states;
   ZoneEnds other_zone_ends;
+  /// Per other_states entry, as X, s, pressure, pressure_from_stress, minus_sigma_nn are for
+  /// the states (positions along the same obstacle frame).
+  std::vector<Vec2> other_X;
+  std::vector<double> other_s, other_pressure, other_pressure_from_stress, other_minus_sigma_nn;
   /// Exact enforcement: the multiplier nodes, with the pressure the method carries.
   struct Node {
     Vec2 X, x;          ///< undeformed and deformed position
@@ -59,9 +80,14 @@ struct ContactResult {
 struct BoundaryPressure {
   Vec2 X;                  ///< undeformed position
   Vec2 x;                  ///< deformed position
-  double from_stress = 0;  ///< -n·σ·n, n the undeformed outward normal
-  /// The pressure the method carries: eps_N <-g_N> (penalty), the multiplier λ_h (exact).
-  double penalty = 0;
+  /// The contact pressure: normal force per unit length along the obstacle (traction · dS/ds).
+  double pressure = 0;
+  /// The same from the stresses: −n_o·(P N) dS/ds.
+  double pressure_from_stress = 0;
+  /// The traction the method carries per unit undeformed boundary length: eps_N <-g_N>
+  /// (penalty), the multiplier λ_h (exact).
+  double traction = 0;
+  double minus_sigma_nn = 0;  ///< −n·σ·n, n the body's undeformed outward normal
 };
 
 /// Pressures along the contact boundary of a pair, located by the coordinate

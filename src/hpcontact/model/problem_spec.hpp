@@ -187,8 +187,12 @@ struct ObstacleSpec {
 /// Closed forms (Hertz, Shtayerman for the exact circle) and an optional reference curve to
 /// measure the contact pressure against (docs/cases.md §1). x runs along the obstacle from its point.
 struct PressureCompareSpec {
-  double radius = 0;      ///< cylinder radius [length]
-  double force = 0;       ///< force on the whole cylinder per unit thickness [force/length]
+  /// Radius of the body's surface at the contact [length]; 0: derived from its contact edges.
+  double radius = 0;
+  /// Radius of the obstacle's surface (negative: concave) [length]; nullopt: derived.
+  std::optional<double> other_radius;
+  /// Force on the whole cylinder per unit thickness [force/length]; 0: derived from the load.
+  double force = 0;
   std::string reference;  ///< CSV (x, pressure) of a reference run; empty: none
   SourceRef where;
 };

@@ -32,11 +32,17 @@ void write_contact_vtu(const std::string& path, const std::vector<model::Contact
   grid.point_vector("displacement", [&](std::size_t n) { return Vec2(state(n).x - X[n]); });
   grid.point_vector("traction", [&](std::size_t n) { return state(n).traction; });
   grid.point_scalar("gap", [&](std::size_t n) { return state(n).gap; });
-  grid.point_scalar("pressure", [&](std::size_t n) { return state(n).pressure; });
-  grid.point_scalar("pressure_from_stress", [&](std::size_t n) {
-    const auto& sp = results[at[n].first].stress_pressure;
-    return at[n].second < sp.size() ? sp[at[n].second] : 0.0;
-  });
+  // Per point of a pair's own side: a column of its ContactResult.
+  auto column = [&](const char* name, std::vector<double> model::ContactResult::*field) {
+    grid.point_scalar(name, [&, field](std::size_t n) {
+      const auto& v = results[at[n].first].*field;
+      return at[n].second < v.size() ? v[at[n].second] : 0.0;
+    });
+  };
+  column("pressure", &model::ContactResult::pressure);
+  column("pressure_from_stress", &model::ContactResult::pressure_from_stress);
+  grid.point_scalar("traction_normal", [&](std::size_t n) { return state(n).pressure; });
+  column("minus_sigma_nn", &model::ContactResult::minus_sigma_nn);
   grid.point_scalar("tangential_traction", [&](std::size_t n) { return state(n).t_t; });
   grid.point_scalar("slip", [&](std::size_t n) { return state(n).slip; });
   grid.point_scalar(

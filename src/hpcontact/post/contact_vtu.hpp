@@ -11,7 +11,8 @@ namespace hpcontact::post {
 /// Writes the contact points of every pair as one polyline per pair through its Gauss points,
 /// at their undeformed positions (like solution.vtu, so "Warp By Vector" with `displacement`
 /// puts both on the deformed configuration). Point data: displacement, traction (the contact
-/// traction on the body), gap, pressure (penalty), pressure_from_stress, tangential_traction,
+/// traction on the body), gap, pressure and pressure_from_stress (force per unit length along the
+/// obstacle), traction_normal (multiplier or penalty), minus_sigma_nn, tangential_traction,
 /// slip, state (contact::ContactState: 0 open, 1 contact without friction, 2 stick, 3 slip);
 /// cell data: pair.
 /// Throws IoError if the file cannot be written.

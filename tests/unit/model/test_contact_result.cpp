@@ -141,10 +141,14 @@ TEST(ContactResult, ZoneEndsAndStressPressureOfAKnownField) {
       }
       EXPECT_NEAR(r.half_width, body_frame(r.gamma_star[1], angle).x(), 1e-14);
       const auto& points = pairs.front().points;
-      ASSERT_EQ(r.stress_pressure.size(), points.size());
+      ASSERT_EQ(r.minus_sigma_nn.size(), points.size());
+      ASSERT_EQ(r.pressure.size(), points.size());
       for (size_t i = 0; i < points.size(); ++i) {
         const double X = body_frame(points[i].X, angle).x();
-        EXPECT_NEAR(r.stress_pressure[i], f.stress_pressure(X), 1e-9 * kE * 1e-3) << "X " << X;
+        EXPECT_NEAR(r.minus_sigma_nn[i], f.stress_pressure(X), 1e-9 * kE * 1e-3) << "X " << X;
+        // A flat boundary on the plane: along the obstacle is along the boundary (dS/ds = 1).
+        EXPECT_NEAR(r.pressure_from_stress[i], f.stress_pressure(X), 1e-9 * kE * 1e-3) << "X " << X;
+        EXPECT_NEAR(r.pressure[i], r.states[i].pressure, 1e-9) << "X " << X;
         EXPECT_NEAR(r.states[i].gap, f.gap(X), 1e-13) << "X " << X;
         EXPECT_NEAR(r.states[i].pressure, kPenalty * std::max(0.0, -f.gap(X)), 1e-9) << "X " << X;
       }
@@ -171,8 +175,10 @@ TEST(ContactResult, PressureProbeOfAKnownField) {
       EXPECT_NEAR(X.y(), 0, 1e-14);
       EXPECT_NEAR(x.x(), s + f.ux_bottom(s), 1e-12) << s;
       EXPECT_NEAR(x.y(), f.gap(s), 1e-12) << s;
-      EXPECT_NEAR(bp->from_stress, f.stress_pressure(s), 1e-9 * kE * 1e-3) << s;
-      EXPECT_NEAR(bp->penalty, kPenalty * std::max(0.0, -f.gap(s)), 1e-9 * kPenalty * 1e-3) << s;
+      EXPECT_NEAR(bp->minus_sigma_nn, f.stress_pressure(s), 1e-9 * kE * 1e-3) << s;
+      EXPECT_NEAR(bp->pressure_from_stress, f.stress_pressure(s), 1e-9 * kE * 1e-3) << s;
+      EXPECT_NEAR(bp->traction, kPenalty * std::max(0.0, -f.gap(s)), 1e-9 * kPenalty * 1e-3) << s;
+      EXPECT_NEAR(bp->pressure, bp->traction, 1e-9 * kPenalty * 1e-3) << s;
     }
     EXPECT_FALSE(probe(-0.01).has_value());
     EXPECT_FALSE(probe(3.01).has_value());

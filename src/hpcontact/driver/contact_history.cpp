@@ -1,0 +1,50 @@
+// Per-step contact figures of every pair, and their CSV.
+#include "hpcontact/driver/contact_history.hpp"
+
+#include <iomanip>
+#include <sstream>
+
+namespace hpcontact::driver {
+
+ContactHistoryRow contact_history_row(int step, const model::NonlinearSolution::PathPoint& at,
+                                      int k, const std::string& body,
+                                      const model::ContactPair& pair,
+                                      const model::ContactResult& result) {
+  ContactHistoryRow r;
+  r.step = step;
+  r.displacement_factor = at.displacements;
+  r.load_factor = at.loads;
+  r.pair = k;
+  r.body = body;
+  r.resultant = result.resultant;
+  r.normal_force = result.resultant.dot(pair.normal());
+  r.tangential_force = result.resultant.dot(pair.tangent);
+  r.contact_length = result.contact_length;
+  r.pressure_max = result.pressure_max;
+  r.traction_max = result.p_max;
+  r.max_penetration = result.max_penetration;
+  for (const auto& s : result.states) {
+    const auto state = contact::contact_state(s);
+    r.contact_points += state != contact::ContactState::open;
+    r.stick_points += state == contact::ContactState::stick;
+    r.slip_points += state == contact::ContactState::slip;
+  }
+  return r;
+}
+
+std::string contact_history_csv(const std::vector<ContactHistoryRow>& rows) {
+  std::ostringstream csv;
+  csv << std::setprecision(12)
+      << "step,displacement_factor,load_factor,pair,body,resultant_x,resultant_y,normal_force,"
+         "tangential_force,contact_length,pressure_max,traction_max,max_penetration,"
+         "contact_points,stick_points,slip_points\n";
+  for (const auto& r : rows)
+    csv << r.step << ',' << r.displacement_factor << ',' << r.load_factor << ',' << r.pair << ','
+        << r.body << ',' << r.resultant.x() << ',' << r.resultant.y() << ',' << r.normal_force << ','
+        << r.tangential_force << ',' << r.contact_length << ',' << r.pressure_max << ','
+        << r.traction_max << ',' << r.max_penetration << ',' << r.contact_points << ','
+        << r.stick_points << ',' << r.slip_points << '\n';
+  return csv.str();
+}
+
+}  // namespace hpcontact::driver
