@@ -4,8 +4,9 @@
 
 usage: plot_contact.py RESULTS_DIR [RESULTS_DIR ...] [--along X|Y|s] [--out FILE.png] [--xlim A B]
 
-One curve per folder: the pressure from the stresses (-n.sigma.n, solid) and the penalty
-traction eps_N <-g_N> (thin), over the undeformed coordinate X (or Y, or s = the arc length
+One curve per folder: the pressure from the stresses (-n.sigma.n, solid) and the column
+`pressure` (thin: the multiplier at the multiplier nodes; with enforcement: penalty the penalty
+traction eps_N <-g_N> at the Gauss points), over the undeformed coordinate X (or Y, or s = the arc length
 along the contact points in file order); below them the gap g_N. Rows of every pair are used in
 file order. --xlim limits the view along the boundary (the gap axis then fits the points inside
 it); a pressure curve that leaves the pressure axis (set by --ylim) is clipped, and the legend
@@ -24,6 +25,17 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from hpc_run import axis_label, read_columns, script_parser, units_of  # noqa: E402
+
+
+def pressure_name(folder):
+    """What contact.csv's `pressure` is: the penalty traction if the run's effective input
+    (input.yaml) enforces contact by the penalty, else the multiplier."""
+    try:
+        with open(os.path.join(folder, "input.yaml")) as f:
+            penalty = any(line.split("#")[0].split() == ["enforcement:", "penalty"] for line in f)
+    except OSError:
+        return "pressure"
+    return "penalty traction" if penalty else "multiplier"
 
 
 def read(folder):
@@ -70,7 +82,7 @@ def main(argv=None):
         name = os.path.basename(os.path.normpath(folder))
         seen = [k for k, x in enumerate(t) if not args.xlim or args.xlim[0] <= x <= args.xlim[1]]
         for column, what, style in (("pressure_from_stress", "from stresses", dict(lw=1.8)),
-                                    ("pressure", "penalty traction", dict(lw=0.7, alpha=0.6))):
+                                    ("pressure", pressure_name(folder), dict(lw=0.7, alpha=0.6))):
             label = f"{name}: {what}"
             if args.ylim and seen:
                 shown = [c[column][k] for k in seen]

@@ -42,7 +42,7 @@ def main(argv):
         print(f"hertz.py: {args.problem} has no contact compare section", file=sys.stderr)
         return 1
     b, p0 = contact["hertz_half_width"], contact["hertz_peak_pressure"]
-    points = result.contact()  # the contact Gauss points of the solve
+    points = result.contact()  # contact.csv: the multiplier nodes (penalty: the Gauss points)
     print(f"{problem.case}: {summary['dofs']} DOF, resultant {contact['resultant'][1]:.1f} N, "
           f"p_max {contact['p_max']:.0f}, half width {contact['half_width']:.4f} "
           f"(Hertz b = {b:.4f}), e_L2 vs Shtayerman {contact['e_L2_shtayerman_percent']:.2f} %")
@@ -54,7 +54,7 @@ def main(argv):
     if "reference" in curve:
         ax.plot(xb, curve["reference"] / p0, color="C2", lw=1.0, label="reference (overkill)")
     ax.plot(points["X"] / b, points["pressure"] / p0, ".", color="0.6", ms=3,
-            label="FE, penalty traction at contact points")
+            label="FE, contact.csv pressure (multiplier at its nodes)")
     ax.plot(xb, curve["pressure_from_stress"] / p0, "C0", lw=1.8, label="FE, from stresses")
     ax.axvline(contact["half_width"] / b, color="C3", lw=0.8, alpha=0.7,
                label="FE end of the contact zone")
