@@ -251,6 +251,10 @@ int collect_command(driver::SlurmStudyOptions& options, bool wait, bool quiet) {
     driver::follow_slurm_study(options);
   }
   const auto outcome = driver::collect_slurm_study(options);
+  if (!wait && !quiet)  // followed rows were printed as they ended
+    for (const auto& row : outcome.rows)
+      if (!row.converged())
+        std::cout << "  FAILED " << printable(row.run.label) << ": " << printable(row.message) << '\n';
   return study_result(outcome.rows, out_dir, quiet);
 }
 

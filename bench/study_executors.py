@@ -39,14 +39,16 @@ def row_seconds(out):
         return [float(r["wall_time_s"]) for r in csv.DictReader(f)]
 
 
-def section(local, slurm, rows, run_mean, repeat, cpu):
+def section(local, slurm, rows, run_mean, repeat, cpu, load):
     per_task = (statistics.median(slurm) - statistics.median(local)) * 2 / rows
     fmt = lambda xs: f"{statistics.median(xs):.2f} s" + (f" ({min(xs):.2f}–{max(xs):.2f})" if len(xs) > 1 else "")
     return "\n".join([
         BEGIN,
         "## Studies: local processes and a Slurm job array (issue 19)",
         "",
-        f"Written by `bench/study_executors.py` on {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}, {cpu}. "
+        f"Written by `bench/study_executors.py` on {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}, {cpu}, "
+        f"load average at start {', '.join(f'{x:.1f}' for x in load)} (other work on the machine slows "
+        "both executors alike). "
         f"The {rows}-row study `bench/hertz-24.yaml` (Hertz p-version, degrees 2–9 at three loads; one "
         f"run takes {run_mean * 1000:.0f} ms on average, its own `wall_time_s`) from the command to the "
         f"written study.csv, the median of {repeat} (range in brackets): locally with `--jobs 2`, and "
@@ -60,9 +62,11 @@ def section(local, slurm, rows, run_mean, repeat, cpu):
         f"| Slurm job array, 2 CPUs | {fmt(slurm)} | {statistics.median(slurm) / rows * 1000:.0f} ms |",
         "",
         f"The scheduler's overhead per task, (Slurm − local) × 2 CPUs / {rows} rows: "
-        f"**{per_task:.2f} s** of a CPU slot — the task's start by slurmd and slurmstepd, its end, and "
-        "the follower's polling interval (up to 2 s at the end). A row of a study on a cluster should "
-        "run much longer than that; the rows here are short, so the local executor is the faster one.",
+        f"**{per_task:.2f} s** of a CPU slot. Most of it is waiting for the scheduler: slurmctld starts "
+        "pending array tasks in its scheduling passes, 0–3 s after a CPU frees (its log shows the "
+        "allocations in waves), not at once; then the start by slurmd and slurmstepd, and the "
+        "follower's polling interval (up to 2 s at the end). A row of a study on a cluster should run "
+        "much longer than that; with rows this short the local executor is the faster one.",
         END,
         ""])
 
@@ -97,6 +101,7 @@ def main():
                         help="the file whose section is replaced (default BENCHMARKS.md)")
     args = parser.parse_args()
     exe = os.path.abspath(args.hpcontact)
+    load = os.getloadavg()
     require_slurm()
     folder = tempfile.mkdtemp(prefix="hpcontact-bench-slurm-")
     c = boot(folder)
@@ -114,7 +119,7 @@ def main():
             c.cancel_all()
         finally:
             c.stop()
-    text = section(local, slurm, 24, statistics.mean(runs), args.repeat, cpu_name())
+    text = section(local, slurm, 24, statistics.mean(runs), args.repeat, cpu_name(), load)
     replace_section(args.output, text)
     shutil.rmtree(folder, ignore_errors=True)
     print(text)

@@ -4,7 +4,7 @@ generated slurm.conf (no systemd, no cgroups: proctrack/linuxproc, task/none; au
 munged), state, spool and logs in a private temporary folder, free ports, every wait bounded.
 The daemons are stopped by their process ids when the session ends, whatever the tests did; a
 daemon that does not start fails the tests with its log."""
-import getpass
+import pwd
 import os
 import shutil
 import socket
@@ -122,7 +122,7 @@ class Cluster:
 
     def cancel_all(self):
         """Cancels every job of the cluster and waits (bounded) for the queue to empty."""
-        self.run("scancel", "--full", "--user", getpass.getuser(), check=False)
+        self.run("scancel", "--full", "--user", pwd.getpwuid(os.getuid()).pw_name, check=False)
         deadline = time.monotonic() + STOP_SECONDS
         while time.monotonic() < deadline:
             r = self.run("squeue", "-h", "-o", "%i", check=False)
@@ -157,7 +157,7 @@ def boot(folder, extra_conf=""):
         os.makedirs(os.path.join(folder, sub), exist_ok=True)
     c = Cluster(folder)
     with open(c.conf, "w") as f:
-        f.write(slurm_conf(folder, c.node, getpass.getuser(), free_port(), free_port()) + extra_conf)
+        f.write(slurm_conf(folder, c.node, pwd.getpwuid(os.getuid()).pw_name, free_port(), free_port()) + extra_conf)
     return c
 
 

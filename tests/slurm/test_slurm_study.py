@@ -57,6 +57,7 @@ def test_slurm_study_gives_the_local_table(exe, cluster, tmp_path):
                   "--partition", "debug", "--time", "5", "--cpus-per-task", "1")
     assert r.returncode == 0, r.stdout + r.stderr + cluster.logs()
     assert "6 of 6 runs converged" in r.stdout
+    assert "warning" not in r.stdout  # the one node is this machine (127.0.0.1)
     r = hpcontact(exe, cluster, "study", study, "--out", local, "--jobs", "2")
     assert r.returncode == 0, r.stdout + r.stderr
     slurm_rows, local_rows = table(on_slurm), table(local)
@@ -127,6 +128,10 @@ runs:
     rows = {r["label"]: r for r in table(out)}
     assert rows["fast-a"]["converged"] == rows["fast-b"]["converged"] == "true"
     assert rows["slow"]["converged"] == "false" and "CANCELLED" in rows["slow"]["message"]
+    r = hpcontact(exe, cluster, "study", "--collect", out)  # later, without following
+    assert r.returncode == 1
+    assert f"FAILED slow: array task {job}_1 ended CANCELLED" in r.stdout, r.stdout
+    assert "2 of 3 runs converged" in r.stdout
 
     r = hpcontact(exe, cluster, "study", study, "--executor", "slurm", "--out", out, "--wait")
     assert r.returncode == 0, r.stdout + r.stderr + cluster.logs()

@@ -252,7 +252,7 @@ void warn_if_local(const std::string& out, const SlurmOptions& slurm,
   const auto kind = local.find(static_cast<long>(fs_info.f_type));
   const std::string sinfo = find_on_path("sinfo");
   if (kind == local.end() || sinfo.empty()) return;
-  std::vector<std::string> argv = {sinfo, "-h", "-o", "%n"};
+  std::vector<std::string> argv = {sinfo, "-h", "-o", "%n %o"};
   if (!slurm.partition.empty()) argv.insert(argv.end(), {"-p", slurm.partition});
   const auto nodes = run_captured(argv, 30);
   char host[256] = {};
@@ -260,8 +260,10 @@ void warn_if_local(const std::string& out, const SlurmOptions& slurm,
   const std::string self = std::string(host).substr(0, std::string(host).find('.'));
   std::stringstream lines(nodes.out);
   std::vector<std::string> others;
-  for (std::string n; std::getline(lines, n);)
-    if (!n.empty() && n != self && n != "localhost") others.push_back(n);
+  // A node is this machine by its name or its address (a one-node cluster on localhost).
+  for (std::string name, address; lines >> name >> address;)
+    if (name != self && address != self && address != "localhost" && address.rfind("127.", 0) != 0)
+      others.push_back(name);
   if (!others.empty())
     note("warning: " + out + " is on a local file system (" + kind->second + ") of " + self +
          ", and the partition has other nodes (" + join(others, ", ") +
@@ -453,9 +455,12 @@ StudyOutcome collect_slurm_study(const SlurmStudyOptions& options) {
   }
   // The submission stays: the folder's files are replaced by what is staged.
   fs::create_directories(stage + "/slurm");
-  for (const char* file : {kRecord, kScript})
-    post::write_text_file(stage + "/" + file,
-                          io::read_bounded_file(out + "/" + file, "submission file", kMaxLogBytes, false));
+  for (const char* file : {kRecord, kScript}) {
+    std::error_code ec;
+    if (fs::exists(out + "/" + file, ec))
+      post::write_text_file(stage + "/" + file,
+                            io::read_bounded_file(out + "/" + file, "submission file", kMaxLogBytes, false));
+  }
   write_study_tables(study, outcome.rows, stage);
   options.folder->commit();
   return outcome;
