@@ -1,6 +1,5 @@
-// Submitting a study as a job array, following it and collecting its rows. What was submitted is
-// recorded in OUT/slurm/submission.json (the study's rows, and per submission the job id and its
-// rows), so that --collect and a resubmission need nothing but the folder.
+// Submitting a study as a job array, following it and collecting its rows; what was submitted is
+// recorded in OUT/slurm/submission.json (slurm_record.hpp).
 #include "hpcontact/driver/slurm_study.hpp"
 
 #include <sys/vfs.h>
@@ -22,6 +21,7 @@
 #include "hpcontact/driver/command.hpp"
 #include "hpcontact/driver/contact_compare.hpp"
 #include "hpcontact/driver/slurm_queue.hpp"
+#include "hpcontact/driver/slurm_record.hpp"
 #include "hpcontact/io/problem_reader.hpp"
 #include "hpcontact/io/text_file.hpp"
 #include "hpcontact/post/output_file.hpp"
@@ -33,7 +33,6 @@ using nlohmann::json;
 
 namespace {
 
-const char* const kRecord = "slurm/submission.json";
 const char* const kScript = "slurm/array.sh";
 /// A task's log is copied into its row's log.txt; a run at -q prints a few lines.
 constexpr std::size_t kMaxLogBytes = 16u << 20;
@@ -60,77 +59,6 @@ std::string now_utc() {
   char text[32];
   std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
   return text;
-}
-
-json study_to_json(const io::StudySpec& study) {
-  json runs = json::array();
-  for (const auto& r : study.runs) {
-    json seed = json::array();
-    for (const auto& [k, v] : r.seed) seed.push_back({k, v});
-    runs.push_back({{"label", r.label}, {"case", r.case_file}, {"set", r.sets}, {"seed", seed}});
-  }
-  return {{"file", study.file}, {"name", study.name}, {"title", study.title},
-          {"columns", study.columns}, {"runs", runs}};
-}
-
-io::StudySpec study_from_json(const json& j) {
-  io::StudySpec study;
-  study.file = j.at("file").get<std::string>();
-  study.name = j.at("name").get<std::string>();
-  study.title = j.at("title").get<std::string>();
-  study.columns = j.at("columns").get<std::vector<std::string>>();
-  for (const auto& r : j.at("runs")) {
-    io::StudyRun run;
-    run.label = r.at("label").get<std::string>();
-    run.case_file = r.at("case").get<std::string>();
-    run.sets = r.at("set").get<std::vector<std::string>>();
-    for (const auto& s : r.at("seed")) run.seed.emplace_back(s.at(0).get<std::string>(), s.at(1).get<double>());
-    study.runs.push_back(std::move(run));
-  }
-  return study;
-}
-
-/// OUT/slurm/submission.json, or null if there is none.
-json read_record(const std::string& out) {
-  const std::string path = out + "/" + kRecord;
-  std::error_code ec;
-  if (!fs::exists(path, ec)) return nullptr;
-  json record = json::parse(io::read_bounded_file(path, "submission record", kMaxLogBytes, false),
-                            nullptr, false);
-  HPC_REQUIRE(record.is_object() && record.contains("study") && record.contains("submissions"),
-              IoError, path, ": not a submission record of hpcontact study --executor slurm; "
-              "the file was edited: remove the folder's slurm/ and submit again");
-  return record;
-}
-
-/// The submissions of a record that reached the scheduler (a job id), oldest first.
-std::vector<json> submitted(const json& record) {
-  std::vector<json> out;
-  for (const auto& s : record.at("submissions"))
-    if (!s.value("job_id", std::string()).empty()) out.push_back(s);
-  return out;
-}
-
-struct TaskRef {
-  std::string job_id;
-  int index = 0;
-};
-
-/// The last submitted task of row `row`, if any.
-std::optional<TaskRef> latest_task(const json& record, int row) {
-  std::optional<TaskRef> task;
-  for (const auto& s : submitted(record))
-    for (const auto& r : s.at("rows"))
-      if (r.get<int>() == row) task = TaskRef{s.at("job_id").get<std::string>(), row};
-  return task;
-}
-
-/// Whether a submission found row `row` complete (a successful run of its input) and left it out.
-bool listed_complete(const json& record, int row) {
-  for (const auto& s : submitted(record))
-    for (const auto& r : s.value("complete", json::array()))
-      if (r.get<int>() == row) return true;
-  return false;
 }
 
 /// The task's last line "hpcontact-task: exit CODE after SECONDS s", if its log has one.
@@ -396,7 +324,7 @@ SlurmSubmission submit_slurm_study(const io::StudySpec& study, const SlurmStudyO
 void follow_slurm_study(const SlurmStudyOptions& options) {
   const std::string out = absolute_folder(*options.folder);
   const json record = read_record(out);
-  HPC_REQUIRE(record.is_object(), IoError, out, ": no Slurm submission to follow (no ", kRecord, ")");
+  HPC_REQUIRE(record.is_object(), IoError, out, ": no Slurm submission to follow (no ", kSubmissionRecord, ")");
   const io::StudySpec study = study_from_json(record.at("study"));
   const auto jobs = submitted(record);
   if (jobs.empty()) return;
@@ -435,7 +363,7 @@ void follow_slurm_study(const SlurmStudyOptions& options) {
 StudyOutcome collect_slurm_study(const SlurmStudyOptions& options) {
   const std::string out = absolute_folder(*options.folder);
   const json record = read_record(out);
-  HPC_REQUIRE(record.is_object(), IoError, out, ": no Slurm submission here (no ", kRecord,
+  HPC_REQUIRE(record.is_object(), IoError, out, ": no Slurm submission here (no ", kSubmissionRecord,
               "): submit one with hpcontact study FILE --executor slurm --out ", out);
   const io::StudySpec study = study_from_json(record.at("study"));
   const std::string stage = options.folder->begin();
@@ -455,7 +383,7 @@ StudyOutcome collect_slurm_study(const SlurmStudyOptions& options) {
   }
   // The submission stays: the folder's files are replaced by what is staged.
   fs::create_directories(stage + "/slurm");
-  for (const char* file : {kRecord, kScript}) {
+  for (const char* file : {kSubmissionRecord, kScript}) {
     std::error_code ec;
     if (fs::exists(out + "/" + file, ec))
       post::write_text_file(stage + "/" + file,

@@ -1,5 +1,5 @@
 // The Slurm executor's pure parts: array specifications, scontrol's and sacct's records, the
-// batch script's quoting and content, and running a short command.
+// batch script's quoting and content, the submission record, and running a short command.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -8,6 +8,7 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/driver/command.hpp"
 #include "hpcontact/driver/slurm_queue.hpp"
+#include "hpcontact/driver/slurm_record.hpp"
 #include "hpcontact/driver/slurm_script.hpp"
 
 using namespace hpcontact;
@@ -98,4 +99,29 @@ TEST(Command, RunsAndCaptures) {
   EXPECT_TRUE(slow.timed_out);
   EXPECT_EQ(find_on_path("no-such-command-hpcontact"), "");
   EXPECT_THROW(run_captured({"/no/such/program"}, 1), IoError);
+}
+
+// The record keeps the study's rows as they were, and says which task ran a row last.
+TEST(SlurmRecord, RowsAndTasks) {
+  io::StudySpec study;
+  study.file = "s.yaml";
+  study.name = "s";
+  study.columns = {"contact.half_width"};
+  study.runs = {{"a", "a.yaml", {"x=1"}, {{"dofs", 710}}}, {"b", "b.yaml", {}, {}}};
+  const auto back = study_from_json(study_to_json(study));
+  ASSERT_EQ(back.runs.size(), 2u);
+  EXPECT_EQ(back.runs[0].sets, study.runs[0].sets);
+  EXPECT_EQ(back.runs[0].seed, study.runs[0].seed);
+  EXPECT_EQ(back.columns, study.columns);
+  const nlohmann::json record = {
+      {"study", study_to_json(study)},
+      {"submissions", {{{"job_id", "7"}, {"rows", {0, 1}}, {"complete", nlohmann::json::array()}},
+                       {{"job_id", "9"}, {"rows", {1}}, {"complete", {0}}},
+                       {{"job_id", ""}, {"rows", {0}}, {"complete", nlohmann::json::array()}}}}};
+  EXPECT_EQ(submitted(record).size(), 2u);  // the last never reached sbatch
+  EXPECT_EQ(latest_task(record, 0)->job_id, "7");
+  EXPECT_EQ(latest_task(record, 1)->job_id, "9");
+  EXPECT_FALSE(latest_task(record, 2));
+  EXPECT_TRUE(listed_complete(record, 0));
+  EXPECT_FALSE(listed_complete(record, 1));
 }
