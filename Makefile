@@ -3,7 +3,7 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 PYTHON := /usr/bin/python3
 
-.PHONY: deps configure build program run test test-all test-sanitize fuzz bench install deb clean
+.PHONY: deps configure build program run test test-all test-sanitize fuzz bench bench-slurm install deb clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -58,6 +58,11 @@ fuzz:
 
 bench: build
 	@bash bench/run.sh
+
+# The 24-row study locally (--jobs 2) and as a Slurm job array on a private one-node cluster:
+# BENCHMARKS.md's section "Studies: local processes and a Slurm job array" (about 2 minutes).
+bench-slurm: build
+	@$(PYTHON) bench/study_executors.py --hpcontact $(BUILD_DIR)/hpcontact
 
 # Installs the program, library, CMake package, Python module, scripts and docs under PREFIX.
 PREFIX ?= /usr/local

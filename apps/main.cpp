@@ -9,6 +9,7 @@
 #include <cstring>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <new>
@@ -23,6 +24,7 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/driver/contact_compare.hpp"
 #include "hpcontact/driver/run.hpp"
+#include "hpcontact/driver/slurm_study.hpp"
 #include "hpcontact/driver/study.hpp"
 #include "hpcontact/io/input_schema.hpp"
 #include "hpcontact/io/problem_reader.hpp"
@@ -185,6 +187,48 @@ std::string this_program(const char* argv0) {
   return ec ? std::filesystem::absolute(argv0).string() : self.string();
 }
 
+/// Prints a line per finished row, with a progress bar on a terminal ("ok"/"FAILED", the
+/// row's time, a failed row's message), and counts the failed rows.
+class StudyProgress {
+ public:
+  explicit StudyProgress(bool quiet) : quiet_(quiet), bar_(!quiet && isatty(STDOUT_FILENO)) {}
+  void operator()(const driver::StudyRowResult& row, int done, int total) {
+    failed_ += !row.converged();
+    if (quiet_) return;
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    std::ostringstream line;
+    line << (row.converged() ? "ok     " : "FAILED ") << printable(row.run.label) << " ("
+         << std::setprecision(3) << row.seconds << " s)";
+    if (!row.converged()) line << ": " << printable(row.message);
+    if (bar_) {
+      const int width = 30, filled = width * done / total;
+      std::cout << "\r\033[K" << line.str() << "\n[" << std::string(filled, '#')
+                << std::string(width - filled, '.') << "] " << done << "/" << total << ", "
+                << failed_ << " failed, " << std::setprecision(3) << t << " s" << std::flush;
+      if (done == total) std::cout << '\n';
+    } else {
+      std::cout << "  [" << done << "/" << total << "] " << line.str() << '\n';
+    }
+  }
+
+ private:
+  bool quiet_, bar_;
+  int failed_ = 0;
+  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+};
+
+/// The closing line of a study: how many rows converged and where the tables are; the exit code.
+int study_result(const std::vector<driver::StudyRowResult>& rows, const std::string& out_dir,
+                 bool quiet) {
+  const auto converged = std::count_if(rows.begin(), rows.end(),
+                                       [](const driver::StudyRowResult& r) { return r.converged(); });
+  if (!quiet)
+    std::cout << "  " << converged << " of " << rows.size() << " runs converged; table in "
+              << out_dir << "/study.csv, summaries in " << out_dir << "/study.json, runs in "
+              << out_dir << "/runs/\n";
+  return converged == static_cast<long>(rows.size()) ? 0 : kFailed;
+}
+
 int study_command(const std::string& file, std::string out_dir, int jobs, bool quiet,
                   const char* argv0) {
   out_dir = output_folder(out_dir, file);
@@ -194,30 +238,11 @@ int study_command(const std::string& file, std::string out_dir, int jobs, bool q
   options.program = this_program(argv0);
   options.folder = &folder;
   options.jobs = jobs > 0 ? jobs : std::max(1u, std::thread::hardware_concurrency());
-  const bool bar = !quiet && isatty(STDOUT_FILENO);
-  const auto t0 = std::chrono::steady_clock::now();
-  int failed = 0;
   if (!quiet)
     std::cout << "hpcontact: study " << printable(file) << " ('" << printable(study.name) << "'): " << study.runs.size()
               << " runs, " << options.jobs << " at a time, into " << out_dir << "/\n";
-  options.finished = [&](const driver::StudyRowResult& row, int done, int total) {
-    failed += !row.converged();
-    if (quiet) return;
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::ostringstream line;
-    line << (row.converged() ? "ok     " : "FAILED ") << printable(row.run.label) << " (" << std::setprecision(3)
-         << row.seconds << " s)";
-    if (!row.converged()) line << ": " << printable(row.message);
-    if (bar) {
-      const int width = 30, filled = width * done / total;
-      std::cout << "\r\033[K" << line.str() << "\n[" << std::string(filled, '#')
-                << std::string(width - filled, '.') << "] " << done << "/" << total << ", "
-                << failed << " failed, " << std::setprecision(3) << t << " s" << std::flush;
-      if (done == total) std::cout << '\n';
-    } else {
-      std::cout << "  [" << done << "/" << total << "] " << line.str() << '\n';
-    }
-  };
+  StudyProgress progress(quiet);
+  options.finished = std::ref(progress);
   const auto outcome = driver::run_study(study, options);
   if (outcome.signal) {
     // The runs were stopped and waited for; the study ends by the signal it was sent.
@@ -227,12 +252,54 @@ int study_command(const std::string& file, std::string out_dir, int jobs, bool q
     std::raise(outcome.signal);
     return kFailed;
   }
-  const auto& rows = outcome.rows;
+  return study_result(outcome.rows, out_dir, quiet);
+}
+
+/// `study --collect DIR [--wait]`, and the end of `study FILE --executor slurm --wait`: follows
+/// the last submission if asked, then builds the tables from the runs as they are.
+int collect_command(driver::SlurmStudyOptions& options, bool wait, bool quiet) {
+  const std::string out_dir = options.folder->target();
+  StudyProgress progress(quiet);
+  options.finished = std::ref(progress);
+  if (wait) {
+    if (!quiet)
+      std::cout << "  following the job (Ctrl-C stops following, not the job: hpcontact study "
+                   "--collect " << printable(out_dir) << " collects later)\n";
+    driver::follow_slurm_study(options);
+  }
+  const auto outcome = driver::collect_slurm_study(options);
+  if (!wait && !quiet)  // followed rows were printed as they ended
+    for (const auto& row : outcome.rows)
+      if (!row.converged())
+        std::cout << "  FAILED " << printable(row.run.label) << ": " << printable(row.message) << '\n';
+  return study_result(outcome.rows, out_dir, quiet);
+}
+
+int slurm_study_command(const std::string& file, std::string out_dir,
+                        const driver::SlurmOptions& slurm, bool wait, bool quiet, const char* argv0) {
+  out_dir = output_folder(out_dir, file);
+  driver::require_slurm_client(out_dir);  // before the output folder is made
+  driver::OutputFolder folder(out_dir, driver::study_layout(), {{file, "the study file"}});
+  const auto study = io::read_study(file);
+  driver::SlurmStudyOptions options;
+  options.program = this_program(argv0);
+  options.folder = &folder;
+  options.slurm = slurm;
+  options.note = [quiet](const std::string& line) {
+    if (!quiet || line.rfind("warning", 0) == 0) std::cout << "  " << printable(line) << '\n';
+  };
   if (!quiet)
-    std::cout << "  " << rows.size() - failed << " of " << rows.size() << " runs converged; table in "
-              << out_dir << "/study.csv, summaries in " << out_dir << "/study.json, runs in "
-              << out_dir << "/runs/\n";
-  return failed == 0 ? 0 : kFailed;
+    std::cout << "hpcontact: study " << printable(file) << " ('" << printable(study.name) << "'): "
+              << study.runs.size() << " runs on Slurm, into " << out_dir << "/\n";
+  const auto submission = driver::submit_slurm_study(study, options);
+  if (!wait) {
+    if (!quiet && !submission.job_id.empty())
+      std::cout << "  squeue -j " << submission.job_id << " shows it; when it has ended: hpcontact study --collect "
+                << printable(out_dir) << '\n';
+    if (submission.job_id.empty()) return collect_command(options, false, quiet);
+    return 0;
+  }
+  return collect_command(options, !submission.job_id.empty(), quiet);
 }
 
 }  // namespace
@@ -265,11 +332,26 @@ int main(int argc, char** argv) {
   int jobs = 0;
   auto* study = app.add_subcommand(
       "study", "run every case of a study file (rows or a sweep), in parallel, into one table");
-  study->add_option("study", study_file, "study file (YAML)")->required()->check(CLI::ExistingFile);
+  study->add_option("study", study_file, "study file (YAML)")->check(CLI::ExistingFile);
   study->add_option("--out,-o", out_dir, "output folder (default results/<study file name>)");
   study->add_option("--jobs,-j", jobs, "runs at a time (default: the machine's cores)")
       ->check(CLI::NonNegativeNumber);
   study->add_flag("--quiet,-q", quiet, "print nothing but errors");
+  std::string executor = "local", collect_dir;
+  driver::SlurmOptions slurm;
+  bool wait = false;
+  study->add_option("--executor", executor, "local (processes on this machine) or slurm (a job array)")
+      ->check(CLI::IsMember({"local", "slurm"}));
+  auto* partition = study->add_option("--partition", slurm.partition, "slurm: the partition (default: the cluster's)");
+  auto* time_limit = study->add_option("--time", slurm.time, "slurm: time limit per task, as sbatch --time");
+  auto* cpus = study->add_option("--cpus-per-task", slurm.cpus_per_task,
+                                 "slurm: CPUs per task (and the run's threads; default 1)")
+                   ->check(CLI::PositiveNumber);
+  auto* sbatch_options = study->add_option("--sbatch-option", slurm.sbatch_options,
+                                           "slurm: one more option for sbatch, as --sbatch-option=--mem=2G (repeatable)");
+  auto* wait_flag = study->add_flag("--wait", wait, "slurm: follow the job until every task has ended, then collect");
+  auto* collect = study->add_option("--collect", collect_dir,
+                                    "build study.csv and study.json in DIR from its Slurm runs (after the job, or a part of it)");
 
   try {
     app.parse(argc, argv);
@@ -301,11 +383,32 @@ int main(int argc, char** argv) {
       }
     }
     if (*check) return check_command(file, sets);
-    if (*study) return study_command(study_file, out_dir, jobs, quiet, argv[0]);
+    if (*study) {
+      const bool on_slurm = executor == "slurm";
+      if (!collect->empty()) {
+        if (!study_file.empty() || !out_dir.empty() || on_slurm || *partition || *time_limit || *cpus || *sbatch_options)
+          throw CommandLineError("--collect DIR takes no study file, --out or submission options (only --wait, -q)");
+        HPC_REQUIRE(std::filesystem::is_directory(collect_dir), IoError, collect_dir,
+                    ": no such folder (--collect takes the --out folder of a study submitted with "
+                    "--executor slurm)");
+        driver::OutputFolder folder(collect_dir, driver::study_layout());
+        driver::SlurmStudyOptions options;
+        options.folder = &folder;
+        return collect_command(options, wait, quiet);
+      }
+      if (study_file.empty()) throw CommandLineError("study: give a study file (or --collect DIR)");
+      if (!on_slurm) {
+        for (const auto* o : {partition, time_limit, cpus, sbatch_options, wait_flag})
+          if (*o) throw CommandLineError(o->get_name() + ": only with --executor slurm");
+        return study_command(study_file, out_dir, jobs, quiet, argv[0]);
+      }
+      if (jobs > 0) throw CommandLineError("--jobs: not with --executor slurm (the scheduler runs the tasks)");
+      return slurm_study_command(study_file, out_dir, slurm, wait, quiet, argv[0]);
+    }
     std::cerr << "hpcontact: no sub-command given\n\n" << app.help();
     return 2;
   } catch (const CommandLineError& e) {
-    std::cerr << "hpcontact: error: " << printable(e.what()) << "\n\n" << (*run ? run : check)->help();
+    std::cerr << "hpcontact: error: " << printable(e.what()) << "\n\n" << (*run ? run : *study ? study : check)->help();
     return 2;
   } catch (const Error& e) {
     std::cerr << "hpcontact: error: " << printable(e.what()) << '\n';

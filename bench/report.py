@@ -4,6 +4,7 @@ import datetime
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import textwrap
@@ -388,8 +389,19 @@ def main(results_path, output_path):
         "",
     ]
     lines += element_section(runs) + [""] + solve_section(runs) + [""] + enforcement_section(runs) + [""] + contact_section(runs) + [""] + adapt_section(runs) + [""] + nonlinear_section(runs) + [""]
+    lines += kept_sections(output_path)
     with open(output_path, "w", encoding="utf-8") as f:
         f.write("\n".join(lines))
+
+
+def kept_sections(path):
+    """The sections of the old file that other scripts write (between "<!-- kept: NAME -->" and
+    "<!-- /kept: NAME -->", e.g. bench/study_executors.py's), as lines to keep at the end."""
+    if not os.path.exists(path):
+        return []
+    text = open(path, encoding="utf-8").read()
+    kept = re.findall(r"(<!-- kept: ([\w-]+) -->.*?<!-- /kept: \2 -->)", text, flags=re.S)
+    return [line for block, _ in kept for line in block.split("\n") + [""]]
 
 
 if __name__ == "__main__":

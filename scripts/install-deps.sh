@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages hpcontact needs, if any is missing (apt-get; root or sudo).
-#   install-deps.sh         what the build, `make run` and `make test` need
+#   install-deps.sh         what the build, `make run` and `make test` need (Slurm's daemons and
+#                           client for the test of `hpcontact study --executor slurm`, which
+#                           starts its own private cluster: the packages' services stay unused)
 #   install-deps.sh fuzz    and clang's libFuzzer for `make fuzz`
 set -euo pipefail
 
@@ -10,6 +12,7 @@ packages=(
   nlohmann-json3-dev libgtest-dev libbenchmark-dev
   python3 python3-dev python3-numpy python3-matplotlib python3-pytest python3-yaml pybind11-dev
   gmsh
+  slurmctld slurmd slurm-client
 )
 
 if [ "${1:-}" = fuzz ]; then

@@ -188,8 +188,10 @@ OutputFolder::OutputFolder(std::string target, FolderLayout layout, const std::v
 }
 
 const std::string& OutputFolder::begin() {
-  HPC_REQUIRE(staging_name_.empty(), IoError, target_, ": the output folder was begun twice");
+  HPC_REQUIRE(staging_name_.empty() || committed_, IoError, target_,
+              ": the output folder was begun twice");
   refuse_foreign_files(dir_, "");
+  committed_ = false;
   std::string name = target_ + "/" + kStagingPrefix + "XXXXXX";
   HPC_REQUIRE(::mkdtemp(name.data()), IoError, target_, ": cannot create a staging folder: ",
               system_error());

@@ -53,7 +53,8 @@ public:
   const std::string& target() const { return target_; }
   /// Refuses the folder if a file or link is where an output goes and is not ours, then creates
   /// the staging folder and returns its path: the folder to write into, whose files become the
-  /// target's at commit. Called once, when the inputs are known and checked.
+  /// target's at commit. Called when the inputs are known and checked; again only after a
+  /// commit (a study on Slurm commits its submission, then its tables).
   const std::string& begin();
 
   /// The run succeeded: the manifest's files are replaced by the staged ones (the files it lists

@@ -11,13 +11,11 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -25,7 +23,7 @@
 #include <thread>
 
 #include "hpcontact/core/error.hpp"
-#include "hpcontact/post/output_file.hpp"
+#include "hpcontact/driver/study_table.hpp"
 
 extern char** environ;
 
@@ -34,27 +32,6 @@ namespace hpcontact::driver {
 namespace fs = std::filesystem;
 
 namespace {
-
-/// A folder name from a label: letters, digits, '-', '.', '=' kept, the rest '_'.
-std::string folder_name(int index, const std::string& label) {
-  std::ostringstream os;
-  os << std::setw(2) << std::setfill('0') << index + 1 << '-';
-  for (char c : label) os << (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' || c == '=' ? c : '_');
-  return os.str();
-}
-
-/// The run's error line (the last "hpcontact: error: ..." line, without that prefix), else the
-/// last non-empty line of its log ("" if none).
-std::string error_line(const fs::path& file) {
-  const std::string prefix = "hpcontact: error: ";
-  std::ifstream in(file);
-  std::string line, last, error;
-  while (std::getline(in, line)) {
-    if (!line.empty()) last = line;
-    if (line.rfind(prefix, 0) == 0) error = line.substr(prefix.size());
-  }
-  return error.empty() ? last : error;
-}
 
 /// While it lives, SIGINT and SIGTERM are blocked in the calling thread and the threads it
 /// starts, and a watcher thread takes them: it records the signal and passes it on to every run
@@ -157,121 +134,14 @@ std::optional<int> run_process(const std::vector<std::string>& argv, const fs::p
   return WEXITSTATUS(status);
 }
 
-/// The value at a dotted path of a JSON object ("contact.half_width"), or null.
-const nlohmann::json* at_path(const nlohmann::json& j, const std::string& path) {
-  const nlohmann::json* node = &j;
-  std::size_t start = 0;
-  while (start <= path.size()) {
-    const std::size_t dot = path.find('.', start);
-    const std::string key = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (!node->is_object() || !node->contains(key)) return nullptr;
-    node = &(*node)[key];
-    if (dot == std::string::npos) break;
-    start = dot + 1;
-  }
-  return node;
-}
-
-std::string csv_field(std::string s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-  return q + "\"";
-}
-
-std::string json_cell(const nlohmann::json* v) {
-  if (!v || v->is_null()) return "";
-  if (v->is_number_float()) {
-    std::ostringstream os;
-    os << std::setprecision(12) << v->get<double>();
-    return os.str();
-  }
-  if (v->is_string()) return v->get<std::string>();
-  return v->dump();
-}
-
-// Summary keys shown when any row has them, in this order.
-const char* const kMeasures[] = {
-    "contact.resultant",           "contact.half_width",
-    "contact.p_max",               "contact.max_penetration",
-    "contact.e_seed_hertz_percent", "contact.e_seed_shtayerman_percent",
-    "contact.e_L2_hertz_percent",  "contact.e_L2_shtayerman_percent",
-    "contact.e_L2_reference_percent", "error.energy_rel_percent",
-    "error.energy_norm_rel_percent"};
-
-void write_tables(const io::StudySpec& study, const std::vector<StudyRowResult>& rows,
-                  const std::string& out_dir) {
-  const auto columns = study_columns(study, rows);
-  std::ostringstream csv;
-  for (std::size_t c = 0; c < columns.size(); ++c) csv << (c ? "," : "") << columns[c];
-  csv << '\n';
-  nlohmann::json all = nlohmann::json::array();
-  for (const auto& row : rows) {
-    nlohmann::json j = {{"label", row.run.label}, {"case", row.run.case_file},
-                        {"set", row.run.sets}, {"run_dir", row.run_dir},
-                        {"exit_code", row.exit_code}, {"converged", row.converged()},
-                        {"seconds", row.seconds}};
-    if (!row.converged()) j["message"] = row.message;
-    if (row.summary.is_object()) j["summary"] = row.summary;
-    for (const auto& [k, v] : row.run.seed) j["seed"][k] = v;
-    all.push_back(j);
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      const std::string& col = columns[c];
-      std::string cell;
-      if (col == "label") cell = row.run.label;
-      else if (col == "case") cell = row.run.case_file;
-      else if (col == "converged") cell = row.converged() ? "true" : "false";
-      else if (col == "message") cell = row.converged() ? "" : row.message;
-      else if (col == "run_dir") cell = row.run_dir;
-      else if (col.rfind("seed_", 0) == 0) {
-        for (const auto& [k, v] : row.run.seed)
-          if ("seed_" + k == col) {
-            std::ostringstream os;
-            os << std::setprecision(12) << v;
-            cell = os.str();
-          }
-      } else if (row.summary.is_object()) {
-        cell = json_cell(at_path(row.summary, col));
-      }
-      csv << (c ? "," : "") << csv_field(cell);
-    }
-    csv << '\n';
-  }
-  post::write_text_file((fs::path(out_dir) / "study.csv").string(), csv.str());
-  nlohmann::json doc = {{"study", study.name}, {"file", study.file}, {"runs", all}};
-  if (!study.title.empty()) doc["title"] = study.title;
-  post::write_text_file((fs::path(out_dir) / "study.json").string(), doc.dump(2) + "\n");
-}
-
 }  // namespace
-
-std::vector<std::string> study_columns(const io::StudySpec& study,
-                                       const std::vector<StudyRowResult>& rows) {
-  std::vector<std::string> cols = {"label", "case", "converged", "dofs", "wall_time_s",
-                                   "strain_energy", "load_steps", "newton_iterations"};
-  auto any_has = [&](const std::string& key) {
-    return std::any_of(rows.begin(), rows.end(), [&](const StudyRowResult& r) {
-      return r.summary.is_object() && at_path(r.summary, key) != nullptr;
-    });
-  };
-  for (const char* m : kMeasures)
-    if (any_has(m)) cols.push_back(m);
-  for (const auto& c : study.columns)
-    if (std::find(cols.begin(), cols.end(), c) == cols.end()) cols.push_back(c);
-  std::set<std::string> seen;
-  for (const auto& r : study.runs)
-    for (const auto& [k, v] : r.seed)
-      if (seen.insert(k).second) cols.push_back("seed_" + k);
-  cols.push_back("message");
-  cols.push_back("run_dir");
-  return cols;
-}
 
 namespace {
 
 bool study_output(const std::string& relative, bool folder) {
   if (relative == "study.csv" || relative == "study.json") return !folder;
-  if (relative == "runs") return folder;
+  if (relative == "slurm/submission.json" || relative == "slurm/array.sh") return !folder;
+  if (relative == "runs" || relative == "slurm") return folder;
   if (relative.rfind("runs/", 0) != 0) return false;
   const std::string rest = relative.substr(5);
   const auto slash = rest.find('/');
@@ -299,7 +169,7 @@ StudyOutcome run_study(const io::StudySpec& study, const StudyOptions& options) 
   rows.resize(total);
   std::vector<fs::path> logs(total);
   for (int i = 0; i < total; ++i) {
-    const std::string name = folder_name(i, study.runs[i].label);
+    const std::string name = row_folder_name(i, study.runs[i].label);
     rows[i].run = study.runs[i];
     rows[i].run_dir = (target / "runs" / name).string();
     logs[i] = stage / "runs" / name / "log.txt";
@@ -325,14 +195,9 @@ StudyOutcome run_study(const io::StudySpec& study, const StudyOptions& options) 
         if (!code) break;
         row.exit_code = *code;
         row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        const fs::path summary = fs::path(row.run_dir) / "summary.json";
-        if (row.exit_code == 0 && fs::exists(summary)) {
-          std::ifstream in(summary);
-          row.summary = nlohmann::json::parse(in, nullptr, false);
-          if (row.summary.is_discarded()) row.summary = nullptr;
-        }
+        if (row.exit_code == 0) row.summary = read_summary(row.run_dir);
         if (!row.converged()) {
-          row.message = error_line(logs[i]);
+          row.message = log_error_line(logs[i].string());
           if (row.exit_code < 0) row.message = "killed by signal " + std::to_string(-row.exit_code) +
                                                (row.message.empty() ? "" : " after: " + row.message);
           if (row.message.empty()) row.message = "exit code " + std::to_string(row.exit_code);
@@ -356,7 +221,7 @@ StudyOutcome run_study(const io::StudySpec& study, const StudyOptions& options) 
   // A stopped study writes no table: its rows would pass for runs that failed.
   outcome.signal = forwarder.signal();
   if (outcome.signal) return outcome;
-  write_tables(study, rows, stage.string());
+  write_study_tables(study, rows, stage.string());
   folder->commit();
   HPC_REQUIRE(failure.empty(), IoError, study.file, ": ", failure);
   return outcome;

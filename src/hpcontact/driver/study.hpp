@@ -9,19 +9,10 @@
 #include <nlohmann/json.hpp>
 
 #include "hpcontact/driver/output_folder.hpp"
+#include "hpcontact/driver/study_table.hpp"
 #include "hpcontact/io/study_reader.hpp"
 
 namespace hpcontact::driver {
-
-struct StudyRowResult {
-  io::StudyRun run;
-  std::string run_dir;  ///< the run's output folder (summary.json, log.txt, ...)
-  int exit_code = -1;   ///< of `hpcontact run`; < 0: killed by a signal (its number, negated)
-  double seconds = 0;   ///< wall time of the process
-  std::string message;  ///< a failed run: the last line it printed
-  nlohmann::json summary;  ///< summary.json of a run that converged; null otherwise
-  bool converged() const { return exit_code == 0 && summary.is_object(); }
-};
 
 struct StudyOptions {
   std::string program;  ///< the hpcontact executable each run is started with
@@ -34,7 +25,9 @@ struct StudyOptions {
 };
 
 /// The files a study writes into OUT (an OutputFolder): study.json (the marker), study.csv and
-/// runs/NN-label/log.txt; each run's own files are its folder's.
+/// runs/NN-label/log.txt; each run's own files are its folder's. A study on Slurm adds
+/// slurm/submission.json and slurm/array.sh; the tasks' logs in slurm/logs/ are Slurm's, named
+/// by job id, and never replaced.
 FolderLayout study_layout();
 
 struct StudyOutcome {
@@ -48,10 +41,5 @@ struct StudyOutcome {
 /// folder's log.txt) and writes OUT/study.csv and OUT/study.json. A run that fails is a row with
 /// its message, not an exception. IoError if OUT cannot be written or a process not started.
 StudyOutcome run_study(const io::StudySpec& study, const StudyOptions& options);
-
-/// The table's columns for these rows: label, case, converged, dofs, wall time, energy,
-/// iterations, the contact and error measures any row has, the study's columns, seed_* values.
-std::vector<std::string> study_columns(const io::StudySpec& study,
-                                       const std::vector<StudyRowResult>& rows);
 
 }  // namespace hpcontact::driver

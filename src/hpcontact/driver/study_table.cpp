@@ -1,0 +1,159 @@
+// study.csv and study.json from the rows of a study, and the helpers both executors share.
+#include "hpcontact/driver/study_table.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <set>
+#include <sstream>
+
+#include "hpcontact/post/output_file.hpp"
+
+namespace hpcontact::driver {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The value at a dotted path of a JSON object ("contact.half_width"), or null.
+const nlohmann::json* at_path(const nlohmann::json& j, const std::string& path) {
+  const nlohmann::json* node = &j;
+  std::size_t start = 0;
+  while (start <= path.size()) {
+    const std::size_t dot = path.find('.', start);
+    const std::string key = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (!node->is_object() || !node->contains(key)) return nullptr;
+    node = &(*node)[key];
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return node;
+}
+
+
+std::string csv_field(std::string s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
+  return q + "\"";
+}
+
+std::string json_cell(const nlohmann::json* v) {
+  if (!v || v->is_null()) return "";
+  if (v->is_number_float()) {
+    std::ostringstream os;
+    os << std::setprecision(12) << v->get<double>();
+    return os.str();
+  }
+  if (v->is_string()) return v->get<std::string>();
+  return v->dump();
+}
+
+
+// Summary keys shown when any row has them, in this order.
+const char* const kMeasures[] = {
+    "contact.resultant",           "contact.half_width",
+    "contact.p_max",               "contact.max_penetration",
+    "contact.e_seed_hertz_percent", "contact.e_seed_shtayerman_percent",
+    "contact.e_L2_hertz_percent",  "contact.e_L2_shtayerman_percent",
+    "contact.e_L2_reference_percent", "error.energy_rel_percent",
+    "error.energy_norm_rel_percent"};
+
+}  // namespace
+
+std::string row_folder_name(int index, const std::string& label) {
+  std::ostringstream os;
+  os << std::setw(2) << std::setfill('0') << index + 1 << '-';
+  for (char c : label) os << (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' || c == '=' ? c : '_');
+  return os.str();
+}
+
+std::string log_error_line(const std::string& log_file, const std::string& skip_prefix) {
+  const std::string prefix = "hpcontact: error: ";
+  std::ifstream in(log_file);
+  std::string line, last, error;
+  while (std::getline(in, line)) {
+    if (!skip_prefix.empty() && line.rfind(skip_prefix, 0) == 0) continue;
+    if (!line.empty()) last = line;
+    if (line.rfind(prefix, 0) == 0) error = line.substr(prefix.size());
+  }
+  return error.empty() ? last : error;
+}
+
+nlohmann::json read_summary(const std::string& run_dir) {
+  std::ifstream in(fs::path(run_dir) / "summary.json");
+  if (!in) return nullptr;
+  auto summary = nlohmann::json::parse(in, nullptr, false);
+  return summary.is_discarded() ? nlohmann::json() : summary;
+}
+
+std::vector<std::string> study_columns(const io::StudySpec& study,
+                                       const std::vector<StudyRowResult>& rows) {
+  std::vector<std::string> cols = {"label", "case", "converged", "dofs", "wall_time_s",
+                                   "strain_energy", "load_steps", "newton_iterations"};
+  auto any_has = [&](const std::string& key) {
+    return std::any_of(rows.begin(), rows.end(), [&](const StudyRowResult& r) {
+      return r.summary.is_object() && at_path(r.summary, key) != nullptr;
+    });
+  };
+  for (const char* m : kMeasures)
+    if (any_has(m)) cols.push_back(m);
+  for (const auto& c : study.columns)
+    if (std::find(cols.begin(), cols.end(), c) == cols.end()) cols.push_back(c);
+  std::set<std::string> seen;
+  for (const auto& r : study.runs)
+    for (const auto& [k, v] : r.seed)
+      if (seen.insert(k).second) cols.push_back("seed_" + k);
+  cols.push_back("message");
+  cols.push_back("run_dir");
+  return cols;
+}
+
+
+void write_study_tables(const io::StudySpec& study, const std::vector<StudyRowResult>& rows,
+                        const std::string& out_dir) {
+  const auto columns = study_columns(study, rows);
+  std::ostringstream csv;
+  for (std::size_t c = 0; c < columns.size(); ++c) csv << (c ? "," : "") << columns[c];
+  csv << '\n';
+  nlohmann::json all = nlohmann::json::array();
+  for (const auto& row : rows) {
+    nlohmann::json j = {{"label", row.run.label}, {"case", row.run.case_file},
+                        {"set", row.run.sets}, {"run_dir", row.run_dir},
+                        {"exit_code", row.exit_code}, {"converged", row.converged()},
+                        {"seconds", row.seconds}};
+    if (!row.converged()) j["message"] = row.message;
+    if (row.summary.is_object()) j["summary"] = row.summary;
+    for (const auto& [k, v] : row.run.seed) j["seed"][k] = v;
+    all.push_back(j);
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const std::string& col = columns[c];
+      std::string cell;
+      if (col == "label") cell = row.run.label;
+      else if (col == "case") cell = row.run.case_file;
+      else if (col == "converged") cell = row.converged() ? "true" : "false";
+      else if (col == "message") cell = row.converged() ? "" : row.message;
+      else if (col == "run_dir") cell = row.run_dir;
+      else if (col.rfind("seed_", 0) == 0) {
+        for (const auto& [k, v] : row.run.seed)
+          if ("seed_" + k == col) {
+            std::ostringstream os;
+            os << std::setprecision(12) << v;
+            cell = os.str();
+          }
+      } else if (row.summary.is_object()) {
+        cell = json_cell(at_path(row.summary, col));
+      }
+      csv << (c ? "," : "") << csv_field(cell);
+    }
+    csv << '\n';
+  }
+  post::write_text_file((fs::path(out_dir) / "study.csv").string(), csv.str());
+  nlohmann::json doc = {{"study", study.name}, {"file", study.file}, {"runs", all}};
+  if (!study.title.empty()) doc["title"] = study.title;
+  post::write_text_file((fs::path(out_dir) / "study.json").string(), doc.dump(2) + "\n");
+}
+
+}  // namespace hpcontact::driver

@@ -1,0 +1,127 @@
+// The Slurm executor's pure parts: array specifications, scontrol's and sacct's records, the
+// batch script's quoting and content, the submission record, and running a short command.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "hpcontact/core/error.hpp"
+#include "hpcontact/driver/command.hpp"
+#include "hpcontact/driver/slurm_queue.hpp"
+#include "hpcontact/driver/slurm_record.hpp"
+#include "hpcontact/driver/slurm_script.hpp"
+
+using namespace hpcontact;
+using namespace hpcontact::driver;
+
+// The rows of a resubmission are written as Slurm's shortest array specification, and read back.
+TEST(SlurmQueue, ArrayRangesRoundTrip) {
+  EXPECT_EQ(array_ranges({0, 1, 2, 5, 7, 8}), "0-2,5,7-8");
+  EXPECT_EQ(array_ranges({3}), "3");
+  EXPECT_EQ(parse_array_ranges("0-2,5,7-8"), (std::vector<int>{0, 1, 2, 5, 7, 8}));
+  EXPECT_EQ(parse_array_ranges("3-5%2"), (std::vector<int>{3, 4, 5}));
+  EXPECT_TRUE(parse_array_ranges("N/A").empty());
+}
+
+// scontrol's one-line records give each task's state, pending tasks grouped in a range.
+TEST(SlurmQueue, ScontrolRecords) {
+  const std::string text =
+      "JobId=12 ArrayJobId=12 ArrayTaskId=2-3 JobName=x UserId=root(0) JobState=PENDING Reason=Resources ExitCode=0:0 RunTime=00:00:00\n"
+      "JobId=14 ArrayJobId=12 ArrayTaskId=1 JobName=x JobState=CANCELLED Reason=None ExitCode=0:15\n"
+      "JobId=13 ArrayJobId=12 ArrayTaskId=0 JobName=x JobState=COMPLETED Reason=None ExitCode=0:0\n";
+  const auto tasks = parse_scontrol_tasks(text);
+  ASSERT_EQ(tasks.size(), 4u);
+  EXPECT_EQ(tasks.at(0).state, "COMPLETED");
+  EXPECT_EQ(tasks.at(1).state, "CANCELLED");
+  EXPECT_EQ(tasks.at(1).exit_code, "0:15");
+  EXPECT_EQ(tasks.at(3).state, "PENDING");
+  EXPECT_TRUE(slurm_state_final("CANCELLED"));
+  EXPECT_TRUE(slurm_state_final("TIMEOUT"));
+  EXPECT_FALSE(slurm_state_final("RUNNING"));
+  EXPECT_FALSE(slurm_state_final("PENDING"));
+}
+
+// sacct's records of another job, or of the job's steps, are not the array's tasks.
+TEST(SlurmQueue, SacctRecords) {
+  const auto tasks = parse_sacct_tasks(
+      "12_0|COMPLETED|0:0\n12_1|CANCELLED by 0|0:15\n12_[2-3]|PENDING|0:0\n120_1|FAILED|1:0\n", "12");
+  ASSERT_EQ(tasks.size(), 4u);
+  EXPECT_EQ(tasks.at(1).state, "CANCELLED");
+  EXPECT_EQ(tasks.at(3).state, "PENDING");
+}
+
+// A value reaches the task as one word, whatever it holds.
+TEST(SlurmScript, ShellQuote) {
+  EXPECT_EQ(shell_quote("discretization.degree=4"), "discretization.degree=4");
+  EXPECT_EQ(shell_quote("a b"), "'a b'");
+  EXPECT_EQ(shell_quote("it's"), "'it'\\''s'");
+  EXPECT_EQ(shell_quote("$(rm -rf x)"), "'$(rm -rf x)'");
+  EXPECT_EQ(shell_quote(""), "''");
+}
+
+// The script has the options as #SBATCH lines, a case per row with its overrides quoted, and
+// ends by printing the run's exit code; sbatch's command line carries the rows and the options.
+TEST(SlurmScript, BatchScript) {
+  BatchJob job;
+  job.name = "t51";
+  job.out_dir = "/shared/out";
+  job.program = "/opt/hpcontact/bin/hpcontact";
+  job.options.partition = "long";
+  job.options.time = "00:10:00";
+  job.options.cpus_per_task = 2;
+  job.options.sbatch_options = {"--mem=2G"};
+  job.rows = {{0, "runs/01-a", "/shared/a.yaml", {}},
+              {1, "runs/02-b", "/shared/b.yaml", {"contact[0].penalty=1e8", "title=two words"}}};
+  const std::string s = batch_script(job);
+  for (const char* line : {"#SBATCH --job-name=hpcontact-t51\n", "#SBATCH --output=/shared/out/slurm/logs/%A_%a.out\n",
+                           "#SBATCH --cpus-per-task=2\n", "#SBATCH --partition=long\n", "#SBATCH --time=00:10:00\n",
+                           "  0) dir=runs/01-a; set -- /shared/a.yaml ;;\n",
+                           "  1) dir=runs/02-b; set -- /shared/b.yaml --set 'contact[0].penalty=1e8' --set 'title=two words' ;;\n",
+                           "export OMP_NUM_THREADS=\"${SLURM_CPUS_PER_TASK:-1}\"\n", "exit $code\n"})
+    EXPECT_NE(s.find(line), std::string::npos) << line << " not in\n" << s;
+  EXPECT_EQ(s.rfind("#!/bin/bash\n", 0), 0u);
+  EXPECT_EQ(sbatch_command("/usr/bin/sbatch", job, {1, 2, 3}, "/shared/out/slurm/array.sh", true),
+            (std::vector<std::string>{"/usr/bin/sbatch", "--parsable", "--array=1-3", "--test-only",
+                                      "--mem=2G", "/shared/out/slurm/array.sh"}));
+  EXPECT_EQ(task_log_path("/shared/out", "12", 3), "/shared/out/slurm/logs/12_3.out");
+}
+
+// A command's output, exit code and time limit; a command that is not there is found missing.
+TEST(Command, RunsAndCaptures) {
+  const std::string sh = find_on_path("sh");
+  ASSERT_FALSE(sh.empty());
+  const auto r = run_captured({sh, "-c", "echo out; echo err >&2; exit 3"}, 10);
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_EQ(r.out, "out\n");
+  EXPECT_EQ(r.err, "err\n");
+  EXPECT_FALSE(r.timed_out);
+  const auto slow = run_captured({sh, "-c", "sleep 10"}, 0.2);
+  EXPECT_TRUE(slow.timed_out);
+  EXPECT_EQ(find_on_path("no-such-command-hpcontact"), "");
+  EXPECT_THROW(run_captured({"/no/such/program"}, 1), IoError);
+}
+
+// The record keeps the study's rows as they were, and says which task ran a row last.
+TEST(SlurmRecord, RowsAndTasks) {
+  io::StudySpec study;
+  study.file = "s.yaml";
+  study.name = "s";
+  study.columns = {"contact.half_width"};
+  study.runs = {{"a", "a.yaml", {"x=1"}, {{"dofs", 710}}}, {"b", "b.yaml", {}, {}}};
+  const auto back = study_from_json(study_to_json(study));
+  ASSERT_EQ(back.runs.size(), 2u);
+  EXPECT_EQ(back.runs[0].sets, study.runs[0].sets);
+  EXPECT_EQ(back.runs[0].seed, study.runs[0].seed);
+  EXPECT_EQ(back.columns, study.columns);
+  const nlohmann::json record = {
+      {"study", study_to_json(study)},
+      {"submissions", {{{"job_id", "7"}, {"rows", {0, 1}}, {"complete", nlohmann::json::array()}},
+                       {{"job_id", "9"}, {"rows", {1}}, {"complete", {0}}},
+                       {{"job_id", ""}, {"rows", {0}}, {"complete", nlohmann::json::array()}}}}};
+  EXPECT_EQ(submitted(record).size(), 2u);  // the last never reached sbatch
+  EXPECT_EQ(latest_task(record, 0)->job_id, "7");
+  EXPECT_EQ(latest_task(record, 1)->job_id, "9");
+  EXPECT_FALSE(latest_task(record, 2));
+  EXPECT_TRUE(listed_complete(record, 0));
+  EXPECT_FALSE(listed_complete(record, 1));
+}
