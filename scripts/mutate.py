@@ -244,6 +244,16 @@ MUTATIONS = [
              "e.e_L2 = 100 * diff2 / ref2;",
              "relative L2 pressure error without the square root",
              ["PressureErrors.HertzAgainstShtayermanMatchesBruteForce", "PressureErrors.ExactAndScaled"]),
+    Mutation("singular-corner-inside", "post", S + "post/fields.cpp",
+             "if (!(std::abs(pv.det_J) > 1e-6 * std::abs(det_centre)) || !ps.strain.allFinite() ||",
+             "if (!(std::abs(pv.det_J) > 0 * std::abs(det_centre)) || !ps.strain.allFinite() ||",
+             "a 180° corner sampled at the corner itself",
+             ["Fields.SingularCornerIsSampledInside"]),
+    Mutation("cholmod-gives-way-to-lu", "solve", S + "solve/linear_solver.cpp",
+             "if (!ok && lu_when_indefinite_) {  // not positive definite: LU from now on",
+             "if (false) {  // not positive definite: LU from now on",
+             "an indefinite contact tangent refused instead of solved by LU",
+             ["LinearSolver.CholmodGivesWayToLuOnAnIndefiniteMatrix"]),
 ]
 
 

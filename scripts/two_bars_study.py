@@ -345,13 +345,13 @@ def write_markdown(results, path):
               f"<= 1 + {SLIP_TOLERANCE:g} |",
               f"| stick | {c['stick_points']} | {fmt(c['max_stick_ratio'], 6)} | < 1 |", "",
               "Stick-slip transitions at x = " + (", ".join(f"{x:.6g}" for x in c["transitions"])
-                                                  or "none") + " (midway between Gauss points).",
+                                                  or "none") + " (midway between the points of contact.csv).",
               "", "Diagnostic (not a requirement): measured by the bulk stresses of the upper "
-              "bar instead of the penalty tractions, the largest abs(sigma_xy) / (mu (-sigma_yy)) "
+              "bar instead of the contact tractions, the largest abs(sigma_xy) / (mu (-sigma_yy)) "
               "on the VTU samples of the slip zone "
               + (f"x = {c['slip_zone'][0]:.4g} .. {c['slip_zone'][1]:.4g} is "
                  f"{fmt(c['stress_ratio_slip_zone'])}" if c["slip_zone"] else "(no slip zone)")
-              + ". The penalty tractions at the Gauss points and the trace of the stresses agree "
+              + ". The contact tractions at the points and the trace of the stresses agree "
               "only weakly (in the mean over the edge's polynomial modes).",
               "", "Result: " + ("the Coulomb law holds at every point." if c["ok"] else
                                 "FAILED: " + ("; ".join(f"{s} at x = {x:.6g}: ratio {r:.12g}"

@@ -332,15 +332,19 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Gauss points per contact edge, independent of p (seed: 50).",
        .lower = at_least(1), .upper = at_most(200)},
       {.path = "contact[].friction", .type = T::section,
-       .doc = "Friction (seed §3.3): Coulomb's law regularised by a tangential penalty, with a "
-              "return mapping at every contact Gauss point; absent: frictionless. A point is "
-              "anchored to the other side at the end of the first load step in which it is in "
-              "contact; its tangential gap is measured from there along the tangent at the anchor "
-              "(frozen), its slip carried from load step to load step (the result depends on the "
-              "load path: see solver.stages). The tangent is not symmetric: solved by LU."},
+       .doc = "Friction (seed §3.3), Coulomb's law; absent: frictionless. augmented-lagrangian: "
+              "a tangential multiplier at each multiplier node against the weighted slip since "
+              "the last converged load step (stick rows, or slip at mu times the normal "
+              "multiplier: a primal-dual active set); penalty: the seed's tangential penalty with "
+              "a return mapping at every contact Gauss point, a point anchored to the other side "
+              "at the end of the first load step in which it is in contact, its tangential gap "
+              "measured along the tangent at the anchor (frozen). Either way the result depends "
+              "on the load path (see solver.stages), and the tangent is not symmetric: solved by "
+              "LU."},
       {.path = "contact[].friction.law", .type = T::choice, .required = true,
-       .doc = "stick: no slip whatever the traction (the tangential penalty only); coulomb: "
-              "slip where |t_T| would exceed mu p_N; none: frictionless.",
+       .doc = "stick: no slip whatever the traction (exact: no relative tangential motion at the "
+              "nodes; penalty: the tangential penalty only); coulomb: slip where |t_T| would "
+              "exceed mu p_N; none: frictionless.",
        .choices = {"none", "stick", "coulomb"}},
       {.path = "contact[].friction.mu", .type = T::number,
        .doc = "Coulomb friction coefficient; required by law: coulomb.", .lower = at_least(0)},
@@ -388,9 +392,11 @@ const std::vector<KeySpec>& input_schema() {
 
       {.path = "contact[].obstacle.type", .type = T::choice, .required = true,
        .doc = "plane: a straight line; circle: a disc (or a hole with inside); curve: a smooth "
-              "curve through points; body: another deformable body (bilateral contact: the "
-              "points of both sides are evaluated, each with half weight, and the penalty acts "
-              "on the gap between the bodies).",
+              "curve through points; body: another deformable body (bilateral contact; exact: "
+              "the pair's own body carries the multiplier nodes and its gap is measured against "
+              "the other's deformed boundary, one-sided; penalty: the points of both sides are "
+              "evaluated, each with half weight, and the penalty acts on the gap between the "
+              "bodies).",
        .choices = {"plane", "circle", "curve", "body"}},
       {.path = "contact[].obstacle.body", .type = T::string,
        .doc = "body: name of the other body; required if and only if type is body."},
