@@ -128,3 +128,26 @@ def test_units_in_labels_are_the_runs_or_input_units():
     assert h.unit_text("strain") == "[-]"
     assert h.units_of({"units": {"length": "mm"}}) == {"length": "mm"}
     assert h.units_of({}) is None
+
+
+def test_contact_history_plot_of_the_o_ring(hpcontact, root, tmp_path):
+    """plot_contact_history.py draws both pairs of the O-ring over its load steps (from
+    contact_history.csv: one row per step and pair, equal forces on the two plates), and names
+    the missing file of a folder without a history."""
+    out = tmp_path / "ring"
+    r = hpcontact("run", os.path.join(root, "examples/o-ring/o-ring.yaml"), "--out", out, "-q",
+                  "--set", "solver.load_steps=3", "--set", "discretization.degree=4")
+    assert r.returncode == 0, r.stderr
+    with open(out / "contact_history.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert [(int(r["step"]), int(r["pair"])) for r in rows] == [(s, p) for s in (1, 2, 3) for p in (0, 1)]
+    for s in (0, 2, 4):
+        a, b = float(rows[s]["normal_force"]), float(rows[s + 1]["normal_force"])
+        assert a > 0 and abs(a - b) < 1e-9 * a
+    assert float(rows[0]["normal_force"]) < float(rows[2]["normal_force"]) < float(rows[4]["normal_force"])
+    r = run_script(root, "plot_contact_history.py", out, "--out", tmp_path / "history.png")
+    assert r.returncode == 0, r.stderr
+    assert (tmp_path / "history.png").stat().st_size > 10000
+    (tmp_path / "empty").mkdir()
+    r = run_script(root, "plot_contact_history.py", tmp_path / "empty")
+    assert r.returncode != 0 and "contact_history.csv: no such file" in r.stderr, r.stderr
