@@ -38,7 +38,8 @@ from hpc_run import default_hpcontact, read_columns, script_parser, unit_text, u
 CONTACT_KEYS = ["e_seed_hertz_percent", "e_seed_shtayerman_percent", "e_seed_reference_percent",
                 "e_L2_hertz_percent", "e_L2_shtayerman_percent", "e_L2_reference_percent",
                 "half_width"]
-# The same measures of the penalty traction (summary.json contact.penalty_traction).
+# The same measures of the pressure the method carries (summary.json contact.multiplier for exact
+# contact, contact.penalty_traction with enforcement: penalty).
 PENALTY_KEYS = ["e_seed_hertz_percent", "e_seed_shtayerman_percent", "e_L2_reference_percent"]
 SEED_KEYS = ["dofs", "time_s", "vs_hertz", "vs_shtayerman"]
 
@@ -65,8 +66,8 @@ def write_markdown(path, study, rows, jobs):
     head = ["discretisation", "DOF", "time [s]", "e_seed vs Hertz [%]",
             "e_seed vs Shtayerman [%]", "e_seed vs reference [%]", "e_L2 vs Hertz [%]",
             "e_L2 vs Shtayerman [%]", "e_L2 vs reference [%]", f"half width {length}",
-            "penalty: e_seed vs Hertz [%]", "penalty: e_seed vs Shtayerman [%]",
-            "penalty: e_L2 vs reference [%]"]
+            "method's pressure: e_seed vs Hertz [%]", "method's pressure: e_seed vs Shtayerman [%]",
+            "method's pressure: e_L2 vs reference [%]"]
     head += [{"dofs": "seed DOF", "time_s": "seed time [s]", "vs_hertz": "seed vs Hertz [%]",
               "vs_shtayerman": "seed vs Shtayerman [%]"}[k] for k in seed_keys]
     lines = []
@@ -83,7 +84,7 @@ def write_markdown(path, study, rows, jobs):
             cells += [fmt(c.get(k), 4) for k in CONTACT_KEYS[:3]]
             cells += [fmt(c.get(k), 2) for k in CONTACT_KEYS[3:6]]
             cells += [fmt(c.get("half_width"), 4)]
-            pen = c.get("penalty_traction", {})
+            pen = c.get("penalty_traction") or c.get("multiplier") or {}
             cells += [fmt(pen.get(k), 4) for k in PENALTY_KEYS[:2]] + [fmt(pen.get(PENALTY_KEYS[2]), 2)]
         cells += [fmt(seed.get(k), 0 if k in ("dofs", "time_s") else 4) for k in seed_keys]
         lines.append("| " + " | ".join(cells) + " |")
@@ -91,8 +92,9 @@ def write_markdown(path, study, rows, jobs):
     legend = ("e_seed: the squared measure that reads like the seed's Table 5.1 (the dissertation "
               "of docs/references.md), e_L2: relative L2 error of the pressure from stresses over "
               "[0, 1.5 b] (docs/theory.md §10); reference: the curve compare.reference names "
-              "(for Hertz our overkill solution, examples/hertz/reference.yaml). penalty: the same "
-              "measures of the penalty traction instead of the pressure from stresses.")
+              "(for Hertz our overkill solution, examples/hertz/reference.yaml). method's pressure: "
+              "the same measures of the multiplier (exact contact) or of the penalty traction "
+              "(enforcement: penalty) instead of the pressure from stresses.")
     if first is not None:
         c = first.get("contact", {})
         if "hertz_half_width" in c:
