@@ -33,16 +33,17 @@ test: build
 test-all: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
-# The fast C++ tests (unit, verification, fuzz replays) built with AddressSanitizer and UBSan
-# (gcc); the Python module is left out (an instrumented extension needs an instrumented
-# interpreter or a preloaded libasan).
+# The fast C++ tests (unit, verification, fuzz replays; the Slurm study test) built with
+# AddressSanitizer and UBSan (gcc); the Python module is left out (an instrumented extension
+# needs an instrumented interpreter or a preloaded libasan), and so are the tests that load it
+# (docs) or link an uninstrumented consumer against the instrumented library (install).
 test-sanitize: deps
 	@cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHPC_BUILD_BENCH=OFF \
 	  "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer" \
 	  > /dev/null
 	@cmake --build build-sanitize -j $(JOBS)
 	@cd build-sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest --output-on-failure -j $(JOBS) -LE "slow|cli|python"
+	  ctest --output-on-failure -j $(JOBS) -LE "slow|cli|python|docs|install"
 
 # libFuzzer targets (clang) of the problem and Gmsh readers, FUZZ_SECONDS each (default 60);
 # inputs that fail are kept in fuzz/regressions/ and replayed by `make test`.
