@@ -6,6 +6,7 @@ import json
 import os
 import shutil
 import subprocess
+import sys
 import xml.etree.ElementTree as ET
 
 SCRIPTS = os.path.dirname(os.path.abspath(__file__))
@@ -140,6 +141,23 @@ def read_columns(path):
                     value = v
                 cols.setdefault(k, []).append(value)
     return cols
+
+
+def read_run_csv(folder, name, script, why_missing):
+    """A results folder's CSV `name` as read_columns gives it, and its summary.json (or {});
+    exits naming the script, the file and `why_missing` when the file is absent, or when it
+    has no rows."""
+    path = os.path.join(folder, name)
+    if not os.path.isfile(path):
+        sys.exit(f"{script}: {path}: no such file ({why_missing})")
+    cols = read_columns(path)
+    if not cols:
+        sys.exit(f"{script}: {path}: no rows")
+    summary = {}
+    if os.path.isfile(os.path.join(folder, "summary.json")):
+        with open(os.path.join(folder, "summary.json")) as f:
+            summary = json.load(f)
+    return cols, summary
 
 
 def read_vtu(path):

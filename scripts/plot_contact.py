@@ -13,7 +13,6 @@ it); a pressure curve that leaves the pressure axis (set by --ylim) is clipped, 
 says so. Axis labels carry units: those summary.json names ("units"), else input units.
 Writes FILE.png (default: RESULTS_DIR/contact.png of the first folder) and prints its name.
 """
-import json
 import math
 import os
 import sys
@@ -24,7 +23,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hpc_run import axis_label, read_columns, script_parser, units_of  # noqa: E402
+from hpc_run import axis_label, read_run_csv, script_parser, units_of  # noqa: E402
 
 
 def pressure_name(folder):
@@ -41,17 +40,7 @@ def pressure_name(folder):
 def read(folder):
     """contact.csv's columns and summary.json (or {}) of a results folder; exits naming the
     file if there is no contact.csv with rows."""
-    path = os.path.join(folder, "contact.csv")
-    if not os.path.isfile(path):
-        sys.exit(f"plot_contact: {path}: no such file (a run without contact pairs?)")
-    cols = read_columns(path)
-    if not cols:
-        sys.exit(f"plot_contact: {path}: no rows")
-    summary = {}
-    if os.path.isfile(os.path.join(folder, "summary.json")):
-        with open(os.path.join(folder, "summary.json")) as f:
-            summary = json.load(f)
-    return cols, summary
+    return read_run_csv(folder, "contact.csv", "plot_contact", "a run without contact pairs?")
 
 
 def main(argv=None):

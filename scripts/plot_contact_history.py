@@ -12,7 +12,6 @@ with friction, its stick and slip point counts (right axis). Axis labels carry t
 summary.json names, else input units. Writes FILE.png (default RESULTS_DIR/contact-history.png)
 and prints its name.
 """
-import json
 import os
 import sys
 
@@ -22,7 +21,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hpc_run import axis_label, read_columns, script_parser, units_of  # noqa: E402
+from hpc_run import axis_label, read_run_csv, script_parser, units_of  # noqa: E402
 
 ABSCISSAE = ("step", "displacement_factor", "load_factor")
 
@@ -30,20 +29,13 @@ ABSCISSAE = ("step", "displacement_factor", "load_factor")
 def read(folder):
     """contact_history.csv's columns and summary.json (or {}); exits naming the file when the
     history is missing or empty."""
+    cols, summary = read_run_csv(folder, "contact_history.csv", "plot_contact_history",
+                                 "a run without contact pairs, or an rp/hp run, which writes no "
+                                 "history")
     path = os.path.join(folder, "contact_history.csv")
-    if not os.path.isfile(path):
-        sys.exit(f"plot_contact_history: {path}: no such file (a run without contact pairs, or an "
-                 "rp/hp run, which writes no history)")
-    cols = read_columns(path)
-    if not cols or not cols.get("step"):
-        sys.exit(f"plot_contact_history: {path}: no rows")
     missing = [c for c in ("pair", "normal_force", "tangential_force", "contact_length") if c not in cols]
     if missing:
         sys.exit(f"plot_contact_history: {path}: no column {', '.join(missing)}")
-    summary = {}
-    if os.path.isfile(os.path.join(folder, "summary.json")):
-        with open(os.path.join(folder, "summary.json")) as f:
-            summary = json.load(f)
     return cols, summary
 
 

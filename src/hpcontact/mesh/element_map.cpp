@@ -35,6 +35,12 @@ ElementMap ElementMap::isoparametric(const Mesh& mesh, int q, basis::LagrangeTyp
   return m;
 }
 
+double ElementMap::regularity(double xi, double eta) const {
+  Mat2 J;
+  map(xi, eta, &J);
+  return std::abs(J.determinant()) / std::max(J.squaredNorm(), 1e-300);
+}
+
 Vec2 ElementMap::map(double xi, double eta, Mat2* J) const {
   if (!iso_) return blend_.map(xi, eta, J);
   double N[9], dx[9], de[9];

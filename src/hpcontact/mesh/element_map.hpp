@@ -18,6 +18,9 @@ public:
 
   /// x(xi, eta); if J is given, J = [dx/dxi, dx/deta] (columns).
   Vec2 map(double xi, double eta, Mat2* J = nullptr) const;
+  /// |det J| / |J|²: 1/2 for a square, 0 where the map is singular (a 180° corner, where two
+  /// edges on one smooth curve meet); below 1e-6 stresses computed there are round-off.
+  double regularity(double xi, double eta) const;
 
   /// Isoparametric nodes (Lagrange order), empty for blending.
   const std::vector<Vec2>& lagrange_nodes() const { return iso_nodes_; }

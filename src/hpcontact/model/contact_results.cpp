@@ -141,15 +141,26 @@ std::optional<std::tuple<int, int, double>> node_stress_point(const Body& body, 
       const int q = edge.quads[0], le = edge.local_edge[0];
       const double t = c.nodes.edge_points[k][i];
       const auto r = fem::edge_reference_point(le, t);
-      Mat2 J;
-      body.maps[q].map(r[0], r[1], &J);
-      const double regularity = std::abs(J.determinant()) / std::max(J.squaredNorm(), 1e-300);
+      const double regularity = body.maps[q].regularity(r[0], r[1]);
       if (!best || regularity > best->regularity) best = Candidate{q, le, t, regularity};
     }
   if (!best) return std::nullopt;
   double t = best->t;
   if (best->regularity < 1e-6) t = std::clamp(t, -1 + 1e-3, 1 - 1e-3);
   return std::tuple{best->q, best->le, t};
+}
+
+/// The outer ends of the active region: of the zone ends z.X, the one just below the first closed
+/// point (coordinate lo along the obstacle) and the one just above the last (hi).
+void mark_outer_ends(ZoneEnds& z, const ContactPair& pair, double lo, double hi) {
+  int below = -1, above = -1;
+  for (int k = 0; k < static_cast<int>(z.X.size()); ++k) {
+    const double c = pair.coordinate(z.X[k]);
+    if (c <= lo && (below < 0 || c > pair.coordinate(z.X[below]))) below = k;
+    if (c >= hi && (above < 0 || c < pair.coordinate(z.X[above]))) above = k;
+  }
+  if (below >= 0) z.outer.push_back(below);
+  if (above >= 0 && above != below) z.outer.push_back(above);
 }
 
 /// The ends of the contact zone along the contact points of one body (the states' gaps change
@@ -190,14 +201,7 @@ ZoneEnds zone_ends(const Body& body, const std::vector<contact::ContactPoint>& p
       lo = std::min(lo, pair.coordinate(points[i].X));
       hi = std::max(hi, pair.coordinate(points[i].X));
     }
-  int below = -1, above = -1;
-  for (int k = 0; k < static_cast<int>(z.X.size()); ++k) {
-    const double c = pair.coordinate(z.X[k]);
-    if (c <= lo && (below < 0 || c > pair.coordinate(z.X[below]))) below = k;
-    if (c >= hi && (above < 0 || c < pair.coordinate(z.X[above]))) above = k;
-  }
-  if (below >= 0) z.outer.push_back(below);
-  if (above >= 0 && above != below) z.outer.push_back(above);
+  mark_outer_ends(z, pair, lo, hi);
   return z;
 }
 
@@ -255,14 +259,7 @@ ZoneEnds node_zone_ends(const Body& body, const ContactPair& pair,
       lo = std::min(lo, pair.coordinate(n.X));
       hi = std::max(hi, pair.coordinate(n.X));
     }
-  int below = -1, above = -1;
-  for (int k = 0; k < static_cast<int>(z.X.size()); ++k) {
-    const double co = pair.coordinate(z.X[k]);
-    if (co <= lo && (below < 0 || co > pair.coordinate(z.X[below]))) below = k;
-    if (co >= hi && (above < 0 || co < pair.coordinate(z.X[above]))) above = k;
-  }
-  if (below >= 0) z.outer.push_back(below);
-  if (above >= 0 && above != below) z.outer.push_back(above);
+  mark_outer_ends(z, pair, lo, hi);
   return z;
 }
 

@@ -34,8 +34,7 @@ PointResult evaluate(const model::Body& body, int q, double xi, double eta, cons
   // to it the discrete field's gradient grows like 1/distance (the map's singularity), so it is
   // taken inside the element, 0.02 of the reference square towards its centre (a tenth of the
   // default VTU sample spacing).
-  const double det_centre = fem::point_values(body.dofs.element(q), body.maps[q], 0, 0).det_J;
-  if (!(std::abs(pv.det_J) > 1e-6 * std::abs(det_centre)) || !ps.strain.allFinite() ||
+  if (!(body.maps[q].regularity(xi, eta) > 1e-6) || !ps.strain.allFinite() ||
       !ps.stress.allFinite()) {
     const auto inner = fem::point_values(body.dofs.element(q), body.maps[q], xi * (1 - 2e-2),
                                          eta * (1 - 2e-2));
