@@ -55,9 +55,9 @@ def main():
     ap.add_argument("--hpcontact", default=str(ROOT / "build" / "hpcontact"),
                     help="the hpcontact program (default %(default)s)")
     ap.add_argument("--degree", type=int, default=8, help="degree of every element (default %(default)s)")
-    ap.add_argument("--layers", type=int, default=4,
+    ap.add_argument("--layers", type=int, default=8,
                     help="graded layers on each side of Γ* (default %(default)s)")
-    ap.add_argument("--factor", type=float, default=0.5,
+    ap.add_argument("--factor", type=float, default=0.35,
                     help="size ratio per graded layer (default %(default)s)")
     ap.add_argument("--start", type=float, default=1.95, help="first guess of Γ*")
     ap.add_argument("--tol", type=float, default=1e-7, help="|Γ* - node| / R to stop")
