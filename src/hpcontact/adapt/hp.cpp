@@ -56,6 +56,16 @@ model::ProblemSpec build_mesh(const model::ProblemSpec& input, const std::vector
   throw AdaptError(os.str());
 }
 
+/// Why a loop with a tolerance ended without reaching it, with the estimate it reached.
+std::string limit_message(const HpOutcome& out, const HpOptions& options, const std::string& why) {
+  std::ostringstream os;
+  os.precision(3);
+  os << "hp: the tolerance " << options.tolerance << " was not reached: " << why
+     << "; the smallest estimated error, " << out.estimate.pressure << " (contact pressure, "
+     << "relative L2), is that of the result kept";
+  return os.str();
+}
+
 }  // namespace
 
 HpOptions hp_options(const model::AdaptSpec& adapt) {
@@ -64,6 +74,8 @@ HpOptions hp_options(const model::AdaptSpec& adapt) {
   o.steps = adapt.steps;
   o.rising_degree = adapt.rising_degree;
   o.min_degree = adapt.min_degree;
+  o.tolerance = adapt.method == model::AdaptMethod::hp && adapt.tolerance_given ? adapt.tolerance : 0;
+  o.max_dofs = adapt.max_dofs;
   return o;
 }
 
@@ -135,13 +147,57 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         for (const auto& g : rec.solve.gamma_star) os << " (" << g.x() << ", " << g.y() << ")";
         say(os.str());
       }
+      if (options.tolerance <= 0) {
+        out.history.push_back(rec);
+        out.last = s;
+        if (observe) observe(rec, *s);
+        continue;
+      }
+      if (options.max_dofs > 0 && rec.solve.dofs > options.max_dofs && out.last) {
+        out.stopped = "dof limit";
+        out.message = limit_message(out, options, "step " + std::to_string(step) + " has " +
+                                                      std::to_string(rec.solve.dofs) +
+                                                      " free dofs, more than adapt.max_dofs");
+        return out;
+      }
+      SolvedPtr enriched;
+      rec.estimate = estimate_by_enrichment(*s, progress, &enriched);
+      {
+        std::ostringstream os;
+        os.precision(3);
+        os << "hp step " << step << ": estimated error " << rec.estimate.pressure
+           << " (pressure, relative L2), " << rec.estimate.energy << " (energy)";
+        say(os.str());
+      }
       out.history.push_back(rec);
-      out.last = s;
+      if (!out.last || !(rec.estimate.pressure >= out.estimate.pressure)) {
+        out.last = s;
+        out.estimate = rec.estimate;
+      }
       if (observe) observe(rec, *s);
+      if (rec.estimate.pressure <= options.tolerance) {
+        out.last = s;
+        out.estimate = rec.estimate;
+        out.converged = true;
+        out.stopped = "tolerance reached";
+        return out;
+      }
+      // The next mesh is centred on the zone ends of the better solve.
+      const auto better = outer_zone_ends(*enriched);
+      for (Centre& c : centres)
+        if (const ZoneEnd* nearest = nearest_end(better, c.body, c.at)) c.at = nearest->X;
+    }
+    if (options.tolerance > 0) {
+      out.stopped = "step limit";
+      out.message = limit_message(out, options, std::to_string(options.steps) +
+                                                    " steps taken (adapt.steps)");
+      return out;
     }
     out.converged = true;
+    out.stopped = "steps done";
   } catch (const Error& e) {
     out.message = e.what();
+    out.stopped = "error";
   }
   return out;
 }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "hpcontact/adapt/error_estimate.hpp"
 #include "hpcontact/adapt/solved.hpp"
 
 namespace hpcontact::adapt {
@@ -16,6 +17,10 @@ struct HpOptions {
   bool rising_degree = true;  ///< degree min_degree + layer; false: the input's degrees
   int min_degree = 1;       ///< degree of the elements at Γ* (rising_degree)
   int max_recentre = 3;     ///< re-refinements of one step when Γ* leaves the smallest elements
+  /// > 0: the requested accuracy. Each step's error is estimated (estimate_by_enrichment) and
+  /// the loop stops at the first below it; `steps` is then the most it may take. 0: `steps`.
+  double tolerance = 0;
+  int max_dofs = 0;  ///< > 0 (with a tolerance): a mesh of more free dofs ends the loop
 };
 
 /// The options an input's `adapt` section asks for.
@@ -27,15 +32,18 @@ struct HpIteration {
   std::vector<Vec2> centres;  ///< refinement centres of this mesh (nodes on the boundary)
   int recentred = 0;          ///< how often this step was re-refined around a moved centre
   bool inside = true;         ///< every Γ* within the smallest elements at its centre
+  ErrorEstimate estimate;     ///< with a tolerance: the estimated error of this step's solve
 };
 
 using HpObserver = std::function<void(const HpIteration&, const Solved&)>;
 
 struct HpOutcome {
-  SolvedPtr last;
+  SolvedPtr last;  ///< the result: the last step's solve, with a tolerance the best estimated one
   std::vector<HpIteration> history;
-  bool converged = false;  ///< all steps done
-  std::string message;     ///< why it stopped early
+  bool converged = false;  ///< all steps done, or the tolerance reached
+  std::string message;     ///< why it failed (converged false)
+  std::string stopped;     ///< why the loop ended, in a few words (summary.json adapt.stopped)
+  ErrorEstimate estimate;  ///< with a tolerance: the estimate of `last`
 };
 
 /// Solves, places the nearest movable boundary node of each zone end on it (one rp move on
@@ -44,6 +52,10 @@ struct HpOutcome {
 /// new Γ* and the mesh of the step is built again from the input mesh (the seed re-refines
 /// from the second-last mesh; rebuilding from the input gives the same mesh with the centre
 /// moved, and never distorts small elements). Failures end the loop with the last good solve.
+/// With a tolerance, every step's error is estimated from a solve one degree higher on its mesh;
+/// the loop stops at the first step estimated below the tolerance, and the next step's centres
+/// are the zone ends of that better solve. Not reaching it within `steps` (or `max_dofs`) is a
+/// failure whose result is the step with the smallest estimate.
 HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptions& options,
                                    const model::ProgressFn& progress = {},
                                    const HpObserver& observe = {});

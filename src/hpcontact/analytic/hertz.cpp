@@ -66,6 +66,11 @@ Shtayerman::Shtayerman(std::function<double(double)> df, std::function<double(do
     (g(mid) < 0 ? lo : hi) = mid;
   }
   b_ = 0.5 * (lo + hi);
+  // The nodes of pressure()'s integral and f' there, the same for every y.
+  for (size_t i = 0; i < x.size(); ++i) {
+    t_.push_back(b_ * std::sin(0.5 * pi * x[i]));
+    df_t_.push_back(df_(t_.back()));
+  }
 }
 
 Shtayerman Shtayerman::circle(double R, double force, double E, double nu) {
@@ -96,13 +101,12 @@ Shtayerman Shtayerman::parabola(double R, double force, double E, double nu) {
 
 double Shtayerman::pressure(double y) const {
   if (std::abs(y) >= b_) return 0.0;
-  const auto& x = rule().points;
   const auto& w = rule().weights;
   const double fy = df_(y);
   double s = 0;
-  for (size_t i = 0; i < x.size(); ++i) {
-    const double t = b_ * std::sin(0.5 * pi * x[i]);
-    const double dd = std::abs(t - y) > 1e-9 * b_ ? (df_(t) - fy) / (t - y) : d2f_(y);
+  for (size_t i = 0; i < t_.size(); ++i) {
+    const double t = t_[i];
+    const double dd = std::abs(t - y) > 1e-9 * b_ ? (df_t_[i] - fy) / (t - y) : d2f_(y);
     s += 0.5 * pi * w[i] * dd;
   }
   return std::sqrt(b_ * b_ - y * y) / (pi * K_) * s;

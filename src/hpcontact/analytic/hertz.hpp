@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 #include <limits>
 
 namespace hpcontact::analytic {
@@ -61,6 +62,7 @@ public:
 private:
   std::function<double(double)> df_, d2f_;
   double K_, F_, b_;
+  std::vector<double> t_, df_t_;  ///< b sin(π x_i / 2) of the rule's points, f' there
 };
 
 }  // namespace hpcontact::analytic

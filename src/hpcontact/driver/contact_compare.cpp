@@ -53,11 +53,13 @@ ReferenceCurve read_reference(const std::string& path, const std::string& where)
     return static_cast<int>(std::find(cols.begin(), cols.end(), name) - cols.begin());
   };
   const int ix = col("x");
-  // The multiplier of an exact-contact reference is its cleanest pressure (zero past the zone
-  // end, which the stresses are only to the discretisation error).
-  int ip = col("pressure_multiplier");
-  if (ip == static_cast<int>(cols.size())) ip = col("pressure_from_stress");
-  if (ip == static_cast<int>(cols.size())) ip = col("pressure");
+  // The pressure of an exact-contact reference (its multiplier per unit length along the
+  // obstacle: a pressure.csv with a pressure_multiplier column) is its cleanest, zero past the
+  // zone end, where the stresses are only to the discretisation error; otherwise the pressure
+  // from the stresses (a penalty's pressure is its penetration's).
+  const int n = static_cast<int>(cols.size());
+  int ip = col("pressure_multiplier") < n ? col("pressure") : col("pressure_from_stress");
+  if (ip == n) ip = col("pressure");
   HPC_REQUIRE(ix < static_cast<int>(cols.size()) && ip < static_cast<int>(cols.size()), InputError,
               where, ".reference: '", path, "' needs columns x and pressure_multiplier, "
               "pressure_from_stress or pressure");

@@ -15,8 +15,8 @@
 
 namespace hpcontact::driver {
 
-/// A pressure curve p(x) read from a CSV (columns x and pressure_multiplier, pressure_from_stress
-/// or pressure, the first there is), zero outside its range: between two samples p² is
+/// A pressure curve p(x) read from a CSV (columns x and, of an exact-contact pressure.csv,
+/// pressure; else pressure_from_stress, or pressure), zero outside its range: between two samples p² is
 /// interpolated linearly where both are ≥ 0 (the square-root end of a contact zone reproduced),
 /// p itself elsewhere.
 struct ReferenceCurve {

@@ -150,6 +150,7 @@ nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureCompa
   cj["body"] = st.d->bodies[pair.body].name;
   cj["obstacle"] = pair.other >= 0 ? "body '" + st.d->bodies[pair.other].name + "'"
                                    : pair.obstacle->describe();
+  cj["enforcement"] = pair.constraints ? "augmented-lagrangian" : "penalty";
   cj["half_width"] = c.half_width;
   cj["contact_length"] = c.contact_length;
   cj["gamma_star"] = points_json(c.gamma_star);
@@ -356,12 +357,24 @@ nlohmann::json rp_iteration_json(const adapt::RpIteration& it) {
   return j;
 }
 
+/// An error estimate as summary.json keeps it (null where there is none).
+nlohmann::json estimate_json(const adapt::ErrorEstimate& e) {
+  auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  return {{"pressure_rel_L2", number(e.pressure)},
+          {"energy_rel", number(e.energy)},
+          {"from", "one degree more on the same mesh"},
+          {"dofs", e.dofs},
+          {"newton_iterations", e.newton_iterations},
+          {"solve_time_s", e.seconds}};
+}
+
 nlohmann::json hp_iteration_json(const adapt::HpIteration& it) {
   nlohmann::json j = solve_json(it.solve);
   j["step"] = it.step;
   j["centres"] = points_json(it.centres);
   j["recentred"] = it.recentred;
   j["gamma_star_inside"] = it.inside;
+  if (it.estimate.dofs > 0) j["estimated_error"] = estimate_json(it.estimate);
   return j;
 }
 
@@ -445,6 +458,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       last = outcome.last;
       converged = outcome.converged;
       message = outcome.message;
+      aj["stopped"] = converged ? "tolerance reached" : outcome.message.empty() ? "error" : "not converged";
       aj["tolerance"] = spec.adapt.tolerance;
       aj["update"] = spec.adapt.secant ? "secant" : "relocate";
     } else {
@@ -457,6 +471,12 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       last = outcome.last;
       converged = outcome.converged;
       message = outcome.message;
+      aj["stopped"] = outcome.stopped.empty() ? "error" : outcome.stopped;
+      if (spec.adapt.tolerance_given) {
+        aj["tolerance"] = spec.adapt.tolerance;
+        aj["max_dofs"] = spec.adapt.max_dofs;
+        aj["estimated_error"] = estimate_json(outcome.estimate);
+      }
       aj["factor"] = spec.adapt.factor;
       aj["steps"] = spec.adapt.steps;
       aj["degree"] = spec.adapt.rising_degree ? "rising" : "constant";
@@ -468,6 +488,15 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     s.load_steps = last->solution.load_steps;
     s.extra["load_factor"] = last->solution.load_factor;
     aj["iterations"] = static_cast<int>(history.size()) - 1;
+    {
+      // every solve of the loop: its steps and, with a tolerance, their estimates' solves
+      int total = 0;
+      for (const auto& h : history) {
+        total += h.value("newton_iterations", 0);
+        if (h.contains("estimated_error")) total += h["estimated_error"].value("newton_iterations", 0);
+      }
+      s.extra["newton_iterations_total"] = total;
+    }
     aj["converged"] = converged;
     aj["message"] = message;
     aj["history"] = history;
@@ -522,6 +551,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     say(os.str());
     st.u = sol.u;
     s.newton_iterations = 1;
+    s.extra["newton_iterations_total"] = 1;
     s.load_steps = 1;
     s.extra["system_size"] = sol.n_system;
     s.extra["condensed"] = spec.discretization.condense;
@@ -575,6 +605,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       say("wrote " + std::to_string(step_files.size()) + " load steps: solution.pvd");
     }
     s.newton_iterations = sol.newton_iterations;
+    s.extra["newton_iterations_total"] = sol.newton_iterations;
     s.load_steps = sol.load_steps;
     s.extra["load_factor"] = sol.load_factor;
     if (sol.loads_factor != sol.load_factor || !spec.solver.stages.empty() ||

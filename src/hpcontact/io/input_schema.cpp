@@ -455,10 +455,17 @@ const std::vector<KeySpec>& input_schema() {
               "away from Γ* (seed §4.7, Fig. 4.12-4.13); a step whose Γ* leaves the two smallest "
               "elements is refined again around the new Γ*. none: no adaptivity.",
        .choices = {"rp", "hp", "none"}},
-      {.path = "adapt.tolerance", .type = T::number, .default_yaml = "1e-10",
-       .doc = "rp: stop when every moved node is within this fraction of its body's size "
-              "(bounding-box diagonal) of its Γ*.",
+      {.path = "adapt.tolerance", .type = T::number,
+       .doc = "hp: the accuracy asked for, the relative L2 error of the contact pressure, in "
+              "(0, 1); each step's error is estimated from a solve one degree higher on its mesh "
+              "and the loop stops at the first below it (adapt.steps is then the most it may "
+              "take); absent: adapt.steps steps. rp: stop when every moved node is within this "
+              "fraction of its body's size (bounding-box diagonal) of its Γ*; absent: 1e-10.",
        .lower = greater_than(0)},
+      {.path = "adapt.max_dofs", .type = T::integer, .default_yaml = "200000",
+       .doc = "hp with a tolerance: a step whose mesh has more free dofs ends the loop (a "
+              "failure, the best estimated step kept in last-good/).",
+       .lower = at_least(1)},
       {.path = "adapt.max_iterations", .type = T::integer, .default_yaml = "20",
        .doc = "rp: relocations after the first solve; not reaching the tolerance is a failure.",
        .lower = at_least(1), .upper = at_most(200),

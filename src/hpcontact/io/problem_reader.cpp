@@ -502,7 +502,15 @@ class SpecBuilder {
     a.steps = integer(node["steps"]);
     a.rising_degree = node["degree"].Scalar() == "rising";
     a.min_degree = integer(node["min_degree"]);
-    a.tolerance = number(node["tolerance"]);
+    if (const YAML::Node t = node["tolerance"]) {
+      a.tolerance = number(t);
+      a.tolerance_given = true;
+      if (a.method == AdaptMethod::hp && a.tolerance >= 1)
+        source_.fail(t, "adapt.tolerance",
+                     "hp reads the tolerance as the relative accuracy of the contact pressure, "
+                     "which lies in (0, 1): 1e-3 asks for 0.1 %");
+    }
+    a.max_dofs = integer(node["max_dofs"]);
     a.max_iterations = integer(node["max_iterations"]);
     a.secant = node["update"].Scalar() == "secant";
     if (a.method != AdaptMethod::none && spec.contact.empty())

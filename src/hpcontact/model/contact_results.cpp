@@ -437,6 +437,16 @@ BoundaryPressureProbe::BoundaryPressureProbe(const Discretization& d, const Cont
       coord_[k][i] = coordinate(static_cast<int>(k), -1 + 2.0 * i / kSamples);
 }
 
+double BoundaryPressureProbe::traction(int k, double t, Vec2* x, Vec2* X) const {
+  const Body& body = d_.bodies[pair_.body];
+  const auto& edge = body.mesh.edge(pair_.edges[k]);
+  const bool exact = pair_.constraints && multipliers_;
+  if (exact && !x && !X) return pair_.constraints->nodes.interpolate(k, t, *multipliers_);
+  const double g = gap_at(body, *pair_.obstacle, edge.quads[0], edge.local_edge[0], t, u_, x, X);
+  if (exact) return pair_.constraints->nodes.interpolate(k, t, *multipliers_);
+  return g < 0 ? -pair_.penalty * g : 0.0;
+}
+
 double BoundaryPressureProbe::coordinate(int k, double t) const {
   const Body& body = d_.bodies[pair_.body];
   const auto& edge = body.mesh.edge(pair_.edges[k]);
@@ -458,11 +468,7 @@ std::optional<BoundaryPressure> BoundaryPressureProbe::operator()(double s) cons
       const auto& edge = body.mesh.edge(pair_.edges[k]);
       const int q = edge.quads[0], le = edge.local_edge[0];
       BoundaryPressure bp;
-      const double g = gap_at(body, *pair_.obstacle, q, le, t, u_, &bp.x, &bp.X);
-      if (pair_.constraints && multipliers_)
-        bp.traction = pair_.constraints->nodes.interpolate(static_cast<int>(k), t, *multipliers_);
-      else
-        bp.traction = g < 0 ? -pair_.penalty * g : 0.0;
+      bp.traction = traction(static_cast<int>(k), t, &bp.x, &bp.X);
       const SideValues sv = side_values(body, pair_, *pair_.obstacle, q, le, t, u_);
       bp.pressure = bp.traction * sv.length_ratio;
       bp.pressure_from_stress = sv.pressure_from_stress;

@@ -101,6 +101,10 @@ public:
                         const Eigen::VectorXd* multipliers = nullptr);
   /// Pressures at the boundary point with coordinate s; nullopt if no contact edge reaches s.
   std::optional<BoundaryPressure> operator()(double s) const;
+  /// The traction the method carries at parameter t of the pair's contact edge k (edges[k]):
+  /// λ_h or eps_N <-g_N>, per unit undeformed length; x, X (may be null) the point deformed and
+  /// undeformed.
+  double traction(int k, double t, Vec2* x = nullptr, Vec2* X = nullptr) const;
 
 private:
   static constexpr int kSamples = 32;  ///< sub-intervals per edge

@@ -254,7 +254,11 @@ enum class AdaptMethod { none, rp, hp };
 /// Adaptive mesh changes around the ends of the contact zone (seed §4.7–4.8).
 struct AdaptSpec {
   AdaptMethod method = AdaptMethod::none;
-  double tolerance = 1e-10;  ///< rp: stop when |node − Γ*| <= tolerance · body size
+  /// rp: stop when |node − Γ*| <= tolerance · body size (default 1e-10); hp, when given: the
+  /// requested relative L2 accuracy of the contact pressure, estimated.
+  double tolerance = 1e-10;
+  bool tolerance_given = false;
+  int max_dofs = 200000;     ///< hp with a tolerance: no mesh of more free dofs
   int max_iterations = 20;   ///< rp: relocations after the first solve
   bool secant = true;        ///< rp: secant steps (false: the seed's plain move onto Γ*)
   double factor = 0.5;       ///< hp: size of the corner square per refinement step

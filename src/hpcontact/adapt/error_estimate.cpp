@@ -1,0 +1,84 @@
+// Error estimation by one degree more on the same mesh: the contact edges and their parameters
+// are the same in both solves, so the tractions are compared point by point.
+#include "hpcontact/adapt/error_estimate.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "hpcontact/basis/quadrature.hpp"
+#include "hpcontact/core/error.hpp"
+#include "hpcontact/fem/edge_load.hpp"
+#include "hpcontact/model/contact_results.hpp"
+#include "hpcontact/post/fields.hpp"
+
+namespace hpcontact::adapt {
+
+namespace {
+
+constexpr int kLargestDegree = 30;  // the input's limit of discretization.degree
+
+}  // namespace
+
+model::ProblemSpec with_degrees_raised(const model::ProblemSpec& spec) {
+  model::ProblemSpec raised = spec;
+  for (auto& body : raised.bodies) {
+    const std::array<int, 2> base = body.degree ? *body.degree : spec.discretization.degree;
+    for (const int id : body.element_ids) {
+      const auto it = body.element_degrees.find(id);
+      std::array<int, 2> p = it != body.element_degrees.end() ? it->second : base;
+      HPC_REQUIRE(std::max(p[0], p[1]) < kLargestDegree, AdaptError, spec.file, ": element ", id,
+                  " of body '", body.name, "' has degree ", std::max(p[0], p[1]), ", the largest "
+                  "there is: its error cannot be estimated by one degree more");
+      body.element_degrees[id] = {p[0] + 1, p[1] + 1};
+    }
+  }
+  return raised;
+}
+
+ErrorEstimate estimate_error(const Solved& coarse, const Solved& enriched) {
+  const auto& a = coarse.solution;
+  const auto& b = enriched.solution;
+  HPC_REQUIRE(a.pairs.size() == b.pairs.size(), AdaptError,
+              "estimate_error: the two solves have different contact pairs");
+  double diff2 = 0, norm2 = 0;
+  for (size_t k = 0; k < a.pairs.size(); ++k) {
+    const model::BoundaryPressureProbe pa(coarse.discretization, a.pairs[k], a.u, a.multipliers_of(k));
+    const model::BoundaryPressureProbe pb(enriched.discretization, b.pairs[k], b.u, b.multipliers_of(k));
+    const auto& body = enriched.discretization.bodies[b.pairs[k].body];
+    for (size_t e = 0; e < b.pairs[k].edges.size(); ++e) {
+      const auto& edge = body.mesh.edge(b.pairs[k].edges[e]);
+      // both tractions are polynomials of degree ≤ p + 1 in t on the edge, (t − t⁺)² ≤ 2p + 2
+      const int p = body.dofs.element(edge.quads[0]).max_degree();
+      const auto& rule = basis::gauss_legendre(p + 3);
+      for (int i = 0; i < rule.size(); ++i) {
+        const double t = rule.points[i];
+        double ds_dt = 0;
+        fem::edge_geometry(body.maps[edge.quads[0]], edge.local_edge[0], t, nullptr, &ds_dt);
+        const int ke = static_cast<int>(e);
+        const double ta = pa.traction(ke, t), tb = pb.traction(ke, t);
+        diff2 += rule.weights[i] * ds_dt * (ta - tb) * (ta - tb);
+        norm2 += rule.weights[i] * ds_dt * tb * tb;
+      }
+    }
+  }
+  ErrorEstimate est;
+  if (norm2 > 0) est.pressure = std::sqrt(diff2 / norm2);
+  const double ua = post::strain_energy(coarse.discretization, a.u);
+  const double ub = post::strain_energy(enriched.discretization, b.u);
+  if (ub > 0) est.energy = std::sqrt(std::abs(ub - ua) / ub);
+  est.dofs = enriched.discretization.n_free;
+  est.newton_iterations = b.newton_iterations;
+  return est;
+}
+
+ErrorEstimate estimate_by_enrichment(const Solved& coarse, const model::ProgressFn& progress,
+                                     SolvedPtr* enriched) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SolvedPtr plus = solve(with_degrees_raised(coarse.spec), progress, &coarse);
+  ErrorEstimate est = estimate_error(coarse, *plus);
+  est.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (enriched) *enriched = std::move(plus);
+  return est;
+}
+
+}  // namespace hpcontact::adapt

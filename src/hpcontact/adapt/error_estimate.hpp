@@ -1,0 +1,37 @@
+// The error of a solve estimated from the solution itself: a second solve one degree higher on
+// the same mesh, and the change of the contact pressure and the energy between the two.
+#pragma once
+
+#include <limits>
+
+#include "hpcontact/adapt/solved.hpp"
+#include "hpcontact/model/problem_spec.hpp"
+
+namespace hpcontact::adapt {
+
+struct ErrorEstimate {
+  static constexpr double none = std::numeric_limits<double>::quiet_NaN();
+  /// ‖t − t⁺‖ / ‖t⁺‖ in L2 over the contact edges of every pair, t the traction the method
+  /// carries (the multiplier, or the penalty traction) per unit undeformed length.
+  double pressure = none;
+  /// √(|U⁺ − U| / U⁺), U the strain energy: the relative energy-norm error the difference
+  /// shows (U − U⁺ = ‖u⁺ − u‖²_E for a linear problem, Pythagoras).
+  double energy = none;
+  int dofs = 0;                ///< free dofs of the solve one degree higher
+  int newton_iterations = 0;   ///< of that solve
+  double seconds = 0;          ///< of that solve
+};
+
+/// The problem with the degree of every element of every body raised by one (p_xi and p_eta);
+/// AdaptError if an element already has the largest degree the input allows (30).
+model::ProblemSpec with_degrees_raised(const model::ProblemSpec& spec);
+
+/// The estimate of `coarse` from `enriched`, a solve of the same mesh with higher degrees.
+ErrorEstimate estimate_error(const Solved& coarse, const Solved& enriched);
+
+/// Solves `coarse`'s problem one degree higher (starting from its solution) and estimates the
+/// error of `coarse` from it; the solve is returned in `enriched` when not null.
+ErrorEstimate estimate_by_enrichment(const Solved& coarse, const model::ProgressFn& progress,
+                                     SolvedPtr* enriched = nullptr);
+
+}  // namespace hpcontact::adapt
