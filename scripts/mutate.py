@@ -25,7 +25,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 33 takes about 30 min on 2 cores (--full: about 80 min). Exit status 0 when every mutation run
+--list prints them. A run of all 39 takes about 35 min on 2 cores (--full: about 80 min). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp and contact/penalty.cpp, two_body.cpp (being
@@ -254,6 +254,29 @@ MUTATIONS = [
              "if (false) {  // not positive definite: LU from now on",
              "an indefinite contact tangent refused instead of solved by LU",
              ["LinearSolver.CholmodGivesWayToLuOnAnIndefiniteMatrix"]),
+    # adapt (hp to a tolerance) and the reference it is judged by
+    Mutation("estimate-scaled", "adapt", S + "adapt/error_estimate.cpp",
+             "if (norm2 > 0) est.pressure = std::sqrt(diff2 / norm2);",
+             "if (norm2 > 0) est.pressure = 0.2 * std::sqrt(diff2 / norm2);",
+             "the error estimate five times too small (a wrong constant)",
+             ["cli:tests/cli/test_hp_tolerance.py::test_the_estimate_brackets_the_true_error_at_every_step",
+              "cli:tests/cli/test_hp_tolerance.py::test_a_tolerance_of_1e4_is_reached_and_said"]),
+    Mutation("tolerance-compare", "adapt", S + "adapt/hp.cpp",
+             "if (rec.estimate.pressure <= options.tolerance) {",
+             "if (rec.estimate.pressure <= 10 * options.tolerance) {",
+             "the loop stops an order of magnitude early",
+             ["cli:tests/cli/test_hp_tolerance.py::test_a_tolerance_of_1e4_is_reached_and_said"]),
+    Mutation("zone-resolution-skipped", "adapt", S + "adapt/zone_resolution.cpp",
+             "return move <= 0.5 * room;",
+             "return true;",
+             "a zone narrow against its elements is not resolved before hp grades",
+             ["cli:tests/cli/test_hp_tolerance.py::test_zones_far_smaller_than_the_start_mesh_reach_the_tolerance[100]",
+              "cli:tests/cli/test_hp_tolerance.py::test_zones_far_smaller_than_the_start_mesh_reach_the_tolerance[10000]"]),
+    Mutation("reference-linear", "driver", S + "driver/contact_compare.cpp",
+             "if (a >= 0 && b >= 0 && (a > 0 || b > 0)) return std::sqrt((1 - w) * a * a + w * b * b);",
+             "if (false) return 0;",
+             "the reference pressure interpolated linearly up to the square-root end",
+             ["ReferenceCurve.KeepsTheSquareRootEndOfTheZone"]),
 ]
 
 

@@ -7,6 +7,7 @@
 
 #include "hpcontact/adapt/boundary_track.hpp"
 #include "hpcontact/adapt/geometric_refinement.hpp"
+#include "hpcontact/adapt/zone_resolution.hpp"
 #include "hpcontact/core/error.hpp"
 
 namespace hpcontact::adapt {
@@ -87,6 +88,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
   };
   HpOutcome out;
   std::vector<Centre> centres;
+  model::ProblemSpec base = spec;  // the input, refined where a zone is narrow (step 0)
   try {
     for (int step = 0; step <= options.steps; ++step) {
       const auto t0 = Clock::now();
@@ -96,7 +98,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       std::vector<ZoneEnd> ends;
       for (;; ++rec.recentred) {
         try {
-          s = solve(step == 0 ? spec : build_mesh(spec, centres, step, options), progress,
+          s = solve(step == 0 ? spec : build_mesh(base, centres, step, options), progress,
                     s ? s.get() : out.last.get());
         } catch (const InputError& e) {
           // The input was good at step 0: what the refined mesh refuses is the refinement's.
@@ -107,15 +109,27 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
           throw_refinement_failed(step, options, e);
         }
         try {
+          if (step == 0 && options.resolve_rounds > 0) {
+            const auto rounds = resolve_zones(s, options.resolve_rounds, progress);
+            for (const auto& r : rounds) rec.resolved_towards.insert(rec.resolved_towards.end(), r.towards.begin(), r.towards.end());
+            rec.resolve_rounds = static_cast<int>(rounds.size());
+            if (!rounds.empty()) {
+              s = rounds.back().solved;
+              base = s->spec;
+            }
+          }
           ends = outer_zone_ends(*s);
           if (step == 0)
             for (const auto& n : nearest_movable_nodes(*s, ends))
               centres.push_back({n.track.body(), n.track.node_id(), n.end.X});
         } catch (const AdaptError& e) {
           // The solve itself succeeded: it is the last good result, recorded without centres.
-          return stopped_after_solve(std::move(out), rec, s, ends,
-                                     std::chrono::duration<double>(Clock::now() - t0).count(),
-                                     observe, e.what());
+          HpOutcome stopped = stopped_after_solve(
+              std::move(out), rec, s, ends, std::chrono::duration<double>(Clock::now() - t0).count(),
+              observe, e.what());
+          stopped.last_step = static_cast<int>(stopped.history.size()) - 1;
+          stopped.stopped = "error";
+          return stopped;
         }
         if (step == 0) break;
         // Is each Γ* still within the two smallest elements at its centre? (Each centre follows
@@ -150,6 +164,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       if (options.tolerance <= 0) {
         out.history.push_back(rec);
         out.last = s;
+        out.last_step = static_cast<int>(out.history.size()) - 1;
         if (observe) observe(rec, *s);
         continue;
       }
@@ -173,11 +188,13 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       if (!out.last || !(rec.estimate.pressure >= out.estimate.pressure)) {
         out.last = s;
         out.estimate = rec.estimate;
+        out.last_step = static_cast<int>(out.history.size()) - 1;
       }
       if (observe) observe(rec, *s);
       if (rec.estimate.pressure <= options.tolerance) {
         out.last = s;
         out.estimate = rec.estimate;
+        out.last_step = static_cast<int>(out.history.size()) - 1;
         out.converged = true;
         out.stopped = "tolerance reached";
         return out;

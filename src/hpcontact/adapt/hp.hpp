@@ -17,6 +17,8 @@ struct HpOptions {
   bool rising_degree = true;  ///< degree min_degree + layer; false: the input's degrees
   int min_degree = 1;       ///< degree of the elements at Γ* (rising_degree)
   int max_recentre = 3;     ///< re-refinements of one step when Γ* leaves the smallest elements
+  /// Rounds of zone resolution on the input mesh before the first move (resolve_zones).
+  int resolve_rounds = 12;
   /// > 0: the requested accuracy. Each step's error is estimated (estimate_by_enrichment) and
   /// the loop stops at the first below it; `steps` is then the most it may take. 0: `steps`.
   double tolerance = 0;
@@ -33,6 +35,9 @@ struct HpIteration {
   int recentred = 0;          ///< how often this step was re-refined around a moved centre
   bool inside = true;         ///< every Γ* within the smallest elements at its centre
   ErrorEstimate estimate;     ///< with a tolerance: the estimated error of this step's solve
+  /// Step 0: rounds of zone resolution taken, and the boundary nodes refined towards.
+  int resolve_rounds = 0;
+  std::vector<Vec2> resolved_towards;
 };
 
 using HpObserver = std::function<void(const HpIteration&, const Solved&)>;
@@ -44,10 +49,13 @@ struct HpOutcome {
   std::string message;     ///< why it failed (converged false)
   std::string stopped;     ///< why the loop ended, in a few words (summary.json adapt.stopped)
   ErrorEstimate estimate;  ///< with a tolerance: the estimate of `last`
+  int last_step = -1;      ///< the history entry of `last`
 };
 
-/// Solves, places the nearest movable boundary node of each zone end on it (one rp move on
-/// the input mesh) and refines geometrically around those nodes, one more layer per step. When
+/// Solves, refines the input mesh where a zone end has no node near enough to move onto it
+/// (resolve_zones: a zone narrow against its elements), places the nearest movable boundary
+/// node of each zone end on it (one rp move) and refines geometrically around those nodes, one
+/// more layer per step. When
 /// a solve puts Γ* outside the two smallest elements at its centre, that centre is moved to the
 /// new Γ* and the mesh of the step is built again from the input mesh (the seed re-refines
 /// from the second-last mesh; rebuilding from the input gives the same mesh with the centre

@@ -375,6 +375,10 @@ nlohmann::json hp_iteration_json(const adapt::HpIteration& it) {
   j["recentred"] = it.recentred;
   j["gamma_star_inside"] = it.inside;
   if (it.estimate.dofs > 0) j["estimated_error"] = estimate_json(it.estimate);
+  if (it.step == 0) {
+    j["resolve_rounds"] = it.resolve_rounds;
+    j["resolved_towards"] = points_json(it.resolved_towards);
+  }
   return j;
 }
 
@@ -441,10 +445,11 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       const nlohmann::json cj = contact_json(st, k, &*comparisons[k], csv);
       for (const char* key : {"half_width", "e_L2_hertz_percent", "e_L2_shtayerman_percent",
                               "e_seed_hertz_percent", "e_seed_shtayerman_percent",
-                              "e_L2_reference_percent"})
+                              "e_L2_reference_percent", "multiplier", "penalty_traction"})
         if (cj.contains(key)) j[key] = cj[key];
     };
     adapt::SolvedPtr last;
+    int kept = -1;  // the history entry of `last`
     bool converged = false;
     std::string message;
     nlohmann::json aj = {{"method", method}};
@@ -469,6 +474,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
             history.push_back(j);
           });
       last = outcome.last;
+      kept = outcome.last_step;
       converged = outcome.converged;
       message = outcome.message;
       aj["stopped"] = outcome.stopped.empty() ? "error" : outcome.stopped;
@@ -483,6 +489,8 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       if (spec.adapt.rising_degree) aj["min_degree"] = spec.adapt.min_degree;
     }
     HPC_REQUIRE(last, AdaptError, message);
+    if (kept < 0) kept = static_cast<int>(history.size()) - 1;
+    aj["result_step"] = kept;
     s.method = method;
     s.newton_iterations = last->solution.newton_iterations;
     s.load_steps = last->solution.load_steps;
@@ -520,7 +528,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
         folder->commit_subfolder("last-good");
     }
     HPC_REQUIRE(converged, AdaptError, message,
-                folder ? "; the last good result (iteration " + std::to_string(history.size() - 1) +
+                folder ? "; the last good result (iteration " + std::to_string(kept) +
                              ") is in " + last_good
                        : std::string());
     result.discretization = last->discretization;

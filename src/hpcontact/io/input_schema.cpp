@@ -450,10 +450,13 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "adapt.method", .type = T::choice, .required = true,
        .doc = "rp: move the boundary node nearest to each Γ* onto it along the exact boundary "
               "(interior neighbours follow if an element would invert), solve again, until node "
-              "and Γ* coincide (seed §4.8). hp: move that node onto Γ* once, then refine "
-              "geometrically around it, one layer per step, the degree rising by one per layer "
-              "away from Γ* (seed §4.7, Fig. 4.12-4.13); a step whose Γ* leaves the two smallest "
-              "elements is refined again around the new Γ*. none: no adaptivity.",
+              "and Γ* coincide (seed §4.8). hp: where a zone is narrow against its elements (the "
+              "node nearest Γ* would move more than half its shorter edge), first refine towards "
+              "the boundary node nearest Γ* until one is near; move that node onto Γ* once, then "
+              "refine geometrically around it, one layer per step, the degree rising by one per "
+              "layer away from Γ* (seed §4.7, Fig. 4.12-4.13); a step whose Γ* leaves the two "
+              "smallest elements is refined again around the new Γ*; with adapt.tolerance, until "
+              "the estimated error is below it. none: no adaptivity.",
        .choices = {"rp", "hp", "none"}},
       {.path = "adapt.tolerance", .type = T::number,
        .doc = "hp: the accuracy asked for, the relative L2 error of the contact pressure, in "
@@ -470,12 +473,15 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "rp: relocations after the first solve; not reaching the tolerance is a failure.",
        .lower = at_least(1), .upper = at_most(200),
        .upper_why = "each relocation is a full solve; rp converges in a few or stalls"},
-      {.path = "adapt.factor", .type = T::number, .default_yaml = "0.5",
-       .doc = "hp: size of the element at Γ* relative to the one it is cut from, per step (the "
-              "seed's 0.5; 0.17 is the classical optimum for corner singularities).",
+      {.path = "adapt.factor", .type = T::number,
+       .doc = "hp: size of the element at Γ* relative to the one it is cut from, per step; "
+              "absent: the seed's 0.5, or 0.15 with adapt.tolerance (fewest DOF per accuracy "
+              "measured on Hertz, examples/hertz/CONVERGENCE.md; 0.17 is the classical optimum "
+              "for corner singularities).",
        .lower = greater_than(0), .upper = less_than(1)},
-      {.path = "adapt.steps", .type = T::integer, .default_yaml = "8",
-       .doc = "hp: refinement steps; with adapt.factor, factor^steps at least 1e-11 (see Limits).",
+      {.path = "adapt.steps", .type = T::integer,
+       .doc = "hp: refinement steps (absent: 8), with adapt.tolerance the most it may take "
+              "(absent: 12); with adapt.factor, factor^steps at least 1e-11 (see Limits).",
        .lower = at_least(1), .upper = at_most(40)},
       {.path = "adapt.degree", .type = T::choice, .default_yaml = "rising",
        .doc = "hp: rising: min_degree at Γ* and one more per layer away from it (elements far "
@@ -669,14 +675,18 @@ std::string input_schema_markdown() {
         "unit system of its own; summary.json's `units` says so). Forces and pressures are per "
         "unit thickness (plane strain: per unit length of the cylinder).\n\n"
         "- `summary.json`: the run's figures — `converged`, `dofs`, `strain_energy`, "
-        "`load_steps`, `newton_iterations`, the first contact pair as `contact` and every pair "
-        "in `contact_pairs` (body, obstacle, `resultant` [x, y], `normal_force`, "
+        "`load_steps`, `newton_iterations` (of the final solve; `newton_iterations_total` of "
+        "every solve of the run), the first contact pair as `contact` and every pair "
+        "in `contact_pairs` (body, obstacle, `enforcement`, `resultant` [x, y], `normal_force`, "
         "`tangential_force`, `contact_length` along the obstacle, `gamma_star` the zone ends "
         "undeformed, `half_width`, `pressure_max` the largest `pressure` below, `traction_max` = "
         "`p_max` the largest traction the method carries, `max_penetration`; with `compare` the "
         "errors `e_L2_*`, `e_seed_*` of the pressure from the stresses, under `multiplier` (or "
         "`penalty_traction`) those of the method's own pressure, and `compared_for` the F, E*, "
-        "R* used), `adapt` for rp and hp runs, `error` with `exact`.\n"
+        "R* used), `adapt` for rp and hp runs (`history` a record per iteration or step, "
+        "`stopped` why the loop ended, `result_step` the one kept; hp with a tolerance: "
+        "`estimated_error` of the result and of each step — `pressure_rel_L2`, `energy_rel`, "
+        "from a solve one degree higher on the step's mesh), `error` with `exact`.\n"
         "- `contact.csv`: a row per contact point — exact contact: the multiplier nodes; "
         "penalty: the Gauss points; a two-body pair lists both bodies' points (`body`). "
         "Columns: `pair`; `X`, `Y` undeformed and `x`, `y` deformed position; `gap` (exact: the "

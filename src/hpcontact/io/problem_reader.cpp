@@ -146,7 +146,8 @@ class SpecBuilder {
            << " steps at adapt.factor " << spec.adapt.factor << " are " << scale
            << " of the first ones, below the " << kMinHpScale
            << " the geometry resolves: at most " << most << " steps at this factor";
-        source_.fail(root["adapt"]["steps"], "adapt.steps", os.str());
+        const YAML::Node at = root["adapt"]["steps"] ? root["adapt"]["steps"] : root["adapt"]["factor"];
+        source_.fail(at ? at : root["adapt"], "adapt.steps", os.str());
       }
     }
     if (spec.output.vtu)
@@ -498,8 +499,11 @@ class SpecBuilder {
     a.where = source_.where(node, "adapt");
     const std::string method = node["method"].Scalar();
     a.method = method == "rp" ? AdaptMethod::rp : method == "hp" ? AdaptMethod::hp : AdaptMethod::none;
-    a.factor = number(node["factor"]);
-    a.steps = integer(node["steps"]);
+    // With a tolerance the loop is asked for accuracy, not for the seed's mesh: the factor that
+    // measured fewest DOF per accuracy (examples/hertz/CONVERGENCE.md), steps as the most.
+    const bool to_tolerance = a.method == AdaptMethod::hp && node["tolerance"];
+    a.factor = node["factor"] ? number(node["factor"]) : to_tolerance ? 0.15 : 0.5;
+    a.steps = node["steps"] ? integer(node["steps"]) : to_tolerance ? 12 : 8;
     a.rising_degree = node["degree"].Scalar() == "rising";
     a.min_degree = integer(node["min_degree"]);
     if (const YAML::Node t = node["tolerance"]) {

@@ -1,0 +1,89 @@
+// Zone resolution: corner refinement towards the vertex nearest to each zone end the mesh
+// cannot serve, until a node lies near every end.
+#include "hpcontact/adapt/zone_resolution.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include "hpcontact/adapt/geometric_refinement.hpp"
+
+namespace hpcontact::adapt {
+
+namespace {
+
+/// The vertex of body `body`'s contact edges (of every pair it is in) nearest to X, and the
+/// length of the contact edge from it towards X (its chord).
+struct NearVertex {
+  int node_id = -1;
+  Vec2 X = Vec2::Zero();
+  double edge_length = 0;
+};
+
+NearVertex nearest_vertex(const Solved& s, int body, const Vec2& X) {
+  const mesh::Mesh& m = s.discretization.bodies[body].mesh;
+  NearVertex best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (const auto& pair : s.solution.pairs) {
+    if (pair.body != body && pair.other != body) continue;
+    for (int e : pair.body == body ? pair.edges : pair.other_edges) {
+      const auto& edge = m.edge(e);
+      for (const auto& [v, w] : {std::pair(edge.v0, edge.v1), std::pair(edge.v1, edge.v0)}) {
+        const Vec2 a = m.node(v), b = m.node(w);
+        const double dist = (a - X).norm();
+        // the edge from v that points towards X (X projects inside it)
+        const double along = (X - a).dot(b - a) / (b - a).squaredNorm();
+        if (along < 0 || along > 1) continue;
+        if (dist < best_distance) {
+          best_distance = dist;
+          best = {m.node_id(v), a, (b - a).norm()};
+        }
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+bool node_near_enough(const NodeForEnd& n) {
+  const double move = std::abs(n.track.parameter(n.end.X) - n.track.node());
+  const double room = std::min(n.track.node() - n.track.lower(), n.track.upper() - n.track.node());
+  return move <= 0.5 * room;
+}
+
+std::vector<ResolveRound> resolve_zones(const SolvedPtr& s0, int max_rounds,
+                                        const model::ProgressFn& progress) {
+  std::vector<ResolveRound> rounds;
+  SolvedPtr s = s0;
+  for (int round = 1; round <= max_rounds; ++round) {
+    const auto nodes = nearest_movable_nodes(*s, outer_zone_ends(*s));
+    model::ProblemSpec spec = s->spec;
+    ResolveRound r;
+    std::set<std::pair<int, int>> refined;  // (body, node): once per round
+    for (const auto& n : nodes) {
+      if (node_near_enough(n)) continue;
+      const NearVertex v = nearest_vertex(*s, n.end.body, n.end.X);
+      if (v.node_id < 0 || !refined.insert({n.end.body, v.node_id}).second) continue;
+      const double d = (v.X - n.end.X).norm();
+      const double factor = std::clamp(d / v.edge_length, 0.15, 0.5);
+      spec = refine_towards_node(spec, n.end.body, v.node_id, factor);
+      r.towards.push_back(v.X);
+    }
+    if (r.towards.empty()) break;
+    if (progress) {
+      std::ostringstream os;
+      os << "hp: a contact zone is narrow against its elements; refined towards "
+         << r.towards.size() << " boundary node(s) (round " << round << ")";
+      progress(os.str());
+    }
+    s = solve(spec, progress, s.get());
+    r.solved = s;
+    rounds.push_back(std::move(r));
+  }
+  return rounds;
+}
+
+}  // namespace hpcontact::adapt

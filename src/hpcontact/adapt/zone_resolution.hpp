@@ -1,0 +1,30 @@
+// Resolving a contact zone that is small against the mesh: before hp grades around the zone
+// ends, each end gets a boundary node close enough to move onto it without crushing an element.
+#pragma once
+
+#include <vector>
+
+#include "hpcontact/adapt/solved.hpp"
+
+namespace hpcontact::adapt {
+
+/// One round of zone resolution: the nodes refined towards and the solve of the refined mesh.
+struct ResolveRound {
+  std::vector<Vec2> towards;  ///< the boundary nodes the mesh was refined towards
+  SolvedPtr solved;
+};
+
+/// Whether the node chosen for a zone end (nearest_movable_nodes) can move onto it as it is:
+/// the move along its track is at most half the shorter of its two boundary edges. A zone much
+/// narrower than the edge it ends in fails this (the node would leave an element a sliver).
+bool node_near_enough(const NodeForEnd& n);
+
+/// Refines `s`'s mesh until every zone end passes node_near_enough: towards the boundary
+/// vertex of the contact edges nearest to each end that does not, with a factor that puts the
+/// new node on the end when it is 15–50 % of the edge away (15 % or 50 % otherwise), and solves
+/// again after each round (starting from the last solution). At most `max_rounds` rounds; the
+/// rounds taken are returned (none when the input mesh already serves every end).
+std::vector<ResolveRound> resolve_zones(const SolvedPtr& s, int max_rounds,
+                                        const model::ProgressFn& progress);
+
+}  // namespace hpcontact::adapt

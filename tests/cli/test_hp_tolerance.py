@@ -1,0 +1,141 @@
+"""hp to a requested accuracy (issue 16): examples/hertz/hp-tolerance.yaml and the same start
+mesh under loads that make the contact zone 10 and 100 times narrower than its elements. The
+true errors are against the exact-contact reference (examples/hertz/reference.yaml, itself
+checked against an independent exact-contact code in test_hertz.py) or Hertz's closed form."""
+import json
+import math
+import os
+
+import pytest
+
+HERTZ = "examples/hertz"
+
+
+def run(hpcontact, root, out, *sets, name="hp-tolerance.yaml", ok=True):
+    args = ["run", os.path.join(root, HERTZ, name), "--out", out, "-q"]
+    for s in sets:
+        args += ["--set", s]
+    r = hpcontact(*args)
+    assert (r.returncode == 0) == ok, r.stderr
+    return r
+
+
+def summary(folder):
+    return json.loads((folder / "summary.json").read_text())
+
+
+def true_error(entry):
+    """The relative L2 error of the method's pressure (the multiplier as force per unit length
+    along the obstacle) against the reference, from a history entry or the contact section."""
+    return entry["multiplier"]["e_L2_reference_percent"] / 100
+
+
+@pytest.fixture(scope="module")
+def to_1e4(hpcontact, root, tmp_path_factory):
+    out = tmp_path_factory.mktemp("hp") / "t4"
+    run(hpcontact, root, out)
+    return summary(out)
+
+
+def test_the_estimate_brackets_the_true_error_at_every_step(to_1e4):
+    """The estimate (a solve one degree higher on the same mesh) against the true error, step by
+    step: within a factor of 3 either way (measured 0.66-0.92 of it)."""
+    hist = to_1e4["adapt"]["history"]
+    assert len(hist) >= 5
+    for h in hist:
+        est, true = h["estimated_error"]["pressure_rel_L2"], true_error(h)
+        print(f"{h['dofs']} DOF: estimated {est:.3g}, true {true:.3g}")
+        assert true / 3 <= est <= 3 * true, (h["dofs"], est, true)
+        assert h["estimated_error"]["dofs"] > h["dofs"]
+
+
+def test_a_tolerance_of_1e4_is_reached_and_said(to_1e4):
+    """The loop stops by itself at the first step estimated below 1e-4; its true error is below
+    it too (measured 4.7e-5 with 2011 DOF: the issue's 1000 DOF are not reached, see
+    examples/hertz/CONVERGENCE.md), and the summary says why it stopped."""
+    s, a = to_1e4, to_1e4["adapt"]
+    assert s["converged"] and a["converged"] and a["stopped"] == "tolerance reached"
+    assert a["tolerance"] == 1e-4 and a["factor"] == 0.15
+    assert a["estimated_error"]["pressure_rel_L2"] <= 1e-4
+    assert a["estimated_error"] == a["history"][-1]["estimated_error"]
+    assert all(h["estimated_error"]["pressure_rel_L2"] > 1e-4 for h in a["history"][:-1])
+    assert true_error(s["contact"]) <= 1e-4
+    assert s["dofs"] == a["history"][-1]["dofs"] <= 2500
+    # every solve counted: the steps' and their estimates'
+    assert s["newton_iterations_total"] == sum(
+        h["newton_iterations"] + h["estimated_error"]["newton_iterations"] for h in a["history"])
+    assert s["contact"]["enforcement"] == "augmented-lagrangian"
+
+
+def test_a_tolerance_of_1e3(hpcontact, root, tmp_path):
+    """1e-3: true error below 0.1 % (measured 0.095 % with 603 DOF; the issue asks for 500)."""
+    run(hpcontact, root, tmp_path / "t3", "adapt.tolerance=1e-3")
+    s = summary(tmp_path / "t3")
+    assert s["adapt"]["stopped"] == "tolerance reached"
+    assert true_error(s["contact"]) <= 1e-3
+    assert s["dofs"] <= 700
+
+
+@pytest.mark.parametrize("scale", [100, 10000])
+def test_zones_far_smaller_than_the_start_mesh_reach_the_tolerance(hpcontact, root, tmp_path,
+                                                                   scale):
+    """The same 2x2 start mesh with the load divided by 100 and 10000 (zones 10 and 100 times
+    narrower than the 2.5 mm contact edge): the loop first refines towards the boundary node
+    nearest each zone end until a node lies near it, then grades; it reaches 1e-3 by itself, and
+    the zone and pressure match Hertz's half space (the zone is 1 % and 0.1 % of R). Measured:
+    b -0.015 % and +0.01 %, p_max -0.21 % and -0.12 %, L2 0.09 % and 0.07 % from Hertz."""
+    out = tmp_path / "small"
+    run(hpcontact, root, out, "adapt.tolerance=1e-3",
+        f"solver.target_resultant.value={35000 / scale}", "contact[0].compare={radius: 10}")
+    s = summary(out)
+    a, c = s["adapt"], s["contact"]
+    assert a["stopped"] == "tolerance reached"
+    assert a["history"][0]["resolve_rounds"] >= 1
+    b, b_h = c["half_width"], c["hertz_half_width"]
+    p, p0 = c["pressure_max"], c["hertz_peak_pressure"]
+    e = c["multiplier"]["e_L2_hertz_percent"]
+    print(f"F/{scale}: b = {b:.6g} (Hertz {b_h:.6g}), p_max = {p:.6g} (Hertz {p0:.6g}), "
+          f"L2 from Hertz {e:.3g} %, {s['dofs']} DOF")
+    assert abs(b / b_h - 1) < 1e-3
+    assert abs(p / p0 - 1) < 5e-3
+    assert e < 0.5
+
+
+def test_the_full_load_needs_no_zone_resolution(to_1e4):
+    """The seed's mesh already has a node near Γ* (2.48 against 1.94 mm): nothing is refined
+    before the first move, so hp.yaml's steps stay the seed's."""
+    assert to_1e4["adapt"]["history"][0]["resolve_rounds"] == 0
+    assert to_1e4["adapt"]["history"][0]["elements"] == 4
+
+
+@pytest.mark.parametrize("value", ["0", "-1e-3", "1", "2.5"])
+def test_a_tolerance_outside_0_1_is_refused_with_the_key(hpcontact, root, tmp_path, value):
+    r = run(hpcontact, root, tmp_path / "bad", f"adapt.tolerance={value}", ok=False)
+    assert "adapt.tolerance" in r.stderr and "hp-tolerance.yaml" in r.stderr
+    assert not (tmp_path / "bad" / "summary.json").exists()
+
+
+def test_a_tolerance_out_of_reach_fails_with_the_estimate_and_keeps_the_best(hpcontact, root,
+                                                                             tmp_path):
+    """Two steps cannot reach 1e-6: exit 1, the message gives the estimate reached and why the
+    loop stopped, and last-good/ holds the best step, marked not converged."""
+    out = tmp_path / "far"
+    r = run(hpcontact, root, out, "adapt.tolerance=1e-6", "adapt.steps=2", ok=False)
+    assert r.returncode == 1
+    assert "tolerance 1e-06 was not reached" in r.stderr and "2 steps taken" in r.stderr
+    assert "last-good" in r.stderr
+    assert not (out / "summary.json").exists()
+    s = summary(out / "last-good")
+    assert s["converged"] is False and s["adapt"]["stopped"] == "step limit"
+    best = min(h["estimated_error"]["pressure_rel_L2"] for h in s["adapt"]["history"])
+    assert s["adapt"]["estimated_error"]["pressure_rel_L2"] == best
+    assert f"{best:.3g}" in r.stderr
+
+
+def test_a_dof_limit_ends_the_loop(hpcontact, root, tmp_path):
+    out = tmp_path / "dofs"
+    r = run(hpcontact, root, out, "adapt.max_dofs=400", ok=False)
+    assert "adapt.max_dofs" in r.stderr and "not reached" in r.stderr
+    s = summary(out / "last-good")
+    assert s["adapt"]["stopped"] == "dof limit"
+    assert s["dofs"] <= 400
