@@ -139,3 +139,28 @@ def test_a_dof_limit_ends_the_loop(hpcontact, root, tmp_path):
     s = summary(out / "last-good")
     assert s["adapt"]["stopped"] == "dof limit"
     assert s["dofs"] <= 400
+
+
+def test_two_bodies_from_gmsh_meshes_reach_the_tolerance(hpcontact, root, tmp_path):
+    """A steel roller on an aluminium block, both meshed coarsely by Gmsh
+    (examples/roller-block/roller-block-gmsh.yaml): the defaults converge to 1e-3 with zone
+    ends and graded nodes on both bodies, and the pressure agrees with the pair's Hertz
+    (E*, R*) as far as the finite block allows (measured b -0.4 %, p_max +0.4 %, L2 0.87 %)."""
+    out = tmp_path / "rb"
+    r = hpcontact("run", os.path.join(root, "examples/roller-block/roller-block-gmsh.yaml"),
+                  "--out", out, "-q")
+    assert r.returncode == 0, r.stderr
+    s = summary(out)
+    a, c = s["adapt"], s["contact"]
+    assert a["stopped"] == "tolerance reached" and a["estimated_error"]["pressure_rel_L2"] <= 1e-3
+    assert len(a["history"][-1]["centres"]) == 2  # a node at the zone end of each body
+    assert c["compared_for"]["effective_modulus"] == pytest.approx(
+        1 / ((1 - 0.3 ** 2) / 210000 + (1 - 0.33 ** 2) / 70000))
+    b, b_h = c["half_width"], c["hertz_half_width"]
+    p, p0 = c["pressure_max"], c["hertz_peak_pressure"]
+    e = c["multiplier"]["e_L2_hertz_percent"]
+    print(f"roller on block: b = {b:.5g} (Hertz {b_h:.5g}), p_max = {p:.5g} (Hertz {p0:.5g}), "
+          f"L2 {e:.3g} % from Hertz, {s['dofs']} DOF")
+    assert abs(b / b_h - 1) < 1e-2
+    assert abs(p / p0 - 1) < 1e-2
+    assert e < 2
