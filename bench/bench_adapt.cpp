@@ -1,6 +1,7 @@
-// The adaptive loops on the Hertz examples, whole: the rp relocation loop (rp5, rp8) and the
-// 8-step hp loop (hp.yaml with factor 0.17 and the seed's 0.5), as `hpcontact run` does them
-// without post-processing or files.
+// The adaptive loops on the Hertz examples, whole: the rp relocation loop (rp5, rp8), the
+// 8-step hp loop (hp.yaml with factor 0.17 and the seed's 0.5) and the hp loop to a tolerance
+// (hp-tolerance.yaml, 1e-3 and 1e-4, beside one linear solve of its final mesh), as `hpcontact
+// run` does them without post-processing or files.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -8,6 +9,8 @@
 #include "hpcontact/adapt/hp.hpp"
 #include "hpcontact/adapt/rp.hpp"
 #include "hpcontact/io/problem_reader.hpp"
+#include "hpcontact/model/discretization.hpp"
+#include "hpcontact/model/linear_solve.hpp"
 
 namespace {
 
@@ -56,5 +59,48 @@ void BM_HpLoop(benchmark::State& state) {
   state.counters["newton_iterations"] = newton;
 }
 BENCHMARK(BM_HpLoop)->ArgName("factor_percent")->Arg(17)->Arg(50)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// range(0) = k of the tolerance 10^-k: examples/hertz/hp-tolerance.yaml's loop (the defaults
+// with a tolerance: factor 0.15, the error of each step estimated by a solve one degree higher).
+adapt::HpOutcome hp_to_tolerance(const model::ProblemSpec& spec) {
+  return adapt::refine_towards_zone_ends(spec, adapt::hp_options(spec.adapt));
+}
+
+model::ProblemSpec tolerance_case(int k) {
+  return io::read_problem(example("hp-tolerance"), {"adapt.tolerance=1e-" + std::to_string(k)});
+}
+
+void BM_HpToTolerance(benchmark::State& state) {
+  const auto spec = tolerance_case(static_cast<int>(state.range(0)));
+  adapt::HpOutcome out;
+  for (auto _ : state) {
+    out = hp_to_tolerance(spec);
+    if (!out.converged) state.SkipWithError(out.message.c_str());
+  }
+  int newton = 0, solves = 0;
+  for (const auto& it : out.history)
+    newton += it.solve.newton_iterations + it.estimate.newton_iterations, solves += 2 + it.recentred;
+  state.counters["dofs"] = out.last ? out.last->discretization.n_free : 0;
+  state.counters["steps"] = static_cast<double>(out.history.size()) - 1;
+  state.counters["solves"] = solves;
+  state.counters["newton_iterations"] = newton;
+  state.counters["estimate"] = out.estimate.pressure;
+}
+BENCHMARK(BM_HpToTolerance)->ArgName("tol_exp")->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// One linear elastic solve of the final mesh of that loop (its prescribed displacement, no
+// contact): the unit of "the loop costs N linear solves".
+void BM_HpToToleranceFinalLinearSolve(benchmark::State& state) {
+  const auto out = hp_to_tolerance(tolerance_case(static_cast<int>(state.range(0))));
+  if (!out.last) {
+    state.SkipWithError(out.message.c_str());
+    return;
+  }
+  const auto d = model::discretize(out.last->spec);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(model::solve_linear(d, {.condense = out.last->spec.discretization.condense}).u);
+  state.counters["dofs"] = d.n_free;
+}
+BENCHMARK(BM_HpToToleranceFinalLinearSolve)->ArgName("tol_exp")->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
