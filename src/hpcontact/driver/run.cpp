@@ -130,8 +130,19 @@ int compared_pair(const Comparisons& c) {
   return -1;
 }
 
-/// The units of the results (summary.json "units"): the input's.
-nlohmann::json units_note() {
+/// The units of the results (summary.json "units"): the input's; an axisymmetric problem's
+/// integrals are over the whole solid of revolution.
+nlohmann::json units_note(const model::ProblemSpec& spec) {
+  const bool axisymmetric = std::any_of(spec.bodies.begin(), spec.bodies.end(), [](const auto& b) {
+    return b.material.plane == model::PlaneMode::axisymmetric;
+  });
+  if (axisymmetric)
+    return {{"note",
+             "hpcontact has no unit system: every result is in the units of the input's numbers "
+             "(consistent units, e.g. N and mm: lengths and displacements mm; axisymmetric: "
+             "forces, resultants and loads' totals over the whole circle N, edge loads per unit "
+             "area N/mm²; stresses and moduli N/mm²; strain energy of the whole solid N·mm)"},
+            {"axisymmetric", "integrals over the whole solid of revolution, dV = 2 pi r dA"}};
   return {{"note",
            "hpcontact has no unit system: every result is in the units of the input's numbers "
            "(consistent units, e.g. N and mm: lengths and displacements mm; forces per unit "
@@ -232,7 +243,7 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
               st.u.cwiseAbs().maxCoeff(), "): a load, prescribed displacement, length or material "
               "value of the input is too large for double precision");
   s.error = exact_error(spec, disc, st.u, s.strain_energy);
-  s.extra["units"] = units_note();
+  s.extra["units"] = units_note(spec);
   if (!st.contact.empty()) {
     // Every pair; "contact" is the first (as before several pairs were reported).
     s.extra["contact_pairs"] = contact_pairs_json(st, comparisons);

@@ -28,7 +28,8 @@ Vec2 edge_geometry(const mesh::ElementMap& map, int le, double t, Vec2* normal, 
 }
 
 Eigen::VectorXd edge_load(const ElementSpace& space, const mesh::ElementMap& map, int le, double t0,
-                          double t1, int n_gauss, double thickness, const TractionFn& traction) {
+                          double t1, int n_gauss, double thickness, const TractionFn& traction,
+                          bool axisymmetric) {
   const auto& rule = basis::gauss_legendre(n_gauss);
   const int n = space.n_modes();
   Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * n);
@@ -42,7 +43,7 @@ Eigen::VectorXd edge_load(const ElementSpace& space, const mesh::ElementMap& map
     const Vec2 q = traction(x, normal);
     const auto r = edge_reference_point(le, t);
     space.evaluate(r[0], r[1], N.data(), nullptr, nullptr);
-    const double c = w * ds_dt * thickness;
+    const double c = w * ds_dt * (axisymmetric ? 2 * 3.14159265358979323846 * x.x() : thickness);
     f.head(n) += c * q.x() * N;
     f.tail(n) += c * q.y() * N;
   }

@@ -23,10 +23,37 @@ Eigen::MatrixXd stiffness(const ElementValues& ev, const material::Elasticity& D
   return K;
 }
 
-Eigen::VectorXd body_force(const ElementValues& ev, const Vec2& b, double thickness) {
+Eigen::MatrixXd axisymmetric_stiffness(const ElementValues& ev, const material::LinearElastic& m) {
+  const int n = ev.n_modes(), np = ev.n_points();
+  Eigen::VectorXd w(np), inv_r(np);
+  for (int k = 0; k < np; ++k) {
+    w(k) = ev.JxW(k) * out_of_plane(true, 0, ev.x[k]);
+    inv_r(k) = 1 / ev.x[k].x();
+  }
+  // The plane part as plane strain with the weights 2π r JxW, then the hoop row H = N / r.
+  const Eigen::VectorXd s = w.cwiseSqrt();
+  const Eigen::MatrixXd Gx = ev.dN_dx * s.asDiagonal();
+  const Eigen::MatrixXd Gy = ev.dN_dy * s.asDiagonal();
+  const Eigen::MatrixXd H = ev.N * (inv_r.cwiseProduct(s)).asDiagonal();
+  const material::Elasticity D = m.D();
+  const double l = m.lambda(), l2m = D(0, 0), mu = D(2, 2);
+  Eigen::MatrixXd XX = Gx * Gx.transpose(), YY = Gy * Gy.transpose(), XY = Gx * Gy.transpose();
+  Eigen::MatrixXd HX = H * Gx.transpose(), HY = H * Gy.transpose(), HH = H * H.transpose();
+  Eigen::MatrixXd K(2 * n, 2 * n);
+  K.topLeftCorner(n, n) = l2m * XX + mu * YY + l * (HX + HX.transpose()) + l2m * HH;
+  K.bottomRightCorner(n, n) = l2m * YY + mu * XX;
+  K.topRightCorner(n, n) = l * XY + mu * XY.transpose() + l * HY;
+  K.bottomLeftCorner(n, n) = K.topRightCorner(n, n).transpose();
+  return K;
+}
+
+Eigen::VectorXd body_force(const ElementValues& ev, const Vec2& b, double thickness,
+                           bool axisymmetric) {
   const int n = ev.n_modes();
   Eigen::VectorXd f(2 * n);
-  const Eigen::VectorXd w = ev.N * ev.JxW * thickness;
+  Eigen::VectorXd m(ev.n_points());
+  for (int k = 0; k < ev.n_points(); ++k) m(k) = ev.JxW(k) * out_of_plane(axisymmetric, thickness, ev.x[k]);
+  const Eigen::VectorXd w = ev.N * m;
   f.head(n) = b.x() * w;
   f.tail(n) = b.y() * w;
   return f;

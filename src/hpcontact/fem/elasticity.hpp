@@ -14,8 +14,19 @@ namespace hpcontact::fem {
 /// K_e = t ∫ B^T D B dA (eq. 2.44), 2n × 2n, symmetric.
 Eigen::MatrixXd stiffness(const ElementValues& ev, const material::Elasticity& D, double thickness);
 
+/// The stiffness of an axisymmetric element (x = r): ∫ Bᵀ D₄ B 2π r dA with the hoop row
+/// ε_θθ = u_r / r (N_a / r on the u_r dofs) besides the plane rows; r is that of each Gauss
+/// point, never 0 (Gauss points are inside the element).
+Eigen::MatrixXd axisymmetric_stiffness(const ElementValues& ev, const material::LinearElastic& m);
+
+/// The out-of-plane measure at a point X of a body: its thickness, or 2π r (axisymmetric).
+inline double out_of_plane(bool axisymmetric, double thickness, const Vec2& X) {
+  return axisymmetric ? 2 * 3.14159265358979323846 * X.x() : thickness;
+}
+
 /// f_e = t ∫ N^T b dA (eq. 2.47) for a constant body force b (force per volume).
-Eigen::VectorXd body_force(const ElementValues& ev, const Vec2& b, double thickness);
+Eigen::VectorXd body_force(const ElementValues& ev, const Vec2& b, double thickness,
+                           bool axisymmetric = false);
 
 /// Strain (Voigt xx, yy, gamma_xy) at every quadrature point for local coefficients u_e
 /// (component-blocked); 3 × n_points.

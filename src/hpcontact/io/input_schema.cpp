@@ -120,8 +120,8 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "bodies[].regions[].material.nu", .type = T::number, .required = true,
        .doc = "Poisson's ratio.", .lower = greater_than(-1), .upper = less_than(0.5)},
       {.path = "bodies[].regions[].material.plane", .type = T::choice, .default_yaml = "strain",
-       .doc = "As bodies[].material.plane.", .choices = {"strain", "stress"}},
-      {.path = "bodies[].regions[].material.thickness", .type = T::number, .default_yaml = "1",
+       .doc = "As bodies[].material.plane.", .choices = {"strain", "stress", "axisymmetric"}},
+      {.path = "bodies[].regions[].material.thickness", .type = T::number,
        .unit = "length", .doc = "Ignored: the thickness is the body's.", .lower = greater_than(0)},
       {.path = "bodies[].material.model", .type = T::choice, .default_yaml = "linear-elastic",
        .doc = "Material law. `linear-elastic`: small strain. `saint-venant-kirchhoff` and "
@@ -134,9 +134,16 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "bodies[].material.nu", .type = T::number, .required = true,
        .doc = "Poisson's ratio.", .lower = greater_than(-1), .upper = less_than(0.5)},
       {.path = "bodies[].material.plane", .type = T::choice, .default_yaml = "strain",
-       .doc = "Plane strain or plane stress.", .choices = {"strain", "stress"}},
-      {.path = "bodies[].material.thickness", .type = T::number, .default_yaml = "1",
-       .unit = "length", .doc = "Out-of-plane thickness.", .lower = greater_than(0)},
+       .doc = "Plane strain, plane stress, or axisymmetric: the body is the meridian section "
+              "of a solid of revolution about the axis x = 0 (x the radius r >= 0, y the axial "
+              "coordinate z; ux = u_r, uy = u_z), with the hoop strain u_r / r; its integrals are "
+              "over the whole circle (dV = 2 pi r dA), so forces, resultants and energies are "
+              "totals of the solid. Linear elastic only, no contact yet; u_r = 0 on the axis is "
+              "the user's constraint (the quadrature never evaluates 1/r at r = 0).",
+       .choices = {"strain", "stress", "axisymmetric"}},
+      {.path = "bodies[].material.thickness", .type = T::number,
+       .unit = "length", .doc = "Out-of-plane thickness (absent: 1); not for an axisymmetric body.",
+       .lower = greater_than(0)},
 
       {.path = "bodies[].curves[].nodes", .type = T::node_pair, .required = true,
        .doc = "The edge [a, b] of an element that the curve replaces, oriented from a to b."},

@@ -185,9 +185,15 @@ class SpecBuilder {
     m.model = node["model"].Scalar();
     m.youngs_modulus = number(node["E"]);
     m.poisson_ratio = number(node["nu"]);
-    m.plane =
-        node["plane"].Scalar() == "stress" ? PlaneMode::plane_stress : PlaneMode::plane_strain;
-    m.thickness = number(node["thickness"]);
+    const std::string plane = node["plane"].Scalar();
+    m.plane = plane == "stress"         ? PlaneMode::plane_stress
+              : plane == "axisymmetric" ? PlaneMode::axisymmetric
+                                        : PlaneMode::plane_strain;
+    m.thickness = node["thickness"] ? number(node["thickness"]) : 1.0;
+    if (m.plane == PlaneMode::axisymmetric && node["thickness"])
+      source_.fail(node["thickness"], path + ".thickness",
+                   "does not apply to an axisymmetric body: its integrals are over the whole "
+                   "circle, 2 pi r per unit area of the section");
     m.where = source_.where(node, path);
     return m;
   }

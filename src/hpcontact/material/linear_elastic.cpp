@@ -18,7 +18,7 @@ void LinearElastic::validate(const std::string& where) const {
 Elasticity LinearElastic::D() const {
   const double E = youngs_modulus, nu = poisson_ratio;
   Elasticity D = Elasticity::Zero();
-  if (plane == Plane::strain) {
+  if (plane != Plane::stress) {
     const double c = E / ((1 + nu) * (1 - 2 * nu));
     D << c * (1 - nu), c * nu, 0, c * nu, c * (1 - nu), 0, 0, 0, c * (1 - 2 * nu) / 2;
   } else {
@@ -30,6 +30,17 @@ Elasticity LinearElastic::D() const {
 
 double LinearElastic::sigma_zz(const Voigt& sigma) const {
   return plane == Plane::strain ? poisson_ratio * (sigma(0) + sigma(1)) : 0.0;
+}
+
+double LinearElastic::lambda() const {
+  const double nu = poisson_ratio;
+  return youngs_modulus * nu / ((1 + nu) * (1 - 2 * nu));
+}
+
+Voigt LinearElastic::axisymmetric_stress(const Voigt& eps, double eps_hoop, double* hoop) const {
+  const double l = lambda(), l2m = D()(0, 0);  // λ + 2μ
+  if (hoop) *hoop = l * (eps(0) + eps(1)) + l2m * eps_hoop;
+  return D() * eps + l * eps_hoop * Voigt(1, 1, 0);
 }
 
 }  // namespace hpcontact::material

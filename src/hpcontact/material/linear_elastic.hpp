@@ -1,11 +1,12 @@
-// Linear isotropic elasticity in plane strain or plane stress (seed §2.1.3).
+// Linear isotropic elasticity in plane strain, plane stress (seed §2.1.3) or axisymmetry.
 #pragma once
 
 #include <Eigen/Dense>
 
 namespace hpcontact::material {
 
-enum class Plane { strain, stress };
+/// axisymmetric: the plane is the meridian section (x = r, y = z) of a solid of revolution.
+enum class Plane { strain, stress, axisymmetric };
 
 /// Voigt order (xx, yy, xy) with engineering shear strain gamma_xy = 2 eps_xy.
 using Voigt = Eigen::Vector3d;
@@ -19,11 +20,19 @@ struct LinearElastic {
   /// Throws InputError unless E > 0 and -1 < nu < 0.5; `where` names the input key.
   void validate(const std::string& where) const;
 
-  /// The plane elasticity matrix D: sigma = D eps (Voigt).
+  /// The plane elasticity matrix D: sigma = D eps (Voigt). Axisymmetric: the (rr, zz, rz)
+  /// block of the 4 × 4 matrix, the same as plane strain's.
   Elasticity D() const;
 
-  /// Out-of-plane stress: nu (sxx + syy) in plane strain, 0 in plane stress.
+  /// Out-of-plane stress: nu (sxx + syy) in plane strain, 0 in plane stress (not for
+  /// axisymmetry, whose hoop stress needs the hoop strain: axisymmetric_stress).
   double sigma_zz(const Voigt& sigma) const;
+
+  /// Lamé's first parameter λ = E ν / ((1 + ν)(1 − 2ν)) (3-D).
+  double lambda() const;
+  /// Axisymmetric stresses from the in-plane strains (ε_rr, ε_zz, γ_rz) and the hoop strain
+  /// ε_θθ = u_r / r: (σ_rr, σ_zz, τ_rz) = D ε + λ ε_θθ (1, 1, 0), and σ_θθ into *hoop.
+  Voigt axisymmetric_stress(const Voigt& eps, double eps_hoop, double* hoop) const;
 };
 
 }  // namespace hpcontact::material

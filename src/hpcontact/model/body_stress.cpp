@@ -1,6 +1,8 @@
 // Point stresses of linear and finite-strain bodies.
 #include "hpcontact/model/body_stress.hpp"
 
+#include <cmath>
+
 #include "hpcontact/fem/elasticity.hpp"
 #include "hpcontact/fem/finite_strain.hpp"
 
@@ -11,6 +13,13 @@ PointStress point_stress(const Body& body, int q, const fem::PointValues& pv, co
   PointStress ps;
   if (!body.finite_strain()) {
     ps.strain = fem::strain(pv, u_e);
+    if (body.axisymmetric()) {
+      // ε_θθ = u_r / r; on the axis (u_r = 0 there) its limit ∂u_r/∂r
+      const double r = pv.x.x(), ur = pv.N.dot(u_e.head(pv.N.size()));
+      const double hoop = r > 1e-12 * (1 + std::abs(pv.x.y())) ? ur / r : ps.strain(0);
+      ps.stress = m.axisymmetric_stress(ps.strain, hoop, &ps.stress_zz);
+      return ps;
+    }
     ps.stress = m.D() * ps.strain;
     ps.stress_zz = m.sigma_zz(ps.stress);
     return ps;

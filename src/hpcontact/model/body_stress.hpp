@@ -12,7 +12,7 @@ namespace hpcontact::model {
 struct PointStress {
   Eigen::Vector3d strain;  ///< (xx, yy, gamma_xy): linear, or Green–Lagrange (E11, E22, 2 E12)
   Eigen::Vector3d stress;  ///< (xx, yy, xy): D ε, or Cauchy σ = F S Fᵀ / J
-  double stress_zz = 0;    ///< out of plane
+  double stress_zz = 0;    ///< out of plane (axisymmetric: the hoop stress σ_θθ)
   Eigen::Matrix2d F = Eigen::Matrix2d::Identity();  ///< deformation gradient (finite strain)
 };
 

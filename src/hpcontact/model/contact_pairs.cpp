@@ -63,6 +63,10 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
   for (const auto& cs : spec.contact) {
     ContactPair pair;
     const Body& body = body_named(d, cs.body, cs.where, &pair.body);
+    for (const Body& b : d.bodies)
+      HPC_REQUIRE(!b.axisymmetric(), InputError, cs.where.str(), ": contact in axisymmetry is not "
+                  "implemented yet (body '", b.name, "' has material.plane: axisymmetric); only "
+                  "axisymmetric problems without contact are solved so far");
     pair.edges = edges_named(body, cs.edge_sets, cs.where.str() + ".edges");
     std::vector<contact::ChainEdge> chain;
     pair.points = chained_contact_points(body, pair.edges, cs.quadrature, &chain);

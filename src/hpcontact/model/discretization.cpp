@@ -96,8 +96,9 @@ Body make_body(const ProblemSpec& spec, int b) {
   material::LinearElastic mat;
   mat.youngs_modulus = bs.material.youngs_modulus;
   mat.poisson_ratio = bs.material.poisson_ratio;
-  mat.plane = bs.material.plane == PlaneMode::plane_stress ? material::Plane::stress
-                                                           : material::Plane::strain;
+  mat.plane = bs.material.plane == PlaneMode::plane_stress  ? material::Plane::stress
+              : bs.material.plane == PlaneMode::axisymmetric ? material::Plane::axisymmetric
+                                                             : material::Plane::strain;
   mat.validate(bs.material.where.str());
 
   Body body{bs.name, std::move(mesh), std::move(dofs), {}, {}, mat, bs.material.thickness, 0, {},
@@ -114,9 +115,18 @@ Body make_body(const ProblemSpec& spec, int b) {
   }
   if (bs.material.model == "saint-venant-kirchhoff") body.law = material::Law::saint_venant_kirchhoff;
   if (bs.material.model == "neo-hooke") body.law = material::Law::neo_hooke;
-  HPC_REQUIRE(body.law != material::Law::neo_hooke || mat.plane == material::Plane::strain, InputError,
+  HPC_REQUIRE(body.law != material::Law::neo_hooke || mat.plane != material::Plane::stress, InputError,
               bs.material.where.str(), ".plane: neo-hooke is implemented in plane strain only "
               "(use plane: strain, or saint-venant-kirchhoff in plane stress)");
+  if (body.axisymmetric()) {
+    HPC_REQUIRE(!body.finite_strain(), InputError, bs.material.where.str(),
+                ".plane: axisymmetric bodies are linear elastic so far (model: linear-elastic); "
+                "finite strain in axisymmetry is not implemented");
+    for (int v = 0; v < body.mesh.n_nodes(); ++v)
+      HPC_REQUIRE(body.mesh.node(v).x() >= 0, InputError, bs.where.str(), ".nodes: node ",
+                  body.mesh.node_id(v), " lies at x = r = ", body.mesh.node(v).x(),
+                  " < 0; an axisymmetric body is the meridian section r >= 0 (axis x = 0)");
+  }
   for (int q = 0; q < body.mesh.n_quads(); ++q) {
     body.maps.push_back(opt.lagrange ? mesh::ElementMap::isoparametric(body.mesh, q, opt.lagrange_type)
                                      : mesh::ElementMap::blending(body.mesh, q));
@@ -325,7 +335,8 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
     for (size_t k = 0; k + 1 < ts.size(); ++k) {
       if (ts[k + 1] - ts[k] < 1e-14) continue;
       const Eigen::VectorXd fe = fem::edge_load(body.dofs.element(q), body.maps[q], le, ts[k],
-                                                ts[k + 1], body.n_gauss[q] + 8, thickness, traction);
+                                                ts[k + 1], body.n_gauss[q] + 8, thickness, traction,
+                                                body.axisymmetric());
       for (int i = 0; i < fe.size(); ++i) d.load(body.global_dof(q, i)) += fe(i);
     }
   }
@@ -335,8 +346,15 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
 void find_free_rigid_motions(Discretization& d) {
   for (size_t b = 0; b < d.bodies.size(); ++b) {
     Body& body = d.bodies[b];
-    body.free_rigid_motions = free_rigid_motions(prescribed_vertices(d, static_cast<int>(b)),
-                                                 body.mesh.size());
+    const auto held = prescribed_vertices(d, static_cast<int>(b));
+    if (body.axisymmetric()) {
+      // A solid of revolution moves rigidly only along its axis (u_r = const strains the hoop).
+      const bool axial = std::any_of(held.begin(), held.end(), [](const PointConstraint& c) { return c.component == 1; });
+      body.free_rigid_motions = axial ? std::vector<std::string>{}
+                                      : std::vector<std::string>{"translation along the axis (uy)"};
+      continue;
+    }
+    body.free_rigid_motions = free_rigid_motions(held, body.mesh.size());
   }
 }
 
@@ -362,6 +380,10 @@ Discretization discretize(const ProblemSpec& spec) {
     for (const auto& nf : bs.nodal_forces) {
       const int v = body.mesh.node_index(nf.node);
       HPC_REQUIRE(v >= 0, InputError, nf.where.str(), ": node ", nf.node, " does not exist");
+      HPC_REQUIRE(!body.axisymmetric() || (body.mesh.node(v).x() == 0 && nf.force[0] == 0), InputError,
+                  nf.where.str(), ": a nodal force on an axisymmetric body is a force on the "
+                  "axis, along it: node ", nf.node, " at r = ", body.mesh.node(v).x(), " with fx = ",
+                  nf.force[0], " would be a ring load (give it as an edge load instead)");
       for (int comp = 0; comp < 2; ++comp)
         d.load(body.dof_offset + 2 * body.dofs.vertex_mode(v) + comp) += nf.force[comp];
     }
@@ -370,7 +392,7 @@ Discretization discretize(const ProblemSpec& spec) {
       for (int q = 0; q < body.mesh.n_quads(); ++q) {
         const auto ev = fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q],
                                             body.mesh, q);
-        const Eigen::VectorXd fe = fem::body_force(ev, bf, body.thickness);
+        const Eigen::VectorXd fe = fem::body_force(ev, bf, body.thickness, body.axisymmetric());
         for (int i = 0; i < fe.size(); ++i) d.load(body.global_dof(q, i)) += fe(i);
       }
     }

@@ -29,6 +29,8 @@ struct Body {
   /// Linear elasticity, or a hyperelastic law of finite strain (total Lagrangian).
   material::Law law = material::Law::linear;
   bool finite_strain() const { return law != material::Law::linear; }
+  /// The meridian section of a solid of revolution about x = 0 (integrals over 2π r dA).
+  bool axisymmetric() const { return material.plane == material::Plane::axisymmetric; }
   /// Elastic constants of the material regions, and per element its region (-1: `material`).
   std::vector<material::LinearElastic> region_materials;
   std::vector<int> element_region;

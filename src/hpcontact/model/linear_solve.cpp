@@ -45,6 +45,7 @@ std::string element_failure(const Body& body, int q, const std::string& what) {
 Eigen::MatrixXd element_stiffness(const Body& body, int q) {
   const auto ev =
       fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q], body.mesh, q);
+  if (body.axisymmetric()) return fem::axisymmetric_stiffness(ev, body.material_of(q));
   return fem::stiffness(ev, body.material_of(q).D(), body.thickness);
 }
 
@@ -165,13 +166,18 @@ LinearSolution solve_linear(const Discretization& d, const LinearSolveOptions& o
   sol.assembly_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   const auto t1 = Clock::now();
   solve::LinearSolver solver(options.solver);
-  try {
-    solver.factorize(K);
-  } catch (const NumericalError& e) {
-    const std::string where = explain_singular(d, solver.last_singular_row());
-    throw NumericalError(std::string(e.what()) + (where.empty() ? "" : " (" + where + ")"));
+  if (K.rows() == 0) {
+    // Every dof prescribed (e.g. p = 1 with the whole boundary given): nothing to solve.
+    sol.u = op.expand(d, Eigen::VectorXd(0), 1.0);
+  } else {
+    try {
+      solver.factorize(K);
+    } catch (const NumericalError& e) {
+      const std::string where = explain_singular(d, solver.last_singular_row());
+      throw NumericalError(std::string(e.what()) + (where.empty() ? "" : " (" + where + ")"));
+    }
+    sol.u = op.expand(d, solver.solve(f), 1.0);
   }
-  sol.u = op.expand(d, solver.solve(f), 1.0);
   op.recover_internal(d, sol.u, 1.0);
   require_finite(d, sol.u, "the solution");
   sol.solve_seconds = std::chrono::duration<double>(Clock::now() - t1).count();

@@ -26,7 +26,7 @@ struct SourceRef {
   std::string str() const;
 };
 
-enum class PlaneMode { plane_strain, plane_stress };
+enum class PlaneMode { plane_strain, plane_stress, axisymmetric };
 
 struct MaterialSpec {
   std::string model = "linear-elastic";

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/elasticity.hpp"
 #include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/fem/finite_strain.hpp"
@@ -63,7 +64,20 @@ double strain_energy(const model::Discretization& d, const Eigen::VectorXd& u) {
                  .energy;
         continue;
       }
-      const Eigen::Matrix3Xd eps = fem::strains(ev, body.element_coefficients(q, u));
+      const Eigen::VectorXd ue = body.element_coefficients(q, u);
+      const Eigen::Matrix3Xd eps = fem::strains(ev, ue);
+      if (body.axisymmetric()) {
+        // ½ εᵀ D₄ ε with the hoop strain u_r / r, over 2π r dA
+        const Eigen::VectorXd ur = ev.N.transpose() * ue.head(ev.n_modes());
+        const auto& m = body.material_of(q);
+        for (int k = 0; k < ev.n_points(); ++k) {
+          double hoop = 0;
+          const Eigen::Vector3d s = m.axisymmetric_stress(eps.col(k), ur(k) / ev.x[k].x(), &hoop);
+          U += 0.5 * fem::out_of_plane(true, 0, ev.x[k]) * ev.JxW(k) *
+               (eps.col(k).dot(s) + hoop * ur(k) / ev.x[k].x());
+        }
+        continue;
+      }
       for (int k = 0; k < ev.n_points(); ++k)
         U += 0.5 * body.thickness * ev.JxW(k) * eps.col(k).dot(D * eps.col(k));
     }
@@ -75,6 +89,9 @@ double energy_error_squared(const model::Discretization& d, const Eigen::VectorX
                             const StrainField& exact, int extra_points) {
   double E2 = 0;
   for (const auto& body : d.bodies) {
+    HPC_REQUIRE(!body.axisymmetric(), InputError, "body '", body.name, "': the energy error "
+                "against an exact strain field is for plane bodies (an axisymmetric one needs "
+                "the hoop strain too)");
     for (int q = 0; q < body.mesh.n_quads(); ++q) {
       const auto D = body.material_of(q).D();
       const auto ev = fem::element_values(body.dofs.element(q), body.maps[q],

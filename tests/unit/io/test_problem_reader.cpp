@@ -164,7 +164,7 @@ TEST(ProblemReader, FillsDefaultsEqualToSpecDefaults) {
   EXPECT_EQ(load.shape, hm::EdgeLoadSpec{}.shape);
   EXPECT_EQ(load.along, hm::EdgeLoadSpec{}.along);
   EXPECT_EQ(spec.discretization.where.str(), "case.yaml: discretization (default)");
-  for (const char* filled : {"quadrature_extra: 2", "linear: cholmod", "thickness: 1",
+  for (const char* filled : {"quadrature_extra: 2", "linear: cholmod", "plane: strain",
                              "vtu_subdivisions: 0", "body_force: [0, 0]", "shape: constant"})
     EXPECT_NE(read.effective_yaml.find(filled), std::string::npos) << filled;
 }
