@@ -145,7 +145,7 @@ TEST(Axisymmetric, ThickSphereAgainstLame) {
 }
 
 // What does not apply to a solid of revolution is refused with the key: a node at r < 0, a
-// thickness, a nodal force off the axis, and (not implemented yet) contact.
+// thickness, a nodal force off the axis.
 TEST(Axisymmetric, InputThatDoesNotApplyIsRefused) {
   const std::string file = std::string(HPC_SOURCE_DIR) + "/examples/lame/thick-cylinder.yaml";
   const std::vector<std::string> axi = {"bodies[0].material.plane=axisymmetric"};

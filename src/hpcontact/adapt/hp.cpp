@@ -185,7 +185,10 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         say(os.str());
       }
       out.history.push_back(rec);
-      if (!out.last || !(rec.estimate.pressure >= out.estimate.pressure)) {
+      // the best estimated step so far (an estimate that is not a number is never the best)
+      const bool better = std::isfinite(rec.estimate.pressure) &&
+                          !(rec.estimate.pressure >= out.estimate.pressure);
+      if (!out.last || better) {
         out.last = s;
         out.estimate = rec.estimate;
         out.last_step = static_cast<int>(out.history.size()) - 1;
@@ -200,9 +203,9 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         return out;
       }
       // The next mesh is centred on the zone ends of the better solve.
-      const auto better = outer_zone_ends(*enriched);
+      const auto ends_plus = outer_zone_ends(*enriched);
       for (Centre& c : centres)
-        if (const ZoneEnd* nearest = nearest_end(better, c.body, c.at)) c.at = nearest->X;
+        if (const ZoneEnd* nearest = nearest_end(ends_plus, c.body, c.at)) c.at = nearest->X;
     }
     if (options.tolerance > 0) {
       out.stopped = "step limit";

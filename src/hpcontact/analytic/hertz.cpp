@@ -30,11 +30,15 @@ double pair_radius(double r1, double r2) {
 }
 
 double Hertz::half_width() const {
-  return std::sqrt(4 * force * radius * (1 - poisson_ratio * poisson_ratio) /
-                   (pi * youngs_modulus));
+  const double E_star = youngs_modulus / (1 - poisson_ratio * poisson_ratio);
+  if (sphere) return std::cbrt(3 * force * radius / (4 * E_star));
+  return std::sqrt(4 * force * radius / (pi * E_star));
 }
 
-double Hertz::peak_pressure() const { return 2 * force / (pi * half_width()); }
+double Hertz::peak_pressure() const {
+  const double a = half_width();
+  return sphere ? 3 * force / (2 * pi * a * a) : 2 * force / (pi * a);
+}
 
 double Hertz::pressure(double x) const {
   const double b = half_width();

@@ -23,10 +23,17 @@ double pair_radius(double radius_1, double radius_2 = std::numeric_limits<double
 ///   b = sqrt(4 F R (1 - nu²) / (pi E)),  p0 = 2 F / (pi b),  p(x) = p0 sqrt(1 - x²/b²).
 struct Hertz {
   double radius, force, youngs_modulus, poisson_ratio;
+  /// Spheres (3-D, axisymmetric models): a = (3 F R* / (4 E*))^(1/3), p0 = 3 F / (2 pi a²),
+  /// p(r) = p0 sqrt(1 - r²/a²), F the total force; half_width() is a.
+  bool sphere = false;
   /// Two elastic bodies (or one on a rigid obstacle): b = sqrt(4 F R* / (pi E*)), that is the
   /// single body's formula with R = R*, E = E* and nu = 0.
   static Hertz pair(double effective_radius, double force, double effective_modulus) {
     return {effective_radius, force, effective_modulus, 0.0};
+  }
+  /// Two spheres (or a sphere on a flat) of R* and E* (1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂).
+  static Hertz spheres(double effective_radius, double force, double effective_modulus) {
+    return {effective_radius, force, effective_modulus, 0.0, true};
   }
   double half_width() const;
   double peak_pressure() const;

@@ -13,7 +13,7 @@ namespace hpcontact::contact {
 std::vector<ContactPoint> contact_points_at(const mesh::Mesh& mesh, const fem::DofMap& dofs,
                                             const std::vector<mesh::ElementMap>& maps, int e,
                                             int edge_index, const std::vector<double>& ts,
-                                            const std::vector<double>& ws, double thickness) {
+                                            const std::vector<double>& ws, const fem::OutOfPlane& thickness) {
   const auto& edge = mesh.edge(e);
   HPC_REQUIRE(edge.on_boundary(), InputError, mesh.context(), ": contact edge ",
               mesh.node_id(edge.v0), "-", mesh.node_id(edge.v1), " is not on the boundary");
@@ -38,7 +38,7 @@ std::vector<ContactPoint> contact_points_at(const mesh::Mesh& mesh, const fem::D
     cp.t = ts[i];
     double ds_dt;
     cp.X = fem::edge_geometry(maps[q], le, cp.t, &cp.normal, &ds_dt);
-    cp.weight = ws[i] * ds_dt * thickness;
+    cp.weight = ws[i] * ds_dt * thickness.at(cp.X);
     const auto r = fem::edge_reference_point(le, cp.t);
     es.evaluate(r[0], r[1], N.data(), nullptr, nullptr);
     cp.N.resize(local.size());
@@ -54,7 +54,7 @@ std::vector<ContactPoint> contact_points_at(const mesh::Mesh& mesh, const fem::D
 std::vector<ContactPoint> contact_points(const mesh::Mesh& mesh, const fem::DofMap& dofs,
                                          const std::vector<mesh::ElementMap>& maps,
                                          const std::vector<int>& edges, int n_points,
-                                         double thickness) {
+                                         const fem::OutOfPlane& thickness) {
   const auto& rule = basis::gauss_legendre(n_points);
   std::vector<ContactPoint> points;
   for (size_t k = 0; k < edges.size(); ++k) {

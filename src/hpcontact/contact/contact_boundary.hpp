@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include "hpcontact/fem/dof_map.hpp"
+#include "hpcontact/fem/out_of_plane.hpp"
 #include "hpcontact/mesh/element_map.hpp"
 
 namespace hpcontact::contact {
@@ -16,7 +17,7 @@ struct ContactPoint {
   int element = -1, local_edge = -1;
   int edge = -1;        ///< index of its edge in the contact boundary's list of edges
   double t = 0;         ///< local edge parameter in [-1, 1]
-  double weight = 0;    ///< Gauss weight × ds/dt × thickness: ∫ f ds t ≈ Σ weight f
+  double weight = 0;    ///< Gauss weight × ds/dt × thickness (2π r): ∫ f ds t ≈ Σ weight f
   Vec2 X;               ///< undeformed position
   Vec2 normal;          ///< undeformed outward unit normal of the body
   std::vector<int> modes;  ///< body modes whose shape function is non-zero on this edge
@@ -28,14 +29,14 @@ struct ContactPoint {
 std::vector<ContactPoint> contact_points(const mesh::Mesh& mesh, const fem::DofMap& dofs,
                                          const std::vector<mesh::ElementMap>& maps,
                                          const std::vector<int>& edges, int n_points,
-                                         double thickness);
+                                         const fem::OutOfPlane& thickness);
 
 /// Points of one boundary edge at local edge parameters t (of the edge's first element), each
 /// with weight w × ds/dt × thickness; `edge_index` is stored as ContactPoint::edge.
 std::vector<ContactPoint> contact_points_at(const mesh::Mesh& mesh, const fem::DofMap& dofs,
                                             const std::vector<mesh::ElementMap>& maps, int edge,
                                             int edge_index, const std::vector<double>& t,
-                                            const std::vector<double>& w, double thickness);
+                                            const std::vector<double>& w, const fem::OutOfPlane& thickness);
 
 /// A contact edge as one chain of a boundary path sees it: the mesh edge, its end vertices in
 /// the chain's direction, and whether its local edge parameter runs against that direction.

@@ -33,7 +33,7 @@ double MultiplierNodes::interpolate(int k, double t, const Eigen::VectorXd& lamb
 
 MultiplierNodes multiplier_nodes(const mesh::Mesh& mesh, const fem::DofMap& dofs,
                                  const std::vector<mesh::ElementMap>& maps,
-                                 const std::vector<ChainEdge>& chain, double thickness) {
+                                 const std::vector<ChainEdge>& chain, const fem::OutOfPlane& thickness) {
   MultiplierNodes m;
   const int ne = static_cast<int>(chain.size());
   m.edge_nodes.resize(ne);
@@ -45,6 +45,21 @@ MultiplierNodes multiplier_nodes(const mesh::Mesh& mesh, const fem::DofMap& dofs
     const auto& rule = basis::gauss_lobatto(p + 1);
     m.edge_points[k] = rule.points;
     const auto pts = contact_points_at(mesh, dofs, maps, ce.edge, k, rule.points, rule.weights, thickness);
+    // Each Lobatto point's share ∫ L_i ds t. The Lobatto rule itself gives it when t is constant
+    // (exact for L_i ds/dt); with t = 2π r (axisymmetric) it would give a node on the axis no
+    // share at all, so the integral is taken by Gauss–Legendre points.
+    std::vector<double> share(p + 1);
+    for (int i = 0; i <= p; ++i) share[i] = pts[i].weight;
+    if (thickness.axisymmetric) {
+      const auto& gauss = basis::gauss_legendre(2 * p + 6);
+      const auto gp = contact_points_at(mesh, dofs, maps, ce.edge, k, gauss.points, gauss.weights, thickness);
+      std::fill(share.begin(), share.end(), 0.0);
+      Eigen::VectorXd L;
+      for (const auto& g : gp) {
+        m.shape(k, g.t, L);
+        for (int i = 0; i <= p; ++i) share[i] += L(i) * g.weight;
+      }
+    }
     const Vec2 a = mesh.node(mesh.edge(ce.edge).v0), b = mesh.node(mesh.edge(ce.edge).v1);
     const double scale = p * p / std::max((a - b).norm(), 1e-300);
     std::vector<int>& nodes = m.edge_nodes[k];
@@ -70,7 +85,7 @@ MultiplierNodes multiplier_nodes(const mesh::Mesh& mesh, const fem::DofMap& dofs
         m.nodes.push_back(mn);
         if (c == 0) chain_first_node = node;
       }
-      m.nodes[node].weight += pts[i].weight;
+      m.nodes[node].weight += share[i];
       m.nodes[node].stiffness_scale = std::max(m.nodes[node].stiffness_scale, scale);
       nodes[i] = node;
     }

@@ -45,6 +45,6 @@ struct MultiplierNodes {
 /// boundary's edge list follows), the trace degree of each edge from `dofs`.
 MultiplierNodes multiplier_nodes(const mesh::Mesh& mesh, const fem::DofMap& dofs,
                                  const std::vector<mesh::ElementMap>& maps,
-                                 const std::vector<ChainEdge>& chain, double thickness);
+                                 const std::vector<ChainEdge>& chain, const fem::OutOfPlane& thickness);
 
 }  // namespace hpcontact::contact

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <limits>
+#include <numbers>
 #include <optional>
 #include <sstream>
 #include <unordered_map>
@@ -113,14 +115,18 @@ void PressureComparison::check_reference_force(double force) const {
   // ∫ p dx over x >= 0 by the trapezoidal rule: the half of F it carries.
   const auto& x = reference_->x;
   const auto& p = reference_->p;
+  // The force it carries: twice ∫ p dx over x >= 0 (a cylinder), or ∫ p 2π r dr (a sphere).
   double carried = 0;
   for (size_t i = 0; i + 1 < x.size(); ++i)
     if (x[i + 1] > 0) {
       const double a = std::max(x[i], 0.0);
-      carried += (x[i + 1] - a) * 0.5 * ((*reference_)(a) + p[i + 1]);
+      const double wa = in_.axisymmetric ? std::numbers::pi * a : 1.0;
+      const double wb = in_.axisymmetric ? std::numbers::pi * x[i + 1] : 1.0;
+      carried += (x[i + 1] - a) * 0.5 * (wa * (*reference_)(a) + wb * p[i + 1]);
     }
   HPC_REQUIRE(std::abs(2 * carried - force) <= 1e-2 * force, InputError, in_.where, ".reference: '",
-              reference_name_, "' carries F = ", 2 * carried, " (twice its integral over x >= 0) but "
+              reference_name_, "' carries F = ", 2 * carried,
+              in_.axisymmetric ? " (its integral over 2 pi r dr) but " : " (twice its integral over x >= 0) but "
               "the closed forms are computed for F = ", force,
               ": a reference of another load (or of the pressure on the body's own normal, "
               "pressure.csv of hpcontact before force per unit length along the obstacle)");
@@ -130,6 +136,8 @@ PressureComparison::ClosedForms PressureComparison::closed_forms(
     const model::ContactPair& pair, const model::ContactResult& result) const {
   const double F = comparison_force(in_, pair, result);
   if (!in_.force) check_reference_force(F);
+  if (in_.axisymmetric)
+    return {F, analytic::Hertz::spheres(in_.effective_radius, F, in_.effective_modulus), std::nullopt};
   return {F, analytic::Hertz::pair(in_.effective_radius, F, in_.effective_modulus),
           analytic::Shtayerman::two_circles(in_.radius, in_.other_radius, F, in_.effective_modulus)};
 }
@@ -152,16 +160,18 @@ nlohmann::json PressureComparison::measure(const model::Discretization& d,
   };
   const double b = hertz.half_width(), p0 = hertz.peak_pressure();
   const std::function<double(double)> hertz_p = [&](double x) { return hertz.pressure(x); };
-  const std::function<double(double)> shtayerman_p = [&](double x) { return shtayerman.pressure(x); };
+  const std::function<double(double)> shtayerman_p = [&](double x) { return shtayerman->pressure(x); };
   // The errors of one FE pressure (from the stresses or the method's), keys of summary.json.
   auto errors = [&](const std::function<double(double)>& fe) {
     nlohmann::json e;
     const auto eh = post::pressure_errors(fe, hertz_p, b, p0);
-    const auto es = post::pressure_errors(fe, shtayerman_p, shtayerman.half_width(), p0);
+    if (shtayerman) {
+      const auto es = post::pressure_errors(fe, shtayerman_p, shtayerman->half_width(), p0);
+      e["e_L2_shtayerman_percent"] = es.e_L2;
+      e["e_seed_shtayerman_percent"] = es.e_seed;
+    }
     e["e_L2_hertz_percent"] = eh.e_L2;
     e["e_seed_hertz_percent"] = eh.e_seed;
-    e["e_L2_shtayerman_percent"] = es.e_L2;
-    e["e_seed_shtayerman_percent"] = es.e_seed;
     if (reference_) {
       const auto er = post::pressure_errors(fe, *reference_, b, p0);
       e["e_L2_reference_percent"] = er.e_L2;
@@ -172,7 +182,8 @@ nlohmann::json PressureComparison::measure(const model::Discretization& d,
   nlohmann::json j = errors([&](double x) { return at(x).first; });
   j["hertz_half_width"] = b;
   j["hertz_peak_pressure"] = p0;
-  j["shtayerman_half_width"] = shtayerman.half_width();
+  if (shtayerman) j["shtayerman_half_width"] = shtayerman->half_width();
+  j["closed_form"] = in_.axisymmetric ? "Hertz, spheres (3-D)" : "Hertz and Shtayerman, cylinders (plane)";
   j["pressure_measured_from"] = "stress";
   j["pressure_measured_as"] = "force per unit length along the obstacle";
   // What the closed forms are computed for (docs/input.md, contact[].compare).
@@ -229,7 +240,8 @@ PressureCurve PressureComparison::curve(const model::Discretization& d,
     c.traction.push_back(bp ? bp->traction : 0.0);
     c.minus_sigma_nn.push_back(bp ? bp->minus_sigma_nn : 0.0);
     c.hertz.push_back(cf.hertz.pressure(x));
-    c.shtayerman.push_back(cf.shtayerman.pressure(x));
+    c.shtayerman.push_back(cf.shtayerman ? cf.shtayerman->pressure(x)
+                                         : std::numeric_limits<double>::quiet_NaN());
     if (reference_) c.reference.push_back((*reference_)(x));
   }
   return c;

@@ -89,7 +89,8 @@ private:
   struct ClosedForms {
     double force;
     analytic::Hertz hertz;
-    analytic::Shtayerman shtayerman;
+    /// Shtayerman's exact circle: plane models only (none for spheres).
+    std::optional<analytic::Shtayerman> shtayerman;
   };
   ClosedForms closed_forms(const model::ContactPair& pair, const model::ContactResult& result) const;
   void check_reference_force(double force) const;

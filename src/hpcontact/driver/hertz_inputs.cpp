@@ -61,7 +61,7 @@ double body_modulus(const model::Body& body, const std::vector<int>& edges, cons
               ": Hertz and Shtayerman are the linear theory: body '", body.name,
               "' has a finite-strain material (bodies[].material.model)");
   const auto& m = body.material_of(body.mesh.edge(edges.front()).quads[0]);
-  return analytic::contact_modulus(m.youngs_modulus, m.poisson_ratio, m.plane == material::Plane::strain);
+  return analytic::contact_modulus(m.youngs_modulus, m.poisson_ratio, m.plane != material::Plane::stress);
 }
 
 std::string number(double v) {
@@ -139,7 +139,9 @@ HertzInputs hertz_inputs(const model::ProblemSpec& spec, const model::Discretiza
     hi = std::max(hi, pair.coordinate(cp.X));
   }
   const double tol = 1e-6 * body.mesh.size();
-  in.models_of_whole = lo >= -tol || hi <= tol ? 2 : 1;
+  in.axisymmetric = body.axisymmetric();
+  // An axisymmetric section with the axis is the whole solid of revolution (its resultant the total).
+  in.models_of_whole = in.axisymmetric ? 1 : lo >= -tol || hi <= tol ? 2 : 1;
   in.side = lo >= -tol || hi > tol ? 1 : -1;
 
   // The force: given, or from the target of force control (pair 0, its normal along the

@@ -29,6 +29,8 @@ struct HertzInputs {
   /// +1 when the contact boundary lies on the positive side of obstacle.point along the
   /// obstacle (or both), −1 when on the negative side: the comparison samples side · [0, 1.5 b].
   double side = 1;
+  /// The body is axisymmetric: 3-D Hertz of spheres, F the total force (models_of_whole 1).
+  bool axisymmetric = false;
   std::string where;  ///< the compare section's key path and place in the file
 };
 

@@ -1,6 +1,8 @@
 // Edge load integration along the exact (or isoparametric) element boundary.
 #include "hpcontact/fem/edge_load.hpp"
 
+#include "hpcontact/fem/out_of_plane.hpp"
+
 #include "hpcontact/basis/quadrature.hpp"
 
 namespace hpcontact::fem {
@@ -43,7 +45,7 @@ Eigen::VectorXd edge_load(const ElementSpace& space, const mesh::ElementMap& map
     const Vec2 q = traction(x, normal);
     const auto r = edge_reference_point(le, t);
     space.evaluate(r[0], r[1], N.data(), nullptr, nullptr);
-    const double c = w * ds_dt * (axisymmetric ? 2 * 3.14159265358979323846 * x.x() : thickness);
+    const double c = w * ds_dt * OutOfPlane(thickness, axisymmetric).at(x);
     f.head(n) += c * q.x() * N;
     f.tail(n) += c * q.y() * N;
   }

@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 
 #include "hpcontact/fem/element_values.hpp"
+#include "hpcontact/fem/out_of_plane.hpp"
 #include "hpcontact/material/linear_elastic.hpp"
 
 namespace hpcontact::fem {
@@ -21,7 +22,7 @@ Eigen::MatrixXd axisymmetric_stiffness(const ElementValues& ev, const material::
 
 /// The out-of-plane measure at a point X of a body: its thickness, or 2π r (axisymmetric).
 inline double out_of_plane(bool axisymmetric, double thickness, const Vec2& X) {
-  return axisymmetric ? 2 * 3.14159265358979323846 * X.x() : thickness;
+  return OutOfPlane(thickness, axisymmetric).at(X);
 }
 
 /// f_e = t ∫ N^T b dA (eq. 2.47) for a constant body force b (force per volume).

@@ -138,8 +138,10 @@ const std::vector<KeySpec>& input_schema() {
               "of a solid of revolution about the axis x = 0 (x the radius r >= 0, y the axial "
               "coordinate z; ux = u_r, uy = u_z), with the hoop strain u_r / r; its integrals are "
               "over the whole circle (dV = 2 pi r dA), so forces, resultants and energies are "
-              "totals of the solid. Linear elastic only, no contact yet; u_r = 0 on the axis is "
-              "the user's constraint (the quadrature never evaluates 1/r at r = 0).",
+              "totals of the solid (compare: 3-D Hertz of spheres). Linear elastic only; u_r = 0 "
+              "on the axis is the user's constraint (the quadrature never evaluates 1/r at r = "
+              "0); a multiplier node on the axis carries no share of the boundary, its pressure "
+              "is the even extension of its neighbours'.",
        .choices = {"strain", "stress", "axisymmetric"}},
       {.path = "bodies[].material.thickness", .type = T::number,
        .unit = "length", .doc = "Out-of-plane thickness (absent: 1); not for an axisymmetric body.",

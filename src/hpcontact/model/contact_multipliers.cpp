@@ -47,7 +47,7 @@ std::vector<contact::ContactPoint> segmented_points(const PairConstraints& c, co
       }
     }
     auto pts = contact::contact_points_at(body.mesh, body.dofs, body.maps, c.edges[k], k, t, w,
-                                          body.thickness);
+                                          body.out_of_plane());
     points.insert(points.end(), pts.begin(), pts.end());
   }
   return points;
@@ -67,13 +67,13 @@ std::shared_ptr<const PairConstraints> make_pair_constraints(const ContactPairSp
   c->segmented = two_bodies && c->rule == ConstraintRule::mortar;
   c->segment_quadrature = spec.quadrature;
   for (const auto& ce : chain) c->edges.push_back(ce.edge);
-  c->nodes = contact::multiplier_nodes(body.mesh, body.dofs, body.maps, chain, body.thickness);
+  c->nodes = contact::multiplier_nodes(body.mesh, body.dofs, body.maps, chain, body.out_of_plane());
   const int n = c->nodes.size();
   c->weight = Eigen::VectorXd::Zero(n);
   for (int j = 0; j < n; ++j) {
     const auto& node = c->nodes.nodes[j];
     auto at = contact::contact_points_at(body.mesh, body.dofs, body.maps, chain[node.edge].edge,
-                                         node.edge, {node.t}, {1.0}, body.thickness);
+                                         node.edge, {node.t}, {1.0}, body.out_of_plane());
     c->node_points.push_back(std::move(at.front()));
   }
   if (c->rule == ConstraintRule::collocation) {
@@ -88,6 +88,23 @@ std::shared_ptr<const PairConstraints> make_pair_constraints(const ContactPairSp
     for (const auto& a : c->coefficients)
       for (const auto& [j, v] : a) c->weight(j) += v;
   }
+  if (body.axisymmetric()) {
+    // The nodes on the axis whose share ∫ L_j 2π r ds vanishes: for p >= 2 the Lobatto rule,
+    // exact for L_j r on a straight edge, gives it as w_j 2π r_j = 0 (for p = 1 it is 2π h²/6).
+    std::vector<double> edge_share(n, 0.0);  // the largest share of a node's edges' nodes
+    for (const auto& nodes : c->nodes.edge_nodes) {
+      double most = 0;
+      for (int j : nodes) most = std::max(most, std::abs(c->weight(j)));
+      for (int j : nodes) edge_share[j] = std::max(edge_share[j], most);
+    }
+    c->passive.assign(n, 0);
+    bool any = false;
+    for (int j = 0; j < n; ++j)
+      if (std::abs(c->nodes.nodes[j].X.x()) <= 1e-12 * body.mesh.size() &&
+          std::abs(c->weight(j)) <= 1e-6 * edge_share[j])
+        any = c->passive[j] = 1;
+    if (!any) c->passive.clear();
+  }
   if (spec.friction.law != "none") {
     c->friction.kind = spec.friction.law == "stick" ? contact::FrictionLaw::Kind::stick
                                                     : contact::FrictionLaw::Kind::coulomb;
@@ -96,7 +113,7 @@ std::shared_ptr<const PairConstraints> make_pair_constraints(const ContactPairSp
   c->scale.resize(n);
   for (int j = 0; j < n; ++j) {
     const auto& m = body.material_of(c->nodes.nodes[j].element);
-    const double E = m.plane == material::Plane::strain
+    const double E = m.plane != material::Plane::stress
                          ? m.youngs_modulus / (1 - m.poisson_ratio * m.poisson_ratio)
                          : m.youngs_modulus;
     c->scale(j) = E * c->nodes.nodes[j].stiffness_scale;
@@ -245,7 +262,32 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
 
 bool node_active(const PairConstraints& c, const ConstraintState& s, const Eigen::VectorXd& lambda,
                  int j) {
+  if (!c.passive.empty() && c.passive[j]) return false;
   return s.found[j] && lambda(j) - c.scale(j) * s.G(j) / c.weight(j) >= 0;
+}
+
+void fill_passive_multipliers(const PairConstraints& c, Eigen::VectorXd& lambda) {
+  if (c.passive.empty()) return;
+  for (int k = 0; k < static_cast<int>(c.nodes.edge_nodes.size()); ++k) {
+    const auto& nodes = c.nodes.edge_nodes[k];
+    const auto& tp = c.nodes.edge_points[k];
+    const int n = static_cast<int>(nodes.size());
+    for (int a = 0; a < n; ++a) {
+      if (!c.passive[nodes[a]]) continue;
+      // L_i'(t_a) of the edge's Lagrange polynomials
+      double da = 0, rest = 0;
+      for (int m = 0; m < n; ++m)
+        if (m != a) da += 1 / (tp[a] - tp[m]);
+      for (int i = 0; i < n; ++i) {
+        if (i == a) continue;
+        double v = 1 / (tp[i] - tp[a]);
+        for (int m = 0; m < n; ++m)
+          if (m != i && m != a) v *= (tp[a] - tp[m]) / (tp[i] - tp[m]);
+        rest += v * lambda(nodes[i]);
+      }
+      lambda(nodes[a]) = -rest / da;
+    }
+  }
 }
 
 }  // namespace hpcontact::model

@@ -33,6 +33,10 @@ struct PairConstraints {
   std::vector<contact::ContactPoint> node_points;                  ///< a point at each node
   std::vector<std::vector<std::pair<int, double>>> coefficients;   ///< per point: (node j, a_qj)
   Eigen::VectorXd weight;        ///< W_j [length]: ∫ λ ds ≈ Σ_j W_j λ_j
+  /// Nodes with no share of the boundary (W_j = 0: on the axis of an axisymmetric body, where
+  /// the circle 2π r vanishes): their multiplier does no work, so they are never active and
+  /// their value is the one that makes the pressure even in r (fill_passive_multipliers).
+  std::vector<char> passive;
   /// κ_j = E' p² / h [force/length³] of the node's edge: the scale of the complementarity
   /// function (the active-set test λ_j − κ_j G_j/W_j ≥ 0, the row κ_j G_j of an active node):
   /// a property of the body, so that neither the active set nor the answer depends on an input
@@ -115,6 +119,10 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
 /// C_j = λ_j − max(0, λ_j − κ_j ĝ_j), ĝ_j = G_j / W_j, whose zeros are g ≥ 0, λ ≥ 0, λ g = 0;
 /// a node touching without pressure counts as active, so a body that rests on its support is
 /// held from the first iteration).
+/// The multipliers of the passive nodes from their edges' others: dλ_h/dt = 0 at the node (the
+/// pressure of a solid of revolution is even in r at its axis).
+void fill_passive_multipliers(const PairConstraints& c, Eigen::VectorXd& lambda);
+
 bool node_active(const PairConstraints& c, const ConstraintState& s, const Eigen::VectorXd& lambda,
                  int j);
 

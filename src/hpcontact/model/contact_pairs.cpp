@@ -46,7 +46,7 @@ std::vector<contact::ContactPoint> chained_contact_points(const Body& body, std:
   std::vector<contact::ContactPoint> points;
   for (const auto& ce : chain) {
     auto pts = contact::contact_points(body.mesh, body.dofs, body.maps, {ce.edge}, quadrature,
-                                       body.thickness);
+                                       body.out_of_plane());
     for (auto& cp : pts) cp.edge = static_cast<int>(edges.size());
     // Local edge parameters run with the element's edge; put them along the chain.
     if (ce.against) std::reverse(pts.begin(), pts.end());
@@ -63,10 +63,6 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
   for (const auto& cs : spec.contact) {
     ContactPair pair;
     const Body& body = body_named(d, cs.body, cs.where, &pair.body);
-    for (const Body& b : d.bodies)
-      HPC_REQUIRE(!b.axisymmetric(), InputError, cs.where.str(), ": contact in axisymmetry is not "
-                  "implemented yet (body '", b.name, "' has material.plane: axisymmetric); only "
-                  "axisymmetric problems without contact are solved so far");
     pair.edges = edges_named(body, cs.edge_sets, cs.where.str() + ".edges");
     std::vector<contact::ChainEdge> chain;
     pair.points = chained_contact_points(body, pair.edges, cs.quadrature, &chain);

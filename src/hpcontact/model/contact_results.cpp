@@ -231,7 +231,7 @@ ZoneEnds node_zone_ends(const Body& body, const ContactPair& pair,
     const auto& edge = body.mesh.edge(pair.edges[k]);
     const int q = edge.quads[0], le = edge.local_edge[0];
     const auto& m = body.material_of(q);
-    const double E = m.plane == material::Plane::strain
+    const double E = m.plane != material::Plane::stress
                          ? m.youngs_modulus / (1 - m.poisson_ratio * m.poisson_ratio)
                          : m.youngs_modulus;
     const int p = static_cast<int>(en.size()) - 1;
@@ -285,9 +285,15 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       std::tie(n.X, n.x) = boundary_position(body, cp.element, cp.local_edge, cp.t, u);
       n.pressure = (*multipliers)(j);
       if (friction) n.tangential = (*multipliers)(c.size() + j);
-      n.gap = s.found[j] ? s.G(j) / c.weight(j) : std::numeric_limits<double>::infinity();
+      n.gap = !s.found[j]           ? std::numeric_limits<double>::infinity()
+              : c.weight(j) != 0.0 ? s.G(j) / c.weight(j)
+              : c.rule == ConstraintRule::collocation ? s.points[j].gap  // the node's own point
+                                                      : 0.0;
       // the solver's own active set (a round-off pressure on an open node is no contact)
-      n.active = node_active(c, s, multipliers->head(c.size()), j) && n.pressure >= 0;
+      // (a passive node, on an axis, is in contact where its even extension of the pressure is)
+      const bool passive = !c.passive.empty() && c.passive[j];
+      n.active = passive ? n.pressure > 0
+                         : node_active(c, s, multipliers->head(c.size()), j) && n.pressure >= 0;
       res.p_max = std::max(res.p_max, n.pressure);
       res.nodes.push_back(n);
       contact::PointState ps;

@@ -95,7 +95,10 @@ Eigen::VectorXd ContactSystem::unknowns(const Eigen::VectorXd& u,
 std::vector<Eigen::VectorXd> ContactSystem::multipliers(const Eigen::VectorXd& x) const {
   std::vector<Eigen::VectorXd> m(pairs_.size());
   for (size_t k = 0; k < pairs_.size(); ++k)
-    if (z_offset_[k] >= 0) m[k] = x.segment(n_u_ + z_offset_[k], n_multipliers(k));
+    if (z_offset_[k] >= 0) {
+      m[k] = x.segment(n_u_ + z_offset_[k], n_multipliers(k));
+      fill_passive_multipliers(*pairs_[k].constraints, m[k]);
+    }
   return m;
 }
 
@@ -243,11 +246,14 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
       if (q.gap < deepest_[k].gap) deepest_[k] = {q.gap, q.x};
     if (states) (*states)[k] = s.points;
     int active_nodes = 0;
+    // An inactive node's row W_j λ_j = 0; a passive node (W_j = 0) pins λ_j with the largest W.
+    const double passive_row = c.passive.empty() ? 0.0 : c.weight.cwiseAbs().maxCoeff();
     for (int j = 0; j < c.size(); ++j) {
       const bool active = node_active(c, s, lambda, j);
+      const double Wj = !c.passive.empty() && c.passive[j] ? passive_row : c.weight(j);
       active_nodes += active;
       states_[z_offset_[k] + j] = active;
-      r(o + j) = active ? c.scale(j) * s.G(j) : c.weight(j) * lambda(j);
+      r(o + j) = active ? c.scale(j) * s.G(j) : Wj * lambda(j);
       if (!T) continue;
       for (const auto& [dof, v] : s.dG[j]) {
         // force column ∂r_u/∂λ_j = −∂G_j/∂u, and the row's u-part (zeros when inactive, so that
@@ -260,7 +266,7 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
           z_rows.emplace_back(o + j, dof, c.scale(j) * v);  // for ∂r_j/∂α
         }
       }
-      if (!active) T->emplace_back(o + j, o + j, c.weight(j));
+      if (!active) T->emplace_back(o + j, o + j, Wj);
       else if (target_ && pair.moving)
         T->emplace_back(o + j, size() - 1, c.scale(j) * s.dG_dfactor(j));
     }

@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include "hpcontact/fem/dof_map.hpp"
+#include "hpcontact/fem/out_of_plane.hpp"
 #include "hpcontact/material/hyperelastic.hpp"
 #include "hpcontact/mesh/element_map.hpp"
 #include "hpcontact/mesh/mesh.hpp"
@@ -31,6 +32,8 @@ struct Body {
   bool finite_strain() const { return law != material::Law::linear; }
   /// The meridian section of a solid of revolution about x = 0 (integrals over 2π r dA).
   bool axisymmetric() const { return material.plane == material::Plane::axisymmetric; }
+  /// What turns the section's integrals into the solid's: the thickness, or 2π r.
+  fem::OutOfPlane out_of_plane() const { return {thickness, axisymmetric()}; }
   /// Elastic constants of the material regions, and per element its region (-1: `material`).
   std::vector<material::LinearElastic> region_materials;
   std::vector<int> element_region;

@@ -123,7 +123,13 @@ void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, i
   }
   Y_ = sparse.solve_columns(E_hat);
   const Eigen::MatrixXd S = H_tilde_ - G_F * Y_;
-  S_.compute(S);
+  // Equilibrated, D⁻¹ S D⁻¹ with D² = |diag S|: the rows of multipliers whose boundary share is
+  // small (near the axis of an axisymmetric body, ∝ r) are as well conditioned as the others,
+  // and the test below sees dependence, not scale.
+  s_scale_ = S.diagonal().cwiseAbs().cwiseSqrt();
+  for (int i = 0; i < nf; ++i)
+    if (!(s_scale_(i) > 0)) s_scale_(i) = 1;
+  S_.compute(s_scale_.cwiseInverse().asDiagonal() * S * s_scale_.cwiseInverse().asDiagonal());
   const double rcond = S_.rcond();
   if (!(rcond > 1e-14)) {
     std::ostringstream os;
@@ -155,7 +161,7 @@ Eigen::VectorXd SaddlePointSolver::solve(const LinearSolver& sparse, const Eigen
   Eigen::VectorXd z_F;
   Eigen::VectorXd du = a;
   if (nf > 0) {
-    z_F = S_.solve(b_F - G_F_ * a);
+    z_F = S_.solve((b_F - G_F_ * a).cwiseQuotient(s_scale_)).cwiseQuotient(s_scale_);
     du -= Y_ * z_F;
   }
   Eigen::VectorXd x(n_ + m_);

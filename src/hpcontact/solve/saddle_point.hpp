@@ -57,7 +57,8 @@ private:
   SparseMatrix G_F_;                   ///< the free rows of G
   Eigen::MatrixXd H_tilde_;            ///< H_FF − H_FD H_DD⁻¹ H_DF
   Eigen::MatrixXd Y_;                  ///< A⁻¹ Ê
-  Eigen::PartialPivLU<Eigen::MatrixXd> S_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> S_;  ///< of the equilibrated D⁻¹ S D⁻¹
+  Eigen::VectorXd s_scale_;                 ///< D
 };
 
 }  // namespace hpcontact::solve
