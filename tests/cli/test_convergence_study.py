@@ -217,10 +217,10 @@ def test_hp_reaches_one_percent_below_seed_dofs(quick):
 def test_hp_points_above_the_floor_fit_exponential_better(quick):
     """ln e against N^(1/3) (e = C exp(-γ N^(1/3))) against ln e over ln N: on the points above
     the reference's floor the exponential law leaves the smaller rms residual. Measured on the
-    quick sweep (reference p = 4..6, floor 0.011 %, so 7 of the 8 factor-0.17 steps): rms 0.182
-    (exp., γ = 0.83) against 0.211 (alg., β = 2.16) -- only 14 % apart; at factor 0.5 (all 8
-    steps): 0.129 (γ = 0.64) against 0.463 (β = 1.74). Constant p on the twice-refined mesh:
-    0.020 against 0.155."""
+    quick sweep (reference p = 4..6, floor 0.0025 %, so 7 of the 8 factor-0.17 steps): rms 0.190
+    (exp., γ = 0.83) against 0.197 (alg.) -- only 4 % apart; at factor 0.5 (all 8 steps): 0.129
+    against 0.463. Constant p on the twice-refined mesh: 0.018 against 0.152
+    (examples/hertz/CONVERGENCE.md)."""
     thr = quick["json"]["reference"]["fit_threshold_percent"]
     assert 0 < thr < 0.02
     measured = {}

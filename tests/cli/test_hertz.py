@@ -23,7 +23,7 @@ def read_curve(path):
 
 @pytest.fixture(scope="module")
 def reference_run(hpcontact, root, tmp_path_factory):
-    """One run of reference.yaml (12448 DOF, a few seconds) shared by the tests below."""
+    """One run of reference.yaml (30976 DOF, a few seconds) shared by the tests below."""
     out = tmp_path_factory.mktemp("reference")
     return out, run(hpcontact, root, "reference.yaml", out)
 
@@ -39,7 +39,7 @@ def test_reference_reproduces_its_curve(reference_run, root):
     x_ref, p_ref = read_curve(os.path.join(root, HERTZ, "reference-pressure.csv"))
     assert len(x_new) == len(x_ref)
     p0 = s["contact"]["hertz_peak_pressure"]
-    # same points; pressures equal to round-off of a 12448-DOF solve (1e-6 of the peak)
+    # same points; pressures equal to round-off of a 30976-DOF solve (1e-6 of the peak)
     assert max(abs(a - b) for a, b in zip(x_new, x_ref)) < 1e-9
     assert max(abs(a - b) for a, b in zip(p_new, p_ref)) < 1e-6 * p0
     (end,) = s["contact"]["gamma_star"]

@@ -394,10 +394,13 @@ const std::vector<KeySpec>& input_schema() {
               "that contradicts the target is refused before the solve.",
        .lower = greater_than(0)},
       {.path = "contact[].compare.reference", .type = T::string,
-       .doc = "CSV with columns x (undeformed, along the obstacle) and pressure_from_stress "
-              "(force per unit length along the obstacle): the pressure.csv of an overkill run "
-              "of the same model, relative to this file; absent: none. Refused when its force, "
-              "∫ pressure dx over x >= 0, differs from F/2 by more than 1 %."},
+       .doc = "CSV with columns x (undeformed, along the obstacle) and a pressure (force per unit "
+              "length along the obstacle): the pressure.csv of an overkill run of the same model, "
+              "relative to this file; absent: none. Of an exact-contact run (a "
+              "pressure_multiplier column) its `pressure` is read, else pressure_from_stress (or "
+              "pressure); between samples p² is interpolated linearly (the square-root end of "
+              "the zone kept). Refused when its force, ∫ pressure dx over x >= 0 (∫ p 2 pi r dr "
+              "for an axisymmetric body), differs from F/2 (F) by more than 1 %."},
 
       {.path = "contact[].obstacle.type", .type = T::choice, .required = true,
        .doc = "plane: a straight line; circle: a disc (or a hole with inside); curve: a smooth "
