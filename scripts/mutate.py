@@ -25,7 +25,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 42 takes about 38 min on 2 cores (--full: about 80 min). Exit status 0 when every mutation run
+--list prints them. A run of all 43 takes about 39 min on 2 cores (--full: about 80 min). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp and contact/penalty.cpp, two_body.cpp (being
@@ -270,6 +270,11 @@ MUTATIONS = [
              "if (false) {",
              "the multiplier nodes' shares lumped by Lobatto in axisymmetry (the axis node's lost)",
              ["cli:tests/cli/test_axisymmetric_contact.py::test_contact_patch_of_a_solid_cylinder[1]"]),
+    Mutation("axisymmetric-contact-weight", "contact", S + "contact/contact_boundary.cpp",
+             "cp.weight = ws[i] * ds_dt * thickness.at(cp.X);",
+             "cp.weight = ws[i] * ds_dt * thickness.thickness;",
+             "contact points weighted by the thickness in axisymmetry instead of 2 pi r",
+             ["cli:tests/cli/test_axisymmetric_contact.py::test_ball_on_a_flat_is_3d_hertz"]),
     # adapt (hp to a tolerance) and the reference it is judged by
     Mutation("estimate-scaled", "adapt", S + "adapt/error_estimate.cpp",
              "if (norm2 > 0) est.pressure = std::sqrt(diff2 / norm2);",

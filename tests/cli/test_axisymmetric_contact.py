@@ -99,3 +99,24 @@ def test_a_large_ball_load_departs_from_the_half_space(hpcontact, root, tmp_path
           f"L2 {c['multiplier']['e_L2_hertz_percent']:.3g} % from Hertz")
     assert s["adapt"]["stopped"] == "tolerance reached"
     assert -2e-2 < da < 0 and -2e-2 < dp < 0
+
+
+def test_shrink_fit_pressure_is_lames(hpcontact, root, tmp_path):
+    """examples/lame/shrink-fit.yaml: a hub of bore a = 9.99 and outer radius b = 20 on a shaft
+    of radius c = 10 (E = 210000, ν = 0.3, u_z = 0 on both faces): the interface pressure of
+    exact contact, at every multiplier node and from the stresses, within 1e-6 of Lamé's
+    (computed here; measured 2e-12)."""
+    s = run(hpcontact, os.path.join(root, "examples/lame/shrink-fit.yaml"), tmp_path / "sf")
+    E, nu, a, b, c = 210000.0, 0.3, 9.99, 20.0, 10.0
+    k = (1 + nu) / E
+    hub = k * ((1 - 2 * nu) * a ** 3 + a * b * b) / (b * b - a * a) * c / a  # u_hub(a) per p
+    shaft = -k * (1 - 2 * nu) * c                                             # u_shaft(c) per p
+    p = (c - a) / (hub - shaft)
+    with open(tmp_path / "sf" / "contact.csv") as f:
+        rows = [r for r in csv.DictReader(f) if r.get("body", "shaft") == "shaft"]
+    assert len(rows) >= 9
+    for r in rows:
+        assert abs(float(r["pressure"]) / p - 1) < 1e-6, (r["Y"], r["pressure"], p)
+        assert abs(float(r["pressure_from_stress"]) / p - 1) < 1e-6
+    # the total force on the shaft's face, 2π c h p, h = 4
+    assert abs(s["contact"]["normal_force"]) == pytest.approx(2 * math.pi * c * 4 * p, rel=1e-6)

@@ -117,6 +117,16 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       pair.other_boundary = std::make_shared<contact::DeformableBoundary>(
           other.mesh, other.dofs, other.maps, pair.other_edges);
       pair.obstacle = pair.other_boundary;
+      // Positions along the other body are measured along its tangent at the point nearest
+      // reference_point, undeformed (the common tangent of the linear theory: x for a block's
+      // top or a cylinder's bottom, the axis direction for a bore), not along x whatever the
+      // interface.
+      pair.other_boundary->set_displacement(Eigen::VectorXd::Zero(other.dofs.n_dofs()));
+      if (contact::BoundaryPoint foot; pair.other_boundary->project(pair.reference_point, foot)) {
+        pair.tangent = Vec2(foot.normal.y(), -foot.normal.x());
+        if (pair.tangent.x() < -1e-12 || (std::abs(pair.tangent.x()) <= 1e-12 && pair.tangent.y() < 0))
+          pair.tangent = -pair.tangent;  // the sense of x (of y for a tangent along y)
+      }
     }
     if (exact) {
       pair.constraints = make_pair_constraints(cs, body, chain, pair.points, pair.other >= 0);
