@@ -164,3 +164,4 @@ TEST(Axisymmetric, InputThatDoesNotApplyIsRefused) {
   spec.bodies[0].nodal_forces = {f};
   EXPECT_THROW(model::discretize(spec), InputError);
 }
+

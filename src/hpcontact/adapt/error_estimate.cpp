@@ -13,12 +13,6 @@
 
 namespace hpcontact::adapt {
 
-namespace {
-
-constexpr int kLargestDegree = 30;  // the input's limit of discretization.degree
-
-}  // namespace
-
 model::ProblemSpec with_degrees_raised(const model::ProblemSpec& spec) {
   model::ProblemSpec raised = spec;
   for (auto& body : raised.bodies) {
@@ -26,7 +20,7 @@ model::ProblemSpec with_degrees_raised(const model::ProblemSpec& spec) {
     for (const int id : body.element_ids) {
       const auto it = body.element_degrees.find(id);
       std::array<int, 2> p = it != body.element_degrees.end() ? it->second : base;
-      HPC_REQUIRE(std::max(p[0], p[1]) < kLargestDegree, AdaptError, spec.file, ": element ", id,
+      HPC_REQUIRE(std::max(p[0], p[1]) < model::kMaxDegree, AdaptError, spec.file, ": element ", id,
                   " of body '", body.name, "' has degree ", std::max(p[0], p[1]), ", the largest "
                   "there is: its error cannot be estimated by one degree more");
       body.element_degrees[id] = {p[0] + 1, p[1] + 1};

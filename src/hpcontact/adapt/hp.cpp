@@ -87,6 +87,12 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
     if (progress) progress(s);
   };
   HpOutcome out;
+  // The solve `s` of the history's last entry becomes the result.
+  auto keep = [&](const SolvedPtr& s, const ErrorEstimate& estimate) {
+    out.last = s;
+    out.estimate = estimate;
+    out.last_step = static_cast<int>(out.history.size()) - 1;
+  };
   std::vector<Centre> centres;
   model::ProblemSpec base = spec;  // the input, refined where a zone is narrow (step 0)
   try {
@@ -110,13 +116,11 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         }
         try {
           if (step == 0 && options.resolve_rounds > 0) {
-            const auto rounds = resolve_zones(s, options.resolve_rounds, progress);
-            for (const auto& r : rounds) rec.resolved_towards.insert(rec.resolved_towards.end(), r.towards.begin(), r.towards.end());
-            rec.resolve_rounds = static_cast<int>(rounds.size());
-            if (!rounds.empty()) {
-              s = rounds.back().solved;
-              base = s->spec;
-            }
+            const Resolution r = resolve_zones(s, options.resolve_rounds, progress);
+            rec.resolve_rounds = r.rounds;
+            rec.resolved_towards = r.towards;
+            s = r.solved;
+            base = s->spec;
           }
           ends = outer_zone_ends(*s);
           if (step == 0)
@@ -163,8 +167,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       }
       if (options.tolerance <= 0) {
         out.history.push_back(rec);
-        out.last = s;
-        out.last_step = static_cast<int>(out.history.size()) - 1;
+        keep(s, {});
         if (observe) observe(rec, *s);
         continue;
       }
@@ -185,19 +188,13 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         say(os.str());
       }
       out.history.push_back(rec);
-      // the best estimated step so far (an estimate that is not a number is never the best)
+      // The best estimated step so far (an estimate that is not a number is never the best; one
+      // below the tolerance is, every earlier one having been above it).
       const bool better = std::isfinite(rec.estimate.pressure) &&
                           !(rec.estimate.pressure >= out.estimate.pressure);
-      if (!out.last || better) {
-        out.last = s;
-        out.estimate = rec.estimate;
-        out.last_step = static_cast<int>(out.history.size()) - 1;
-      }
+      if (!out.last || better) keep(s, rec.estimate);
       if (observe) observe(rec, *s);
       if (rec.estimate.pressure <= options.tolerance) {
-        out.last = s;
-        out.estimate = rec.estimate;
-        out.last_step = static_cast<int>(out.history.size()) - 1;
         out.converged = true;
         out.stopped = "tolerance reached";
         return out;

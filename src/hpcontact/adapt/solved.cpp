@@ -25,15 +25,7 @@ SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progres
   if (previous)
     start = carry_over(previous->discretization, previous->solution, s->discretization,
                        model::make_contact_pairs(s->spec, s->discretization));
-  bool finite = start.u.allFinite();
-  for (const auto& m : start.multipliers) finite = finite && m.allFinite();
-  if (!finite) start = {};  // a start the old mesh cannot give everywhere: none
   s->solution = model::solve_contact(s->spec, s->discretization, progress, start);
-  if (!s->solution.converged && previous) {
-    // The carried-over state is an aid, not part of the problem: try once from the beginning.
-    if (progress) progress("the solve from the previous mesh's solution failed; solving from the start");
-    s->solution = model::solve_contact(s->spec, s->discretization, progress, {});
-  }
   HPC_REQUIRE(s->solution.converged, NumericalError, spec.file, ": the solver stopped: ",
               s->solution.message);
   return s;

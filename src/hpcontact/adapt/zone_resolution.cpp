@@ -54,14 +54,14 @@ bool node_near_enough(const NodeForEnd& n) {
   return move <= 0.5 * room;
 }
 
-std::vector<ResolveRound> resolve_zones(const SolvedPtr& s0, int max_rounds,
-                                        const model::ProgressFn& progress) {
-  std::vector<ResolveRound> rounds;
-  SolvedPtr s = s0;
+Resolution resolve_zones(const SolvedPtr& s0, int max_rounds, const model::ProgressFn& progress) {
+  Resolution r;
+  r.solved = s0;
   for (int round = 1; round <= max_rounds; ++round) {
+    const SolvedPtr s = r.solved;
     const auto nodes = nearest_movable_nodes(*s, outer_zone_ends(*s));
     model::ProblemSpec spec = s->spec;
-    ResolveRound r;
+    const size_t before = r.towards.size();
     std::set<std::pair<int, int>> refined;  // (body, node): once per round
     for (const auto& n : nodes) {
       if (node_near_enough(n)) continue;
@@ -72,18 +72,17 @@ std::vector<ResolveRound> resolve_zones(const SolvedPtr& s0, int max_rounds,
       spec = refine_towards_node(spec, n.end.body, v.node_id, factor);
       r.towards.push_back(v.X);
     }
-    if (r.towards.empty()) break;
+    if (r.towards.size() == before) break;
     if (progress) {
       std::ostringstream os;
       os << "hp: a contact zone is narrow against its elements; refined towards "
-         << r.towards.size() << " boundary node(s) (round " << round << ")";
+         << r.towards.size() - before << " boundary node(s) (round " << round << ")";
       progress(os.str());
     }
-    s = solve(spec, progress, s.get());
-    r.solved = s;
-    rounds.push_back(std::move(r));
+    r.solved = solve(spec, progress, s.get());
+    r.rounds = round;
   }
-  return rounds;
+  return r;
 }
 
 }  // namespace hpcontact::adapt

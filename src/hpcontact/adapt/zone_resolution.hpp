@@ -8,9 +8,11 @@
 
 namespace hpcontact::adapt {
 
-/// One round of zone resolution: the nodes refined towards and the solve of the refined mesh.
-struct ResolveRound {
-  std::vector<Vec2> towards;  ///< the boundary nodes the mesh was refined towards
+/// What zone resolution did: its rounds, the boundary nodes it refined towards (all rounds), and
+/// the solve of the last mesh (the input's when no round was needed).
+struct Resolution {
+  int rounds = 0;
+  std::vector<Vec2> towards;
   SolvedPtr solved;
 };
 
@@ -22,9 +24,8 @@ bool node_near_enough(const NodeForEnd& n);
 /// Refines `s`'s mesh until every zone end passes node_near_enough: towards the boundary
 /// vertex of the contact edges nearest to each end that does not, with a factor that puts the
 /// new node on the end when it is 15–50 % of the edge away (15 % or 50 % otherwise), and solves
-/// again after each round (starting from the last solution). At most `max_rounds` rounds; the
-/// rounds taken are returned (none when the input mesh already serves every end).
-std::vector<ResolveRound> resolve_zones(const SolvedPtr& s, int max_rounds,
-                                        const model::ProgressFn& progress);
+/// again after each round (starting from the last solution). At most `max_rounds` rounds (none
+/// when the input mesh already serves every end).
+Resolution resolve_zones(const SolvedPtr& s, int max_rounds, const model::ProgressFn& progress);
 
 }  // namespace hpcontact::adapt

@@ -1,8 +1,6 @@
 // Edge load integration along the exact (or isoparametric) element boundary.
 #include "hpcontact/fem/edge_load.hpp"
 
-#include "hpcontact/fem/out_of_plane.hpp"
-
 #include "hpcontact/basis/quadrature.hpp"
 
 namespace hpcontact::fem {
@@ -30,8 +28,7 @@ Vec2 edge_geometry(const mesh::ElementMap& map, int le, double t, Vec2* normal, 
 }
 
 Eigen::VectorXd edge_load(const ElementSpace& space, const mesh::ElementMap& map, int le, double t0,
-                          double t1, int n_gauss, double thickness, const TractionFn& traction,
-                          bool axisymmetric) {
+                          double t1, int n_gauss, const OutOfPlane& measure, const TractionFn& traction) {
   const auto& rule = basis::gauss_legendre(n_gauss);
   const int n = space.n_modes();
   Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * n);
@@ -45,7 +42,7 @@ Eigen::VectorXd edge_load(const ElementSpace& space, const mesh::ElementMap& map
     const Vec2 q = traction(x, normal);
     const auto r = edge_reference_point(le, t);
     space.evaluate(r[0], r[1], N.data(), nullptr, nullptr);
-    const double c = w * ds_dt * OutOfPlane(thickness, axisymmetric).at(x);
+    const double c = w * ds_dt * measure.at(x);
     f.head(n) += c * q.x() * N;
     f.tail(n) += c * q.y() * N;
   }

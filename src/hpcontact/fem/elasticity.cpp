@@ -27,7 +27,7 @@ Eigen::MatrixXd axisymmetric_stiffness(const ElementValues& ev, const material::
   const int n = ev.n_modes(), np = ev.n_points();
   Eigen::VectorXd w(np), inv_r(np);
   for (int k = 0; k < np; ++k) {
-    w(k) = ev.JxW(k) * out_of_plane(true, 0, ev.x[k]);
+    w(k) = ev.JxW(k) * OutOfPlane(0, true).at(ev.x[k]);
     inv_r(k) = 1 / ev.x[k].x();
   }
   // The plane part as plane strain with the weights 2π r JxW, then the hoop row H = N / r.
@@ -47,12 +47,11 @@ Eigen::MatrixXd axisymmetric_stiffness(const ElementValues& ev, const material::
   return K;
 }
 
-Eigen::VectorXd body_force(const ElementValues& ev, const Vec2& b, double thickness,
-                           bool axisymmetric) {
+Eigen::VectorXd body_force(const ElementValues& ev, const Vec2& b, const OutOfPlane& measure) {
   const int n = ev.n_modes();
   Eigen::VectorXd f(2 * n);
   Eigen::VectorXd m(ev.n_points());
-  for (int k = 0; k < ev.n_points(); ++k) m(k) = ev.JxW(k) * out_of_plane(axisymmetric, thickness, ev.x[k]);
+  for (int k = 0; k < ev.n_points(); ++k) m(k) = ev.JxW(k) * measure.at(ev.x[k]);
   const Eigen::VectorXd w = ev.N * m;
   f.head(n) = b.x() * w;
   f.tail(n) = b.y() * w;

@@ -20,14 +20,9 @@ Eigen::MatrixXd stiffness(const ElementValues& ev, const material::Elasticity& D
 /// point, never 0 (Gauss points are inside the element).
 Eigen::MatrixXd axisymmetric_stiffness(const ElementValues& ev, const material::LinearElastic& m);
 
-/// The out-of-plane measure at a point X of a body: its thickness, or 2π r (axisymmetric).
-inline double out_of_plane(bool axisymmetric, double thickness, const Vec2& X) {
-  return OutOfPlane(thickness, axisymmetric).at(X);
-}
 
 /// f_e = t ∫ N^T b dA (eq. 2.47) for a constant body force b (force per volume).
-Eigen::VectorXd body_force(const ElementValues& ev, const Vec2& b, double thickness,
-                           bool axisymmetric = false);
+Eigen::VectorXd body_force(const ElementValues& ev, const Vec2& b, const OutOfPlane& measure);
 
 /// Strain (Voigt xx, yy, gamma_xy) at every quadrature point for local coefficients u_e
 /// (component-blocked); 3 × n_points.

@@ -3,6 +3,8 @@
 // one over the solid.
 #pragma once
 
+#include <numbers>
+
 #include "hpcontact/geometry/vec2.hpp"
 
 namespace hpcontact::fem {
@@ -15,7 +17,7 @@ struct OutOfPlane {
   OutOfPlane(double t, bool axi) : thickness(t), axisymmetric(axi) {}
   /// At the undeformed point X: the thickness, or 2π X.x().
   double at(const Vec2& X) const {
-    return axisymmetric ? 2 * 3.14159265358979323846 * X.x() : thickness;
+    return axisymmetric ? 2 * std::numbers::pi * X.x() : thickness;
   }
 };
 

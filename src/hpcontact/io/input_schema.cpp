@@ -18,7 +18,7 @@ constexpr Bound at_least(double v) { return {v, true}; }
 constexpr Bound less_than(double v) { return {v, false}; }
 constexpr Bound at_most(double v) { return {v, true}; }
 
-constexpr double max_degree = 30;
+constexpr double max_degree = model::kMaxDegree;
 
 }  // namespace
 
@@ -386,7 +386,8 @@ const std::vector<KeySpec>& input_schema() {
               "infinite if they are straight), else required; a curve: infinite. A value that "
               "contradicts a plane or a circle is refused; not 0."},
       {.path = "contact[].compare.force", .type = T::number, .unit = "force/length",
-       .doc = "Force F on the whole cylinder per unit thickness, which the closed forms are "
+       .doc = "Force F on the whole cylinder per unit thickness (axisymmetric: the total force on "
+              "the sphere), which the closed forms are "
               "computed for; absent: derived from the load — under solver.target_resultant "
               "(pair 0 with its normal along the controlled component) before the solve, else "
               "from the pair's resultant after it. A model whose contact boundary lies on one "

@@ -104,6 +104,7 @@ std::shared_ptr<const PairConstraints> make_pair_constraints(const ContactPairSp
           std::abs(c->weight(j)) <= 1e-6 * edge_share[j])
         any = c->passive[j] = 1;
     if (!any) c->passive.clear();
+    c->passive_row_weight = c->weight.cwiseAbs().maxCoeff();
   }
   if (spec.friction.law != "none") {
     c->friction.kind = spec.friction.law == "stick" ? contact::FrictionLaw::Kind::stick

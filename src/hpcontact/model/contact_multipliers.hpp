@@ -37,6 +37,7 @@ struct PairConstraints {
   /// the circle 2π r vanishes): their multiplier does no work, so they are never active and
   /// their value is the one that makes the pressure even in r (fill_passive_multipliers).
   std::vector<char> passive;
+  double passive_row_weight = 0;  ///< the weight pinning a passive node's λ_j = 0: the largest W
   /// κ_j = E' p² / h [force/length³] of the node's edge: the scale of the complementarity
   /// function (the active-set test λ_j − κ_j G_j/W_j ≥ 0, the row κ_j G_j of an active node):
   /// a property of the body, so that neither the active set nor the answer depends on an input

@@ -263,10 +263,30 @@ ZoneEnds node_zone_ends(const Body& body, const ContactPair& pair,
   return z;
 }
 
+/// The columns of one side of a ContactResult (the pair's body, or the other body's points):
+/// a point's position, place along the obstacle, pressure and what its stresses say.
+struct SideColumns {
+  std::vector<Vec2>& X;
+  std::vector<double>& s;
+  std::vector<double>& pressure;
+  std::vector<double>& pressure_from_stress;
+  std::vector<double>& minus_sigma_nn;
+  void add(const Vec2& X_point, double s_point, double p, const SideValues& sv) const {
+    X.push_back(X_point);
+    s.push_back(s_point);
+    pressure.push_back(p);
+    pressure_from_stress.push_back(sv.pressure_from_stress);
+    minus_sigma_nn.push_back(sv.minus_sigma_nn);
+  }
+};
+
 ContactResult contact_result(const Discretization& d, const ContactPair& pair,
                              const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers) {
   const Body& body = d.bodies[pair.body];
   ContactResult res;
+  const SideColumns own_side{res.X, res.s, res.pressure, res.pressure_from_stress, res.minus_sigma_nn};
+  const SideColumns other_side{res.other_X, res.other_s, res.other_pressure,
+                           res.other_pressure_from_stress, res.other_minus_sigma_nn};
   ConstraintState s;
   if (pair.constraints) {
     if (!multipliers) throw std::invalid_argument("evaluate_contact: an exact pair's results need its multipliers");
@@ -314,14 +334,10 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
                               : contact::StickSlip::stick;
       }
       res.states.push_back(ps);
-      res.X.push_back(n.X);
       SideValues sv;
       if (const auto at = node_stress_point(body, pair, j))
         sv = side_values(body, pair, *pair.obstacle, std::get<0>(*at), std::get<1>(*at), std::get<2>(*at), u);
-      res.s.push_back(pair.coordinate(n.X));
-      res.pressure.push_back(n.pressure * sv.length_ratio);
-      res.pressure_from_stress.push_back(sv.pressure_from_stress);
-      res.minus_sigma_nn.push_back(sv.minus_sigma_nn);
+      own_side.add(n.X, pair.coordinate(n.X), n.pressure * sv.length_ratio, sv);
     }
     if (pair.other >= 0) {
       // The other body's points: their gap against this body's deformed boundary and the
@@ -346,11 +362,7 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
         }
         const SideValues sv = side_values(other, pair, *pair.boundary, cp.element, cp.local_edge, cp.t, u);
         res.other_states.push_back(ps);
-        res.other_X.push_back(X);
-        res.other_s.push_back(sv.s);
-        res.other_pressure.push_back(ps.pressure * ratio);
-        res.other_pressure_from_stress.push_back(sv.pressure_from_stress);
-        res.other_minus_sigma_nn.push_back(sv.minus_sigma_nn);
+        other_side.add(X, sv.s, ps.pressure * ratio, sv);
       }
     }
   } else {
@@ -365,22 +377,14 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
     for (size_t i = 0; i < pair.points.size(); ++i) {
       const auto& cp = pair.points[i];
       const SideValues sv = side_values(body, pair, *pair.obstacle, cp.element, cp.local_edge, cp.t, u);
-      res.X.push_back(cp.X);
-      res.s.push_back(sv.s);
-      res.pressure.push_back(res.states[i].pressure * sv.length_ratio);
-      res.pressure_from_stress.push_back(sv.pressure_from_stress);
-      res.minus_sigma_nn.push_back(sv.minus_sigma_nn);
+      own_side.add(cp.X, sv.s, res.states[i].pressure * sv.length_ratio, sv);
     }
     if (pair.other >= 0) {
       const Body& other = d.bodies[pair.other];
       for (size_t i = 0; i < pair.other_points.size(); ++i) {
         const auto& cp = pair.other_points[i];
         const SideValues sv = side_values(other, pair, *pair.boundary, cp.element, cp.local_edge, cp.t, u);
-        res.other_X.push_back(cp.X);
-        res.other_s.push_back(sv.s);
-        res.other_pressure.push_back(res.other_states[i].pressure * sv.length_ratio);
-        res.other_pressure_from_stress.push_back(sv.pressure_from_stress);
-        res.other_minus_sigma_nn.push_back(sv.minus_sigma_nn);
+        other_side.add(cp.X, sv.s, res.other_states[i].pressure * sv.length_ratio, sv);
       }
     }
   }

@@ -246,11 +246,10 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
       if (q.gap < deepest_[k].gap) deepest_[k] = {q.gap, q.x};
     if (states) (*states)[k] = s.points;
     int active_nodes = 0;
-    // An inactive node's row W_j λ_j = 0; a passive node (W_j = 0) pins λ_j with the largest W.
-    const double passive_row = c.passive.empty() ? 0.0 : c.weight.cwiseAbs().maxCoeff();
     for (int j = 0; j < c.size(); ++j) {
       const bool active = node_active(c, s, lambda, j);
-      const double Wj = !c.passive.empty() && c.passive[j] ? passive_row : c.weight(j);
+      // an inactive node's row W_j λ_j = 0; a passive one (W_j = 0) is pinned with a regular W
+      const double Wj = !c.passive.empty() && c.passive[j] ? c.passive_row_weight : c.weight(j);
       active_nodes += active;
       states_[z_offset_[k] + j] = active;
       r(o + j) = active ? c.scale(j) * s.G(j) : Wj * lambda(j);

@@ -303,7 +303,6 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
     std::sort(ts.begin(), ts.end());
     return ts;
   };
-  const double thickness = body.thickness;
   double scale = 1.0;
   const double magnitude =
       ls.kind == LoadKind::pressure ? std::abs(ls.value[0]) : Vec2(ls.value[0], ls.value[1]).norm();
@@ -335,8 +334,8 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
     for (size_t k = 0; k + 1 < ts.size(); ++k) {
       if (ts[k + 1] - ts[k] < 1e-14) continue;
       const Eigen::VectorXd fe = fem::edge_load(body.dofs.element(q), body.maps[q], le, ts[k],
-                                                ts[k + 1], body.n_gauss[q] + 8, thickness, traction,
-                                                body.axisymmetric());
+                                                ts[k + 1], body.n_gauss[q] + 8, body.out_of_plane(),
+                                                traction);
       for (int i = 0; i < fe.size(); ++i) d.load(body.global_dof(q, i)) += fe(i);
     }
   }
@@ -392,7 +391,7 @@ Discretization discretize(const ProblemSpec& spec) {
       for (int q = 0; q < body.mesh.n_quads(); ++q) {
         const auto ev = fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q],
                                             body.mesh, q);
-        const Eigen::VectorXd fe = fem::body_force(ev, bf, body.thickness, body.axisymmetric());
+        const Eigen::VectorXd fe = fem::body_force(ev, bf, body.out_of_plane());
         for (int i = 0; i < fe.size(); ++i) d.load(body.global_dof(q, i)) += fe(i);
       }
     }

@@ -9,6 +9,9 @@
 
 namespace hpcontact::model {
 
+/// The largest polynomial degree an input may ask for (discretization.degree, per element).
+inline constexpr int kMaxDegree = 30;
+
 /// Every real number of a problem file (values, coordinates, numbers and values of formulas) is
 /// 0 or of a magnitude in [1/kMaxMagnitude, kMaxMagnitude] (formulas: at most kMaxMagnitude):
 /// products of a few of them (a modulus times a length squared times a displacement) then stay

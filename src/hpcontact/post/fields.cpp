@@ -73,7 +73,7 @@ double strain_energy(const model::Discretization& d, const Eigen::VectorXd& u) {
         for (int k = 0; k < ev.n_points(); ++k) {
           double hoop = 0;
           const Eigen::Vector3d s = m.axisymmetric_stress(eps.col(k), ur(k) / ev.x[k].x(), &hoop);
-          U += 0.5 * fem::out_of_plane(true, 0, ev.x[k]) * ev.JxW(k) *
+          U += 0.5 * body.out_of_plane().at(ev.x[k]) * ev.JxW(k) *
                (eps.col(k).dot(s) + hoop * ur(k) / ev.x[k].x());
         }
         continue;
