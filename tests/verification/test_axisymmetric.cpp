@@ -165,3 +165,23 @@ TEST(Axisymmetric, InputThatDoesNotApplyIsRefused) {
   EXPECT_THROW(model::discretize(spec), InputError);
 }
 
+// A traction given with its resultant on an axisymmetric body is scaled to that total force
+// over the surface of revolution: on the top of the patch [0, 2]² (area π 2² of the disc) the
+// work of the loads on the uniform field u_z = 1 (vertex modes 1, the others 0) is the
+// resultant (without the 2π r it was the resultant of the section's edge).
+TEST(Axisymmetric, EdgeLoadResultantIsTheTotalForce) {
+  auto spec = test_problems::distorted_patch(4);
+  spec.bodies[0].material.plane = model::PlaneMode::axisymmetric;
+  model::EdgeLoadSpec load;
+  load.edge_sets = {"top"};
+  load.kind = model::LoadKind::traction;
+  load.value = {0, 1};
+  load.resultant = 100;
+  spec.bodies[0].edge_loads = {load};
+  const auto d = model::discretize(spec);
+  const auto& body = d.bodies[0];
+  double work = 0;
+  for (int v = 0; v < body.mesh.n_nodes(); ++v)
+    work += d.load(body.dof_offset + 2 * body.dofs.vertex_mode(v) + 1);
+  EXPECT_NEAR(work, 100, 1e-9);
+}

@@ -183,7 +183,8 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Traction vector [tx, ty]; give exactly one of pressure and traction."},
       {.path = "bodies[].loads[].resultant", .type = T::number, .unit = "force/length",
        .doc = "If given, the load is scaled so that the magnitude of its integral over the edges "
-              "equals this.",
+              "equals this (per unit thickness; for an axisymmetric body the total over the "
+              "surface of revolution).",
        .lower = greater_than(0)},
       {.path = "bodies[].loads[].shape", .type = T::choice, .default_yaml = "constant",
        .doc = "Profile along the loaded part, t in [0, 1] from its start to its end: constant 1, "

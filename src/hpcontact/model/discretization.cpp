@@ -307,7 +307,8 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
   const double magnitude =
       ls.kind == LoadKind::pressure ? std::abs(ls.value[0]) : Vec2(ls.value[0], ls.value[1]).norm();
   if (ls.resultant) {
-    // ∫ |load| ds over the loaded part, per unit value.
+    // ∫ |load| ds over the loaded part, per unit value (per unit thickness; axisymmetric: over
+    // the whole surface of revolution, 2π r ds, the total force).
     double integral = 0;
     for (auto [q, le] : sides) {
       const auto ts = pieces(q, le);
@@ -317,7 +318,8 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
           const double t = 0.5 * (ts[k] + ts[k + 1]) + 0.5 * (ts[k + 1] - ts[k]) * rule.points[i];
           double ds;
           const Vec2 x = fem::edge_geometry(body.maps[q], le, t, nullptr, &ds);
-          integral += 0.5 * (ts[k + 1] - ts[k]) * rule.weights[i] * ds * std::abs(profile(x));
+          const double around = body.axisymmetric() ? body.out_of_plane().at(x) : 1.0;
+          integral += 0.5 * (ts[k + 1] - ts[k]) * rule.weights[i] * ds * around * std::abs(profile(x));
         }
     }
     HPC_REQUIRE(integral * magnitude > 0, InputError, where,
