@@ -79,12 +79,14 @@ DisplacedObstacle::DisplacedObstacle(ObstaclePtr base, Vec2 displacement)
     : base_(std::move(base)), d_(displacement) {}
 
 double DisplacedObstacle::gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const {
-  return base_->gap(x - lambda_ * d_, normal, dnormal_dx);
+  return base_->gap(x - offset(), normal, dnormal_dx);
 }
 
 std::string DisplacedObstacle::describe() const {
   std::ostringstream os;
-  os << base_->describe() << " displaced by " << lambda_ << " x (" << d_.x() << "," << d_.y() << ")";
+  os << base_->describe() << " displaced by ";
+  if (factors_.x() == factors_.y()) os << factors_.x() << " x (" << d_.x() << "," << d_.y() << ")";
+  else os << "(" << factors_.x() << " x " << d_.x() << "," << factors_.y() << " x " << d_.y() << ")";
   return os.str();
 }
 

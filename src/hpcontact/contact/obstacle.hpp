@@ -29,17 +29,19 @@ using ObstaclePtr = std::shared_ptr<const Obstacle>;
 class DisplacedObstacle final : public Obstacle {
 public:
   DisplacedObstacle(ObstaclePtr base, Vec2 displacement);
-  void set_load_factor(double lambda) { lambda_ = lambda; }
+  void set_load_factor(double lambda) { factors_ = Vec2(lambda, lambda); }
+  /// Separate factors on the displacement's x and y components (a load stage per direction).
+  void set_load_factors(const Vec2& factors) { factors_ = factors; }
   double gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const override;
   std::string describe() const override;
-  Vec2 offset() const override { return lambda_ * d_; }
+  Vec2 offset() const override { return factors_.cwiseProduct(d_); }
   /// The displacement per unit load factor.
   Vec2 direction() const { return d_; }
 
 private:
   ObstaclePtr base_;
   Vec2 d_;
-  double lambda_ = 1;
+  Vec2 factors_ = Vec2(1, 1);
 };
 
 /// Half-plane {(x - point)·normal < 0}; the body lies on the side the normal points to.

@@ -13,6 +13,7 @@ ContactHistoryRow contact_history_row(int step, const model::NonlinearSolution::
   ContactHistoryRow r;
   r.step = step;
   r.displacement_factor = at.displacements;
+  r.displacement_factors = at.displacement_factors;
   r.load_factor = at.loads;
   r.pair = k;
   r.body = body;
@@ -32,18 +33,22 @@ ContactHistoryRow contact_history_row(int step, const model::NonlinearSolution::
   return r;
 }
 
-std::string contact_history_csv(const std::vector<ContactHistoryRow>& rows) {
+std::string contact_history_csv(const std::vector<ContactHistoryRow>& rows, bool per_direction) {
   std::ostringstream csv;
   csv << std::setprecision(12)
       << "step,displacement_factor,load_factor,pair,body,resultant_x,resultant_y,normal_force,"
          "tangential_force,contact_length,pressure_max,traction_max,max_penetration,"
-         "contact_points,stick_points,slip_points\n";
-  for (const auto& r : rows)
+         "contact_points,stick_points,slip_points"
+      << (per_direction ? ",displacement_factor_x,displacement_factor_y\n" : "\n");
+  for (const auto& r : rows) {
     csv << r.step << ',' << r.displacement_factor << ',' << r.load_factor << ',' << r.pair << ','
         << r.body << ',' << r.resultant.x() << ',' << r.resultant.y() << ',' << r.normal_force << ','
         << r.tangential_force << ',' << r.contact_length << ',' << r.pressure_max << ','
         << r.traction_max << ',' << r.max_penetration << ',' << r.contact_points << ','
-        << r.stick_points << ',' << r.slip_points << '\n';
+        << r.stick_points << ',' << r.slip_points;
+    if (per_direction) csv << ',' << r.displacement_factors.x() << ',' << r.displacement_factors.y();
+    csv << '\n';
+  }
   return csv.str();
 }
 

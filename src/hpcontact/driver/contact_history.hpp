@@ -13,6 +13,7 @@ namespace hpcontact::driver {
 struct ContactHistoryRow {
   int step = 0;  ///< the row of path.csv (1, 2, ...)
   double displacement_factor = 0, load_factor = 0;
+  Vec2 displacement_factors = Vec2::Zero();  ///< x's and y's (y's is displacement_factor)
   int pair = 0;
   std::string body;
   Vec2 resultant = Vec2::Zero();  ///< the contact force on the body
@@ -34,7 +35,8 @@ ContactHistoryRow contact_history_row(int step, const model::NonlinearSolution::
 /// The rows as CSV text (12 significant digits), header
 /// step,displacement_factor,load_factor,pair,body,resultant_x,resultant_y,normal_force,
 /// tangential_force,contact_length,pressure_max,traction_max,max_penetration,contact_points,
-/// stick_points,slip_points.
-std::string contact_history_csv(const std::vector<ContactHistoryRow>& rows);
+/// stick_points,slip_points; per_direction (stages with factors per direction) adds
+/// displacement_factor_x,displacement_factor_y.
+std::string contact_history_csv(const std::vector<ContactHistoryRow>& rows, bool per_direction = false);
 
 }  // namespace hpcontact::driver

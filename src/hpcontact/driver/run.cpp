@@ -274,12 +274,15 @@ void write_path(const model::ProblemSpec& spec, const model::NonlinearSolution& 
                 const std::vector<ContactHistoryRow>& history, const std::string& out_dir) {
   if (out_dir.empty() || sol.path.empty()) return;
   std::ostringstream csv;
+  const bool per_direction = std::any_of(spec.solver.stages.begin(), spec.solver.stages.end(),
+                                         [](const model::LoadStageSpec& st) { return st.per_direction(); });
   csv << std::setprecision(12) << "step,displacement_factor,load_factor,iterations,arc_length";
   if (!spec.solver.monitor_body.empty()) csv << ",monitor_ux,monitor_uy";
   csv << ",resultant_x,resultant_y";
   int n_pairs = 0;
   for (const auto& h : history) n_pairs = std::max(n_pairs, h.pair + 1);
   for (int k = 1; k < n_pairs; ++k) csv << ",pair" << k << "_resultant_x,pair" << k << "_resultant_y";
+  if (per_direction) csv << ",displacement_factor_x,displacement_factor_y";
   csv << '\n';
   for (size_t i = 0; i < sol.path.size(); ++i) {
     const auto& p = sol.path[i];
@@ -292,12 +295,13 @@ void write_path(const model::ProblemSpec& spec, const model::NonlinearSolution& 
       if (row < history.size()) csv << ',' << history[row].resultant.x() << ',' << history[row].resultant.y();
       else csv << ",,";
     }
+    if (per_direction) csv << ',' << p.displacement_factors.x() << ',' << p.displacement_factors.y();
     csv << '\n';
   }
   post::write_text_file((std::filesystem::path(out_dir) / "path.csv").string(), csv.str());
   if (!history.empty())
     post::write_text_file((std::filesystem::path(out_dir) / "contact_history.csv").string(),
-                          contact_history_csv(history));
+                          contact_history_csv(history, per_direction));
 }
 
 /// The final adapted mesh of every body as a problem-file fragment (nodes, elements, curves,
@@ -630,6 +634,8 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     if (sol.loads_factor != sol.load_factor || !spec.solver.stages.empty() ||
         spec.solver.control != "load")
       s.extra["loads_factor"] = sol.loads_factor;
+    if (sol.displacement_factors.x() != sol.displacement_factors.y())
+      s.extra["displacement_factors"] = {sol.displacement_factors.x(), sol.displacement_factors.y()};
     if (!sol.converged) {
       // The last converged load step is kept apart, in last-good/, with converged: false: it
       // cannot pass for the run's result (no summary.json in the output folder).
@@ -645,7 +651,10 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
         write_summary(good);
         std::ostringstream os;
         os << "; the last converged load step (";
-        if (sol.loads_factor != sol.load_factor)
+        if (sol.displacement_factors.x() != sol.displacement_factors.y())
+          os << "displacement factors (" << sol.displacement_factors.x() << ", "
+             << sol.displacement_factors.y() << "), load factor " << sol.loads_factor;
+        else if (sol.loads_factor != sol.load_factor)
           os << "displacement factor " << sol.load_factor << ", load factor " << sol.loads_factor;
         else
           os << "factor " << sol.load_factor;

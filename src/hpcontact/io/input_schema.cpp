@@ -285,9 +285,19 @@ const std::vector<KeySpec>& input_schema() {
               "the loads go linearly from the previous stage's values (0 and 0 at the start) to "
               "the stage's, in its steps. Absent: one stage to 1 and 1. With friction the path "
               "matters (e.g. press first, then push sideways)."},
-      {.path = "solver.stages[].displacements", .type = T::number, .default_yaml = "1",
+      {.path = "solver.stages[].displacements", .type = T::number,
        .doc = "Factor on every prescribed displacement (and obstacle displacement) at the end of "
-              "the stage."},
+              "the stage; absent: 1 (for the directions displacements_x and displacements_y do "
+              "not give)."},
+      {.path = "solver.stages[].displacements_x", .type = T::number,
+       .doc = "Factor on the x components of the prescribed displacements (ux, and an obstacle "
+              "displacement's x) at the end of the stage, where it differs from displacements: "
+              "e.g. 0 in a stage that presses in y, 1 in the next that pushes sideways with the "
+              "press held (a displacement-driven tangential stage). Path files then carry "
+              "displacement_factor_x and displacement_factor_y (displacement_factor is y's)."},
+      {.path = "solver.stages[].displacements_y", .type = T::number,
+       .doc = "Factor on the y components of the prescribed displacements at the end of the "
+              "stage, where it differs from displacements."},
       {.path = "solver.stages[].loads", .type = T::number, .default_yaml = "1",
        .doc = "Factor on every load (edge loads, nodal forces, body force) at the end of the stage."},
       {.path = "solver.stages[].steps", .type = T::integer,
@@ -296,7 +306,10 @@ const std::vector<KeySpec>& input_schema() {
        .upper_why = "each step is at least one solve of the whole system"},
       {.path = "solver.target_resultant", .type = T::section,
        .doc = "Load control by force: the prescribed displacements are scaled until the contact "
-              "resultant's component equals value."},
+              "resultant's component equals value. With exact contact the factor is one more "
+              "unknown of Newton's system; with friction (whose answer depends on the path) in "
+              "solver.load_steps force-controlled steps, each to its share of value. Not with "
+              "stages."},
       {.path = "solver.target_resultant.value", .type = T::number, .required = true,
        .unit = "force", .doc = "The contact resultant's component to reach.",
        .lower = greater_than(0)},

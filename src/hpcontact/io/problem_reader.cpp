@@ -562,7 +562,15 @@ class SpecBuilder {
     if (const YAML::Node stages = node["stages"]) {
       for (std::size_t i = 0; i < stages.size(); ++i) {
         LoadStageSpec st;
-        st.displacements = number(stages[i]["displacements"]);
+        const YAML::Node stage = stages[i];
+        const std::string at = "solver.stages[" + std::to_string(i) + "]";
+        if (stage["displacements"]) st.displacements = number(stage["displacements"]);
+        if (stage["displacements_x"]) st.x_displacements = number(stage["displacements_x"]);
+        if (stage["displacements_y"]) st.y_displacements = number(stage["displacements_y"]);
+        if (stage["displacements"] && st.x_displacements && st.y_displacements)
+          source_.fail(stage["displacements"], at + ".displacements",
+                       "displacements_x and displacements_y are both given, so displacements "
+                       "applies to no direction; remove it (or one of them)");
         st.loads = number(stages[i]["loads"]);
         if (stages[i]["steps"]) st.steps = integer(stages[i]["steps"]);
         s.stages.push_back(st);

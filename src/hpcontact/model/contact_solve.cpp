@@ -89,9 +89,15 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     return p.other >= 0 && !p.constraints;
   });
   no.line_search = ss.line_search == "on" || (ss.line_search == "auto" && (system.has_friction() || two_bodies));
-  HPC_REQUIRE(!system.has_friction() || !ss.target_resultant, InputError, ss.where.str(),
-              ".target_resultant: force control goes back and forth along the load path, which a "
-              "contact with friction remembers; prescribe the displacements (or use stages)");
+  // Force control with friction: the secant on complete solves would go back and forth along
+  // the load path, which friction remembers; force-controlled load steps instead (below).
+  HPC_REQUIRE(!system.has_friction() || !ss.target_resultant ||
+                  (!pairs.empty() && pairs.front().constraints),
+              InputError, ss.where.str(),
+              ".target_resultant: force control with friction needs the first contact pair "
+              "enforced exactly (enforcement: augmented-lagrangian): its factor is then an "
+              "unknown of every load step; the penalty's secant on complete solves would go back "
+              "and forth along the load path, which friction remembers");
 
   NonlinearSolution sol;
   Eigen::VectorXd x = Eigen::VectorXd::Zero(system.size());
@@ -105,8 +111,22 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
                 " in body '", ss.monitor_body, "'");
     monitor_dof = body.dof_offset + 2 * body.dofs.vertex_mode(v);
   }
-  auto record = [&](double displacements, double loads, int iterations, double arc) {
-    NonlinearSolution::PathPoint p{displacements, loads, Vec2::Zero(), Vec2::Zero(), iterations, arc};
+  struct Factors {
+    Vec2 displacements = Vec2::Zero();  ///< on the prescribed displacements' x and y components
+    double loads = 0;
+    static Factors proportional(double lambda) { return {Vec2(lambda, lambda), lambda}; }
+    /// "factor 0.5", "factor 0.5 (loads 1)", "factors (0, 1) (loads 0)"
+    std::string describe() const {
+      std::ostringstream os;
+      if (displacements.x() == displacements.y()) os << "factor " << displacements.x();
+      else os << "factors (" << displacements.x() << ", " << displacements.y() << ")";
+      if (loads != displacements.x() || displacements.x() != displacements.y()) os << " (loads " << loads << ")";
+      return os.str();
+    }
+  };
+  auto record = [&](const Factors& f, int iterations, double arc) {
+    NonlinearSolution::PathPoint p{f.displacements.y(), f.loads, f.displacements, Vec2::Zero(),
+                                   Vec2::Zero(), iterations, arc};
     const Eigen::VectorXd u = system.solution(x);
     const auto multipliers = system.multipliers(x);
     if (monitor_dof >= 0) p.monitor = Vec2(u(monitor_dof), u(monitor_dof + 1));
@@ -121,9 +141,6 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     sol.multipliers = system.multipliers(x);
     for (size_t k = 0; k < pairs.size(); ++k)
       sol.contact.push_back(evaluate_contact(d, pairs[k], sol.u, sol.multipliers_of(k)));
-  };
-  struct Factors {
-    double displacements = 0, loads = 0;
   };
   Factors converged;  // the factors of the last converged step
   auto say = [&](const std::string& s) {
@@ -150,7 +167,12 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     if (rep.status == solve::SolveStatus::not_finite && !system.failure().empty())
       why += " (" + system.failure() + ")";
     if (rep.status == solve::SolveStatus::singular) {
-      const std::string where = explain_singular(d, rep.singular_row);
+      std::vector<char> frictional(d.bodies.size(), 0);
+      for (const auto& pair : pairs)
+        if (pair.friction.active() || (pair.constraints && pair.constraints->has_friction()))
+          for (int b : {pair.body, pair.other})
+            if (b >= 0) frictional[b] = 1;
+      const std::string where = explain_singular(d, rep.singular_row, frictional);
       if (!where.empty()) why += " (" + where + ")";
     }
     return why;
@@ -158,30 +180,44 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
 
   // Load steps along the path parameter from `from` to `target` (factors(s) gives the
   // factors), halving a step that does not converge (at most max_cuts times in a row) and
-  // doubling it again, up to the nominal step, after two steps in a row converged.
-  auto advance = [&](double from, double target, int steps, const auto& factors) -> bool {
+  // doubling it again, up to the nominal step, after two steps in a row converged. With
+  // `force` (component, value), force-controlled steps: at s the factor is the unknown of the
+  // bordered system whose target is s × value (factors(s) then gives its first guess).
+  using ForceTarget = std::optional<std::pair<int, double>>;
+  auto advance = [&](double from, double target, int steps, const auto& factors,
+                     const ForceTarget& force = std::nullopt) -> bool {
     const double nominal = (target - from) / std::max(1, steps);
     double lambda = from, step = nominal;
     int cuts = 0, in_a_row = 0;
     while (std::abs(target - lambda) > 1e-14 * std::max(1.0, std::abs(target))) {
       const double next = std::abs(target - lambda) < std::abs(step) * (1 + 1e-12) ? target : lambda + step;
-      const Factors fn = factors(next);
+      Factors fn = factors(next);
       system.set_factors(fn.displacements, fn.loads);
-      no.reference_norm = system.force_scale(x);
       Eigen::VectorXd trial = x;
+      if (force) {
+        system.set_force_target(std::make_pair(force->first, next * force->second));
+        trial.conservativeResize(system.size());
+        trial(system.size() - 1) = fn.displacements.y();
+      }
+      no.reference_norm = system.force_scale(trial);
+      if (force) no.reference_norm = std::max(no.reference_norm, next * force->second);
       const auto rep = solve::newton(system, trial, no, newton_progress());
       sol.newton_iterations += rep.iterations;
+      if (force) {
+        fn = Factors::proportional(system.displacement_factor(trial));
+        system.set_force_target(std::nullopt);
+        trial.conservativeResize(system.size());
+        system.set_factors(fn.displacements, fn.loads);
+      }
       if (rep.ok()) {
         x = trial;
         lambda = next;
         converged = fn;
         system.commit(x);
-        record(fn.displacements, fn.loads, rep.iterations, 0.0);
+ record(fn, rep.iterations, 0.0);
         ++sol.load_steps;
         std::ostringstream os;
-        os << "load step " << sol.load_steps << ": factor " << fn.displacements;
-        if (fn.loads != fn.displacements) os << " (loads " << fn.loads << ")";
-        os << ", " << rep.iterations << " Newton iterations, |R| " << rep.residual_history.front()
+        os << "load step " << sol.load_steps << ": " << fn.describe() << ", " << rep.iterations << " Newton iterations, |R| " << rep.residual_history.front()
            << " -> " << rep.residual_history.back();
         say(os.str());
         cuts = 0;
@@ -199,9 +235,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       for (const Body& body : d.bodies) structural = structural || !body.free_rigid_motions.empty();
       if (cuts == ss.max_cuts || (rep.status == solve::SolveStatus::singular && structural)) {
         std::ostringstream os;
-        os << "load step " << sol.load_steps + 1 << " (factor " << fn.displacements;
-        if (fn.loads != fn.displacements) os << ", loads " << fn.loads;
-        os << ") failed after " << cuts << " cuts: " << why << "; residual history:";
+ os << "load step " << sol.load_steps + 1 << " (" << fn.describe() << ") failed after " << cuts << " cuts: " << why << "; residual history:";
         for (double r : rep.residual_history) os << ' ' << r;
         sol.message = os.str();
         return false;
@@ -213,7 +247,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     }
     return true;
   };
-  auto proportional = [](double lambda) { return Factors{lambda, lambda}; };
+  auto proportional = [](double lambda) { return Factors::proportional(lambda); };
   auto advance_to = [&](double from, double target) {
     return advance(from, target, ss.load_steps, proportional);
   };
@@ -230,7 +264,8 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     x.conservativeResize(system.size());
     system.set_factors(converged.displacements, converged.loads);
     sol.u = system.solution(x);
-    sol.load_factor = converged.displacements;
+    sol.load_factor = converged.displacements.y();
+    sol.displacement_factors = converged.displacements;
     sol.loads_factor = converged.loads;
     finish();
     sol.pairs = pairs;
@@ -254,7 +289,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   if (ss.control == "arc-length") {
     // Prescribed displacements first (loads at 0), then the arc-length path of the loads.
     if (d.prescribed.cwiseAbs().maxCoeff() > 0 &&
-        !advance(0.0, 1.0, ss.load_steps, [](double s) { return Factors{s, 0}; }))
+        !advance(0.0, 1.0, ss.load_steps, [](double s) { return Factors{Vec2(s, s), 0}; }))
       return failed();
     system.set_factors(1, 0);
     LoadsOnPath path(system);
@@ -271,11 +306,11 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     const auto rep = solve::arc_length(path, xa, lf, ao, [&](const Eigen::VectorXd& xs,
                                                               const solve::ArcLengthStep& st) {
       x = xs;
-      converged = {1, st.lambda};
+      converged = {Vec2(1, 1), st.lambda};
       system.set_factors(1, st.lambda);
       system.commit(x);
       ++sol.load_steps;
-      record(1, st.lambda, st.iterations, st.length);
+      record(converged, st.iterations, st.length);
       std::ostringstream os;
       os << "arc-length step " << sol.load_steps << ": load factor " << st.lambda << ", "
          << st.iterations << " iterations, length " << st.length;
@@ -292,7 +327,20 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     // system, its equation the target resultant (bordered), from the start at once. Should that
     // not converge, the load-controlled steps and the secant below take over.
     bool bordered = ss.stages.empty() && ss.target_resultant && !pairs.empty() && pairs.front().constraints;
-    if (bordered) {
+    if (bordered && system.has_friction()) {
+      // With friction the path matters: load steps, each to its share of the target force,
+      // the factor an unknown of each (its first guess the last step's, scaled).
+      const auto& tr = *ss.target_resultant;
+      auto guess = [&](double s) {
+        if (sol.path.empty()) return Factors::proportional(first * s);
+        const auto& last = sol.path.back();
+        const double carried = std::abs(last.resultant(tr.component));
+        return Factors::proportional(carried > 0 ? last.displacements * s * tr.value / carried
+                                                 : last.displacements);
+      };
+      if (!advance(0.0, 1.0, ss.load_steps, guess, std::make_pair(tr.component, tr.value)))
+        return failed();
+    } else if (bordered) {
       const auto& tr = *ss.target_resultant;
       const Eigen::VectorXd x0 = x;
       system.set_factors(first, first);
@@ -307,8 +355,8 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       x.conservativeResize(system.size());
       if (rep.ok()) {
         system.set_factors(alpha, alpha);
-        converged = {alpha, alpha};
-        record(alpha, alpha, rep.iterations, 0.0);
+        converged = Factors::proportional(alpha);
+        record(converged, rep.iterations, 0.0);
         ++sol.load_steps;
         std::ostringstream os;
         os << "load step " << sol.load_steps << ": factor " << alpha << " (force control), "
@@ -328,7 +376,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     } else if (!bordered) {
       Factors start;
       for (const auto& stage : ss.stages) {
-        const Factors end{stage.displacements, stage.loads};
+        const Factors end{Vec2(stage.displacements_x(), stage.displacements_y()), stage.loads};
         auto along = [&](double s) {
           return Factors{start.displacements + s * (end.displacements - start.displacements),
                          start.loads + s * (end.loads - start.loads)};
@@ -384,7 +432,8 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   x.conservativeResize(system.size());
   system.set_factors(converged.displacements, converged.loads);
   sol.u = system.solution(x);
-  sol.load_factor = converged.displacements;
+  sol.load_factor = converged.displacements.y();
+  sol.displacement_factors = converged.displacements;
   sol.loads_factor = converged.loads;
   sol.converged = true;
   finish();
@@ -408,7 +457,7 @@ solve::SparseMatrix tangent_at(const ProblemSpec& spec, const Discretization& d,
       pair.memory = before;
     }
   ContactSystem system(d, pairs, spec.discretization.condense, kind);
-  system.set_factors(sol.load_factor, sol.loads_factor);
+  system.set_factors(sol.displacement_factors, sol.loads_factor);
   const Eigen::VectorXd x = system.unknowns(sol.u, sol.multipliers);
   Eigen::VectorXd r;
   solve::SparseMatrix K;

@@ -22,13 +22,17 @@ struct NonlinearSolution {
   bool converged = false;
   std::string message;  ///< why it stopped, when not converged
   int newton_iterations = 0, load_steps = 0;
-  double load_factor = 1;   ///< factor on the prescribed displacements reached
+  double load_factor = 1;   ///< factor on the prescribed displacements reached (y's, see below)
+  /// The factors on the prescribed displacements' x and y components reached (equal unless
+  /// the stages give them per direction).
+  Vec2 displacement_factors = Vec2(1, 1);
   double loads_factor = 1;  ///< factor on the loads reached (= load_factor without stages)
   std::vector<ContactPair> pairs;     ///< the contact pairs solved, for post-processing
   /// The load path, a point per converged step: load factors, the monitored node's
   /// displacement (if solver.monitor), the first pair's contact resultant, iterations.
   struct PathPoint {
-    double displacements = 0, loads = 0;
+    double displacements = 0, loads = 0;  ///< the displacement factor: y's, as load_factor
+    Vec2 displacement_factors = Vec2::Zero();  ///< x's and y's
     Vec2 monitor = Vec2::Zero();
     Vec2 resultant = Vec2::Zero();
     int iterations = 0;

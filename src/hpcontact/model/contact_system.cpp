@@ -38,11 +38,11 @@ ContactSystem::ContactSystem(const Discretization& d, const std::vector<ContactP
   u_committed_ = Eigen::VectorXd::Zero(d_.n_dofs);
 }
 
-void ContactSystem::set_factors(double displacements, double loads) {
-  lambda_ = displacements;
+void ContactSystem::set_factors(const Vec2& displacements, double loads) {
+  factors_ = displacements;
   lambda_f_ = loads;
   for (const auto& pair : pairs_)
-    if (pair.moving) pair.moving->set_load_factor(displacements);
+    if (pair.moving) pair.moving->set_load_factors(displacements);
 }
 
 void ContactSystem::set_force_target(std::optional<std::pair<int, double>> target) {
@@ -55,8 +55,16 @@ void ContactSystem::set_force_target(std::optional<std::pair<int, double>> targe
   target_ = target;
 }
 
-double ContactSystem::displacement_factor(const Eigen::VectorXd& x) const {
-  return target_ ? x(size() - 1) : lambda_;
+Vec2 ContactSystem::displacement_factors(const Eigen::VectorXd& x) const {
+  return target_ ? Vec2(x(size() - 1), x(size() - 1)) : factors_;
+}
+
+Eigen::VectorXd ContactSystem::prescribed(const Vec2& factors) const {
+  if (factors.x() == factors.y()) return factors.x() * d_.prescribed;
+  // a body's dofs are (x, y) per mode from an even offset
+  Eigen::VectorXd v = d_.prescribed;
+  for (int i = 0; i < v.size(); ++i) v(i) *= factors(i % 2);
+  return v;
 }
 
 double ContactSystem::loads_factor(const Eigen::VectorXd& x) const {
@@ -68,7 +76,7 @@ void ContactSystem::commit(const Eigen::VectorXd& x) {
   const Eigen::VectorXd u = full(x);
   // exact friction measures slips from here
   u_committed_ = u;
-  factor_committed_ = displacement_factor(x);
+  factors_committed_ = displacement_factors(x);
   for (const auto& pair : pairs_)
     if (pair.memory) commit_friction(pair, pair_forces(d_, pair, u, nullptr));
 }
@@ -88,7 +96,7 @@ Eigen::VectorXd ContactSystem::unknowns(const Eigen::VectorXd& u,
   for (size_t k = 0; k < pairs_.size() && k < multipliers.size(); ++k)
     if (z_offset_[k] >= 0 && multipliers[k].size() == n_multipliers(k))
       x.segment(n_u_ + z_offset_[k], multipliers[k].size()) = multipliers[k];
-  if (target_) x(size() - 1) = lambda_;
+  if (target_) x(size() - 1) = factors_.y();
   return x;
 }
 
@@ -103,7 +111,9 @@ std::vector<Eigen::VectorXd> ContactSystem::multipliers(const Eigen::VectorXd& x
 }
 
 Eigen::VectorXd ContactSystem::full(const Eigen::VectorXd& x) const {
-  return op_.expand(d_, x.head(n_u_), displacement_factor(x));
+  const Vec2 f = displacement_factors(x);
+  if (f.x() == f.y()) return op_.expand(d_, x.head(n_u_), f.x());
+  return op_.expand(d_, x.head(n_u_), 0.0) + prescribed(f);
 }
 
 Eigen::VectorXd ContactSystem::solution(const Eigen::VectorXd& x) const {
@@ -113,7 +123,7 @@ Eigen::VectorXd ContactSystem::solution(const Eigen::VectorXd& x) const {
 }
 
 double ContactSystem::force_scale(const Eigen::VectorXd& x) const {
-  const Eigen::VectorXd f = op_.K * (displacement_factor(x) * d_.prescribed);
+  const Eigen::VectorXd f = op_.K * prescribed(displacement_factors(x));
   const Eigen::VectorXd u = full(x);
   Eigen::VectorXd g = op_.K * u;
   if (!finite_.empty()) finite_.add(u, g, nullptr, nullptr);
@@ -194,10 +204,10 @@ Eigen::VectorXd ContactSystem::solve(const solve::LinearSolver& sparse, const Ei
 
 void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Triplets* T,
                              PairStates* states, const PairStates* frozen) const {
-  const double alpha = displacement_factor(x);
+  const Vec2 factors = displacement_factors(x);
   if (target_)
     for (const auto& pair : pairs_)
-      if (pair.moving) pair.moving->set_load_factor(alpha);
+      if (pair.moving) pair.moving->set_load_factors(factors);
   const Eigen::VectorXd u = full(x);
   Eigen::VectorXd R = op_.K * u - loads_factor(x) * op_.load;
   // The tangent's triplets on all dofs (finite strain, penalty contact, curvature of the
@@ -237,7 +247,8 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
     if (tangential) {
       fi.lambda_t = &lambda_t;
       fi.u_committed = &u_committed_;
-      if (pair.moving) fi.obstacle_increment = (alpha - factor_committed_) * pair.moving->direction();
+      if (pair.moving)
+        fi.obstacle_increment = (factors - factors_committed_).cwiseProduct(pair.moving->direction());
     }
     const ConstraintState s = evaluate_constraints(d_, pair, u, lambda, &R, t, T != nullptr, fi);
     deepest_.resize(pairs_.size());
@@ -280,7 +291,7 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
         // No node carries force: the factor grows (as if the force grew with it, F ∝ α: the
         // step doubles α). Never a solution: the residual is the whole target.
         r(row) = -target_->second;
-        if (T) T->emplace_back(row, row, target_->second / std::max(std::abs(alpha), 1e-300));
+        if (T) T->emplace_back(row, row, target_->second / std::max(std::abs(factors.y()), 1e-300));
       } else {
         r(row) = sign * F - target_->second;
         if (T) {
@@ -331,7 +342,13 @@ void ContactSystem::tangential_rows(const PairConstraints& c, const ConstraintSt
         // the trial traction against the augmented normal pressure
         const double trial = lambda_t(j) + cT * s.GT(j) / W;
         const double bound = c.friction.mu * (lambda(j) - c.scale(j) * s.G(j) / W);
-        if (std::abs(trial) > bound) {
+        // On the cone to round-off (a step that holds a slipping point where it is: the trial
+        // is the bound itself) both rows hold; the point keeps its state of the last tangent,
+        // so that round-off does not switch it from one iteration to the next.
+        const bool on_cone = std::abs(std::abs(trial) - bound) <= 1e-10 * bound;
+        const bool was_slip = tangent_states_.size() == states_.size() &&
+                              tangent_states_[row - n_u_] == static_cast<char>(State::slip);
+        if (on_cone ? was_slip : std::abs(trial) > bound) {
           state = State::slip;
           sign = trial < 0 ? -1.0 : 1.0;
         }

@@ -46,15 +46,19 @@ public:
   int points_in_contact() const { return points_in_contact_; }
 
   /// The factors on the prescribed displacements (and obstacle displacements) and on the loads.
-  void set_factors(double displacements, double loads);
+  void set_factors(double displacements, double loads) { set_factors(Vec2(displacements, displacements), loads); }
+  /// Separate factors on the x and the y components of the prescribed displacements.
+  void set_factors(const Vec2& displacements, double loads);
   /// Force control as one more unknown: the factor on the prescribed displacements, found with
   /// the first pair's resultant component (0: x, 1: y) equal to `value` in magnitude. The first
   /// pair must be enforced exactly. Off (nullopt): the factor is set_factors()'s.
   void set_force_target(std::optional<std::pair<int, double>> target);
   bool force_controlled() const { return target_.has_value(); }
-  /// The factor on the prescribed displacements at x (the unknown α under force control), and
-  /// on the loads (α too under force control: the proportional path).
-  double displacement_factor(const Eigen::VectorXd& x) const;
+  /// The factors on the prescribed displacements' x and y components at x (both the unknown α
+  /// under force control), and on the loads (α too under force control: the proportional path).
+  Vec2 displacement_factors(const Eigen::VectorXd& x) const;
+  /// The unknown α under force control, else the y displacements' factor.
+  double displacement_factor(const Eigen::VectorXd& x) const { return displacement_factors(x).y(); }
   double loads_factor(const Eigen::VectorXd& x) const;
 
   /// After a converged load step at x: the friction histories take its anchors and slips (and
@@ -62,7 +66,7 @@ public:
   void commit(const Eigen::VectorXd& x);
   /// The load vector on the unknowns (what a unit load factor applies).
   Eigen::VectorXd load_vector() const;
-  double displacement_factor() const { return lambda_; }
+  const Vec2& displacement_factors() const { return factors_; }
   bool has_friction() const;
   /// The unknowns x of all dofs u and the multipliers of each pair (empty for penalty pairs; an
   /// empty list: zero multipliers), α = the current factor under force control.
@@ -136,7 +140,7 @@ private:
   FiniteStrainForces finite_;
   mutable std::string failure_;
   Tangent tangent_ = Tangent::analytic;
-  double lambda_ = 1.0;    ///< factor on the prescribed displacements
+  Vec2 factors_ = Vec2(1, 1);  ///< factors on the prescribed displacements' x and y components
   double lambda_f_ = 1.0;  ///< factor on the loads
   int n_u_ = 0;            ///< displacement unknowns
   int n_z_ = 0;            ///< multipliers and the bordered factor
@@ -155,8 +159,10 @@ private:
   mutable std::vector<Deepest> deepest_;
   std::vector<char> tangent_states_, previous_tangent_states_;
   Eigen::VectorXd K_prescribed_;   ///< K times the prescribed displacements (for ∂/∂α)
+  /// The prescribed displacements, their x and y components scaled by `factors`.
+  Eigen::VectorXd prescribed(const Vec2& factors) const;
   Eigen::VectorXd u_committed_;    ///< all dofs at the last converged step (exact friction)
-  double factor_committed_ = 0;    ///< the displacement factor there
+  Vec2 factors_committed_ = Vec2::Zero();  ///< the displacement factors there
 };
 
 /// The system on the path of the loads' factor (arc-length), the prescribed displacements held.
@@ -173,7 +179,7 @@ public:
   Eigen::VectorXd solve(const solve::LinearSolver& sparse, const Eigen::VectorXd& b) const override {
     return s_.solve(sparse, b);
   }
-  void set_load_factor(double lambda) override { s_.set_factors(s_.displacement_factor(), lambda); }
+  void set_load_factor(double lambda) override { s_.set_factors(s_.displacement_factors(), lambda); }
   Eigen::VectorXd load_derivative(const Eigen::VectorXd&) override {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(s_.size());
     f.head(s_.n_displacements()) = -s_.load_vector();

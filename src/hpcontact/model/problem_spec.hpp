@@ -150,6 +150,12 @@ struct TargetResultantSpec {
 struct LoadStageSpec {
   double displacements = 1, loads = 1;
   int steps = 0;  ///< 0: solver.load_steps
+  /// The factors on the prescribed displacements' x and y components where they differ from
+  /// `displacements` (a stage that pushes sideways with the press held).
+  std::optional<double> x_displacements, y_displacements;
+  double displacements_x() const { return x_displacements.value_or(displacements); }
+  double displacements_y() const { return y_displacements.value_or(displacements); }
+  bool per_direction() const { return displacements_x() != displacements_y(); }
 };
 
 struct SolverSpec {

@@ -127,16 +127,22 @@ void require_held(const ProblemSpec& spec, const Discretization& d) {
   }
 }
 
-std::string explain_singular(const Discretization& d, int row) {
+std::string explain_singular(const Discretization& d, int row, const std::vector<char>& frictional) {
   std::string out;
   if (row >= 0)
     for (int dof = 0; dof < d.n_dofs; ++dof)
       if (d.free_index[dof] == row) out = "at " + describe_dof(d, dof);
-  for (const Body& body : d.bodies) {
+  for (size_t b = 0; b < d.bodies.size(); ++b) {
+    const Body& body = d.bodies[b];
     if (body.free_rigid_motions.empty()) continue;
     out += std::string(out.empty() ? "" : "; ") + "body '" + body.name +
            "' is held only by contact against " + joined(body.free_rigid_motions) +
-           " (frictionless contact holds only where it presses, and only normal to the contact)";
+           (b < frictional.size() && frictional[b]
+                ? " (contact with friction holds it where points touch: normal to the contact "
+                  "where they press, tangentially where they stick or press; a body that touches "
+                  "nowhere, or only at points that slip without pressure, is free)"
+                : " (frictionless contact holds only where it presses, and only normal to the "
+                  "contact)");
   }
   return out;
 }

@@ -39,6 +39,7 @@ std::string describe_dof(const Discretization& d, int dof);
 
 /// What may make a tangent singular at unknown `row` (a free dof's index, -1: unknown): where
 /// that unknown is, and the bodies that only contact holds, with the motions it must stop.
-std::string explain_singular(const Discretization& d, int row);
+/// `frictional[b]`: a pair with friction touches body b (how the contact can hold it differs).
+std::string explain_singular(const Discretization& d, int row, const std::vector<char>& frictional = {});
 
 }  // namespace hpcontact::model

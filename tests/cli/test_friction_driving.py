@@ -1,0 +1,111 @@
+"""Driving a frictional problem: stages with factors per direction (a displacement-driven
+tangential stage with the press held), the load path friction remembers, and force control with
+friction (force-controlled load steps, the factor an unknown of each). Every figure is checked
+against an exact state: the homogeneous one of a block on a plane, or full slip at mu P."""
+import csv
+import json
+import os
+
+import pytest
+
+DATA = os.path.join(os.path.dirname(__file__), "data")
+PATCH = os.path.join(DATA, "block-shear-patch.yaml")
+PRESS_PUSH = os.path.join(DATA, "block-press-push.yaml")
+
+
+def rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def run(hpcontact, case, out, *settings):
+    args = ["run", case, "--out", out, "-q"]
+    for s in settings:
+        args += ["--set", s]
+    r = hpcontact(*args)
+    assert r.returncode == 0, r.stderr
+    return json.load(open(os.path.join(out, "summary.json")))
+
+
+@pytest.mark.parametrize("degree", [1, 3, 6])
+def test_tangential_stage_reproduces_the_homogeneous_state(hpcontact, tmp_path, degree):
+    """Pressed, then sheared by a displacement-driven stage: pressure E eps = 10, |t_T| = G gamma
+    = 2 below mu p (stick), no point moved along the plane; the path's factors per direction."""
+    s = run(hpcontact, PATCH, tmp_path, f"discretization.degree={degree}")
+    points = rows(tmp_path / "contact.csv")
+    assert len(points) > 2
+    for p in points:
+        assert float(p["pressure"]) == pytest.approx(10, rel=1e-10)
+        assert float(p["pressure_from_stress"]) == pytest.approx(10, rel=1e-9)
+        assert abs(float(p["tangential_traction"])) == pytest.approx(2, rel=1e-10)
+        assert float(p["x"]) == pytest.approx(float(p["X"]), abs=1e-12)
+        assert p["state"] == "stick"
+    # the force on the block: the plane pushes up by p W, and back against the push by tau W
+    assert s["contact"]["resultant"] == pytest.approx([-4, 20], rel=1e-10)
+    path = rows(tmp_path / "path.csv")
+    assert [float(r["displacement_factor_x"]) for r in path] == [0, 0, 0.5, 1]
+    assert [float(r["displacement_factor_y"]) for r in path] == [0.5, 1, 1, 1]
+    # pressed, not yet pushed: no tangential force
+    assert float(path[1]["resultant_x"]) == pytest.approx(0, abs=1e-12)
+    assert float(path[1]["resultant_y"]) == pytest.approx(20, rel=1e-10)
+
+
+def test_the_load_path_matters(hpcontact, tmp_path):
+    """Press then push: the base slides with |t_T| = mu p, the friction force -mu P. Push first
+    (nothing presses, the block slides freely), then press: no tangential force at all."""
+    s = run(hpcontact, PRESS_PUSH, tmp_path / "press-push")
+    assert s["contact"]["normal_force"] == pytest.approx(20, rel=1e-10)
+    assert s["contact"]["resultant"][0] == pytest.approx(-0.3 * 20, rel=1e-10)
+    for p in rows(tmp_path / "press-push" / "contact.csv"):
+        assert p["state"] == "slip"
+        assert abs(float(p["tangential_traction"])) == pytest.approx(0.3 * float(p["pressure"]), rel=1e-9)
+    s = run(hpcontact, PRESS_PUSH, tmp_path / "push-press",
+            "solver.stages[0].displacements_x=1", "solver.stages[0].displacements_y=0")
+    assert s["contact"]["normal_force"] == pytest.approx(20, rel=1e-10)
+    assert s["contact"]["resultant"][0] == pytest.approx(0, abs=1e-9)
+
+
+def force_controlled(tmp_path):
+    """The press-push block under force control: its top's displacement scaled to P = 20."""
+    case = tmp_path / "force.yaml"
+    head, _, _ = open(PRESS_PUSH).read().partition("solver:")
+    case.write_text(head + "solver:\n  load_steps: 4\n  target_resultant: {value: 20, component: y}\n")
+    return case
+
+
+def test_force_control_with_friction(hpcontact, tmp_path):
+    """target_resultant with friction: force-controlled load steps reach the force (5, 10, 15,
+    20: each step its share) and the state of the displacement-controlled path to the same
+    factor (the slip at mu p, as the path of both components together prescribes it)."""
+    settings = ["solver.stages[0].displacements_x=1", "solver.stages[0].steps=4"]
+    shown = run(hpcontact, PRESS_PUSH, tmp_path / "displacement", *settings)
+    forced = run(hpcontact, force_controlled(tmp_path), tmp_path / "force")
+    assert forced["load_factor"] == pytest.approx(1, rel=1e-9)
+    assert [float(r["resultant_y"]) for r in rows(tmp_path / "force" / "path.csv")] == \
+        pytest.approx([5, 10, 15, 20], rel=1e-9)
+    assert forced["contact"]["resultant"] == pytest.approx(shown["contact"]["resultant"], rel=1e-9)
+    a = rows(tmp_path / "force" / "contact.csv")
+    b = rows(tmp_path / "displacement" / "contact.csv")
+    assert len(a) == len(b)
+    for p, q in zip(a, b):
+        assert float(p["tangential_traction"]) == pytest.approx(float(q["tangential_traction"]), rel=1e-8)
+        assert float(p["x"]) == pytest.approx(float(q["x"]), rel=1e-8, abs=1e-12)
+
+
+@pytest.mark.parametrize("settings, message, code", [
+    # given on the command line: a command-line mistake (exit 2)
+    (["solver.stages[0].displacements=1"],
+     "solver.stages[0].displacements (from --set): displacements_x and displacements_y are both given", 2),
+    (["contact[0].enforcement=penalty", "contact[0].friction.penalty=1e6", "contact[0].penalty=1e6"],
+     "force control with friction needs the first contact pair enforced exactly", 1),
+])
+def test_contradicting_load_paths_are_refused(hpcontact, tmp_path, settings, message, code):
+    case = PRESS_PUSH if code == 2 else force_controlled(tmp_path)
+    args = ["run", case, "--out", tmp_path / "out", "-q"]
+    for s in settings:
+        args += ["--set", s]
+    r = hpcontact(*args)
+    assert r.returncode == code, r.stderr
+    assert message in r.stderr, r.stderr
+    assert os.path.basename(case) in r.stderr
+    assert not os.path.exists(tmp_path / "out" / "summary.json")
