@@ -66,7 +66,7 @@ def test_inverting_element_is_reported_and_last_step_kept(hpcontact, root, tmp_p
 
 
 @pytest.mark.parametrize("setting, message", [
-    ("bodies[0].material.plane=stress", "neo-hooke is implemented in plane strain only"),
+    ("bodies[0].material.plane=stress", "neo-hooke is implemented in plane strain and axisymmetry only"),
     ("bodies[0].material.model=mooney", "mooney"),
 ])
 def test_bad_material_input(hpcontact, root, tmp_path, setting, message):

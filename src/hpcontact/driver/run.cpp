@@ -112,7 +112,26 @@ nlohmann::json points_json(const std::vector<Vec2>& points) {
 using Comparisons = std::vector<std::optional<PressureComparison>>;
 
 /// The comparisons of a problem, on its discretisation before the solve.
+/// exact (Lamé's energy error) measures linear plane elasticity: a body of finite strain or an
+/// axisymmetric one is refused before the solve, naming the key and the body's.
+void require_exact_applies(const model::ProblemSpec& spec, const model::Discretization& d) {
+  if (spec.exact.type.empty()) return;
+  for (size_t b = 0; b < d.bodies.size(); ++b) {
+    const auto& body = d.bodies[b];
+    const std::string key = "bodies[" + std::to_string(b) + "].material.";
+    HPC_REQUIRE(!body.finite_strain(), InputError, spec.exact.where.str(),
+                ": does not apply to a finite-strain body: Lamé's closed form is linear "
+                "elasticity, and body '", body.name, "' is ", material::law_name(body.law), " (",
+                key, "model)");
+    HPC_REQUIRE(!body.axisymmetric(), InputError, spec.exact.where.str(),
+                ": does not apply to an axisymmetric body: the energy error against Lamé's "
+                "cylinder is of a plane section, and body '", body.name, "' is axisymmetric (",
+                key, "plane)");
+  }
+}
+
 Comparisons comparisons_of(const model::ProblemSpec& spec, const model::Discretization& d) {
+  require_exact_applies(spec, d);
   bool any = false;
   for (const auto& c : spec.contact) any = any || c.compare.has_value();
   if (!any) return {};

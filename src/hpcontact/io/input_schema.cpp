@@ -126,7 +126,7 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "bodies[].material.model", .type = T::choice, .default_yaml = "linear-elastic",
        .doc = "Material law. `linear-elastic`: small strain. `saint-venant-kirchhoff` and "
               "`neo-hooke` (compressible, W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2, plane "
-              "strain only): finite strain, total Lagrangian, solved by Newton in load steps; "
+              "strain or axisymmetric, not plane stress): finite strain, total Lagrangian, solved by Newton in load steps; "
               "stresses reported are Cauchy stresses on the deformed body, strains Green-Lagrange.",
        .choices = {"linear-elastic", "saint-venant-kirchhoff", "neo-hooke"}},
       {.path = "bodies[].material.E", .type = T::number, .required = true,
@@ -138,7 +138,8 @@ const std::vector<KeySpec>& input_schema() {
               "of a solid of revolution about the axis x = 0 (x the radius r >= 0, y the axial "
               "coordinate z; ux = u_r, uy = u_z), with the hoop strain u_r / r; its integrals are "
               "over the whole circle (dV = 2 pi r dA), so forces, resultants and energies are "
-              "totals of the solid (compare: 3-D Hertz of spheres). Linear elastic only; u_r = 0 "
+              "totals of the solid (compare: 3-D Hertz of spheres). Linear or finite strain (the "
+              "hoop stretch 1 + u_r / r in the deformation gradient); u_r = 0 "
               "on the axis is the user's constraint (the quadrature never evaluates 1/r at r = "
               "0); a multiplier node on the axis carries no share of the boundary, its pressure "
               "is the even extension of its neighbours'.",

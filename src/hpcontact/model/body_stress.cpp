@@ -4,7 +4,9 @@
 #include <cmath>
 
 #include "hpcontact/fem/elasticity.hpp"
+#include "hpcontact/fem/axisymmetric_finite_strain.hpp"
 #include "hpcontact/fem/finite_strain.hpp"
+#include "hpcontact/material/hyperelastic_hoop.hpp"
 
 namespace hpcontact::model {
 
@@ -27,6 +29,12 @@ PointStress point_stress(const Body& body, int q, const fem::PointValues& pv, co
   ps.F = fem::deformation_gradient(pv, u_e);
   const Eigen::Matrix2d E = 0.5 * (ps.F.transpose() * ps.F - Eigen::Matrix2d::Identity());
   ps.strain = {E(0, 0), E(1, 1), 2 * E(0, 1)};
+  if (body.axisymmetric()) {
+    const double F_hoop = fem::hoop_stretch(pv.N, pv.x, u_e, ps.F(0, 0));
+    const auto state = material::hoop_hyperelastic_state(m, body.law, ps.F, F_hoop);
+    ps.stress = material::hoop_cauchy_stress(state, ps.F, F_hoop, &ps.stress_zz);
+    return ps;
+  }
   const auto state = material::hyperelastic_state(m, body.law, ps.F);
   ps.stress = material::cauchy_stress(state, ps.F, &ps.stress_zz);
   return ps;

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "hpcontact/contact/two_body.hpp"
-#include "hpcontact/fem/finite_strain.hpp"
+#include "hpcontact/model/finite_strain_body.hpp"
 #include "hpcontact/model/parallel.hpp"
 
 namespace hpcontact::model {
@@ -61,8 +61,7 @@ bool FiniteStrainForces::add(const Eigen::VectorXd& u, Eigen::VectorXd& R,
   parallel_for(ne, [&](int i) {
     const Body& body = d_.bodies[elements_[i].body];
     const int q = elements_[i].q;
-    el[i] = fem::finite_strain_element(values_[i], body.material_of(q), body.law, body.thickness,
-                                       body.element_coefficients(q, u), t != nullptr);
+    el[i] = finite_strain_element(body, q, values_[i], body.element_coefficients(q, u), t != nullptr);
   });
   for (int i = 0; i < ne; ++i) {
     const Body& body = d_.bodies[elements_[i].body];

@@ -116,12 +116,9 @@ Body make_body(const ProblemSpec& spec, int b) {
   if (bs.material.model == "saint-venant-kirchhoff") body.law = material::Law::saint_venant_kirchhoff;
   if (bs.material.model == "neo-hooke") body.law = material::Law::neo_hooke;
   HPC_REQUIRE(body.law != material::Law::neo_hooke || mat.plane != material::Plane::stress, InputError,
-              bs.material.where.str(), ".plane: neo-hooke is implemented in plane strain only "
-              "(use plane: strain, or saint-venant-kirchhoff in plane stress)");
+              bs.material.where.str(), ".plane: neo-hooke is implemented in plane strain and "
+              "axisymmetry only (use plane: strain, or saint-venant-kirchhoff in plane stress)");
   if (body.axisymmetric()) {
-    HPC_REQUIRE(!body.finite_strain(), InputError, bs.material.where.str(),
-                ".plane: axisymmetric bodies are linear elastic so far (model: linear-elastic); "
-                "finite strain in axisymmetry is not implemented");
     for (int v = 0; v < body.mesh.n_nodes(); ++v)
       HPC_REQUIRE(body.mesh.node(v).x() >= 0, InputError, bs.where.str(), ".nodes: node ",
                   body.mesh.node_id(v), " lies at x = r = ", body.mesh.node(v).x(),

@@ -6,8 +6,8 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/elasticity.hpp"
 #include "hpcontact/fem/element_values.hpp"
-#include "hpcontact/fem/finite_strain.hpp"
 #include "hpcontact/model/body_stress.hpp"
+#include "hpcontact/model/finite_strain_body.hpp"
 
 namespace hpcontact::post {
 
@@ -59,9 +59,7 @@ double strain_energy(const model::Discretization& d, const Eigen::VectorXd& u) {
       const auto ev = fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q],
                                           body.mesh, q);
       if (body.finite_strain()) {
-        U += fem::finite_strain_element(ev, body.material_of(q), body.law, body.thickness,
-                                        body.element_coefficients(q, u), false)
-                 .energy;
+        U += model::finite_strain_element(body, q, ev, body.element_coefficients(q, u), false).energy;
         continue;
       }
       const Eigen::VectorXd ue = body.element_coefficients(q, u);

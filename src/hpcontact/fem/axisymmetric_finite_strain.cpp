@@ -1,0 +1,86 @@
+// Axisymmetric total Lagrangian element. The rows of B for mode a are the plane element's
+// (F_i1 N_a,1, F_i2 N_a,2, F_i1 N_a,2 + F_i2 N_a,1) for component i, and a fourth, the hoop
+// row F_θθ N_a / R on u_r only (δF_θθ = δu_r / R). Its geometric tangent: the plane
+// δ_ik ∇N_a · S ∇N_b plus, from δ(F_θθ / R) N_a = N_a N_b / R² δu_r, S_θθ N_a N_b / R² on the
+// u_r–u_r block. The weight of a point is w = JxW · 2π R.
+#include "hpcontact/fem/axisymmetric_finite_strain.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "hpcontact/fem/out_of_plane.hpp"
+#include "hpcontact/material/hyperelastic_hoop.hpp"
+
+namespace hpcontact::fem {
+
+double hoop_stretch(const Eigen::VectorXd& N, const Vec2& X, const Eigen::VectorXd& u_e, double F_rr) {
+  const double R = X.x();
+  if (R <= 1e-12 * (1 + std::abs(X.y()))) return F_rr;
+  return 1 + N.dot(u_e.head(N.size())) / R;
+}
+
+FiniteStrainElement axisymmetric_finite_strain_element(const ElementValues& ev,
+                                                       const material::LinearElastic& elastic,
+                                                       material::Law law, const Eigen::VectorXd& u_e,
+                                                       bool tangent) {
+  const int n = ev.n_modes(), nq = ev.n_points();
+  FiniteStrainElement el;
+  std::vector<Eigen::Matrix2d> F(nq);
+  Eigen::VectorXd F_hoop(nq), inv_R(nq);
+  const Eigen::VectorXd u_r = ev.N.transpose() * u_e.head(n);
+  el.min_J = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < nq; ++k) {
+    F[k] = deformation_gradient(ev, k, u_e);
+    inv_R(k) = 1 / ev.x[k].x();  // Gauss points are inside the element: R > 0
+    F_hoop(k) = 1 + u_r(k) * inv_R(k);
+    const double det = F[k].determinant();
+    // det F = det F_plane · F_θθ; both factors must be positive (two negatives are a fold too)
+    const double J = det > 0 && F_hoop(k) > 0 ? det * F_hoop(k) : std::min(det, F_hoop(k));
+    if (!(J > el.min_J)) {
+      el.min_J = J;
+      el.min_J_point = k;
+    }
+  }
+  if (el.inverted()) return el;
+
+  el.f_int = Eigen::VectorXd::Zero(2 * n);
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(4 * nq, 2 * n), CB;  // stacked B; ℂ w B
+  Eigen::VectorXd wS11(nq), wS22(nq), wS12(nq), wShoop(nq);
+  if (tangent) CB.resize(4 * nq, 2 * n);
+  const OutOfPlane ring(0, true);
+  for (int k = 0; k < nq; ++k) {
+    const auto state = material::hoop_hyperelastic_state(elastic, law, F[k], F_hoop(k));
+    const double w = ev.JxW(k) * ring.at(ev.x[k]);
+    el.energy += w * state.W;
+    const auto Nx = ev.dN_dx.col(k), Ny = ev.dN_dy.col(k);
+    for (int i = 0; i < 2; ++i) {
+      B.block(4 * k, i * n, 1, n) = F[k](i, 0) * Nx.transpose();
+      B.block(4 * k + 1, i * n, 1, n) = F[k](i, 1) * Ny.transpose();
+      B.block(4 * k + 2, i * n, 1, n) = (F[k](i, 0) * Ny + F[k](i, 1) * Nx).transpose();
+    }
+    B.block(4 * k + 3, 0, 1, n) = (F_hoop(k) * inv_R(k)) * ev.N.col(k).transpose();
+    el.f_int.noalias() += B.middleRows(4 * k, 4).transpose() * (w * state.S);
+    if (!tangent) continue;
+    CB.middleRows(4 * k, 4).noalias() = (w * state.C) * B.middleRows(4 * k, 4);
+    wS11(k) = w * state.S(0);
+    wS22(k) = w * state.S(1);
+    wS12(k) = w * state.S(2);
+    wShoop(k) = w * state.S(3) * inv_R(k) * inv_R(k);
+  }
+  if (!tangent) return el;
+  el.K.noalias() = B.transpose() * CB;
+  Eigen::MatrixXd G(n, n);
+  G.noalias() = ev.dN_dx * wS11.asDiagonal() * ev.dN_dx.transpose();
+  G.noalias() += ev.dN_dy * wS22.asDiagonal() * ev.dN_dy.transpose();
+  Eigen::MatrixXd XY(n, n);
+  XY.noalias() = ev.dN_dx * wS12.asDiagonal() * ev.dN_dy.transpose();
+  G += XY + XY.transpose();
+  el.K.topLeftCorner(n, n) += G;
+  el.K.bottomRightCorner(n, n) += G;
+  el.K.topLeftCorner(n, n).noalias() += ev.N * wShoop.asDiagonal() * ev.N.transpose();
+  return el;
+}
+
+}  // namespace hpcontact::fem
