@@ -183,3 +183,21 @@ def test_two_blocks_tangent_one_way_along_each_side(hpcontact, tmp_path, enforce
                                        err_msg=f"{body} {key}")
     rel = 1e-9 if enforcement == "augmented-lagrangian" else 1e-5
     assert pair["tangential_force"] == pytest.approx(-exact["shear"] * exact["length"], rel=rel)
+
+
+def test_transitions_where_the_state_changes_along_the_interface(hpcontact, root, tmp_path):
+    """examples/two-bars/coulomb.yaml: the reported stick-slip transitions are exactly the
+    midpoints of neighbouring rows of the upper bar (a straight chain along x: its rows in order)
+    whose states are stick and slip, counted independently from contact.csv. Catches: counting
+    across open or not-anchored points, or between points that are not neighbours."""
+    out = tmp_path / "out"
+    r = hpcontact("run", f"{root}/examples/two-bars/coulomb.yaml", "--out", out, "-q")
+    assert r.returncode == 0, r.stderr
+    rows = [r for r in csv.DictReader(open(out / "contact.csv")) if r["body"] == "upper"]
+    rows.sort(key=lambda r: float(r["X"]))
+    expected = [0.5 * (float(a["X"]) + float(b["X"])) for a, b in zip(rows, rows[1:])
+                if {a["state"], b["state"]} == {"stick", "slip"}]
+    assert expected, "the example has a stick zone and a slip zone"
+    friction = json.load(open(out / "summary.json"))["contact_pairs"][0]["friction"]
+    got = [p[0] for p in friction["stick_slip_transitions"]]
+    assert got == pytest.approx(expected, abs=1e-9)  # contact.csv has 12 digits

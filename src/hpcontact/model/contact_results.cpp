@@ -287,6 +287,24 @@ struct SideColumns {
   }
 };
 
+/// The mesh edge of each state's point of a pair's own side: its multiplier node's first edge
+/// (exact enforcement) or its contact point's.
+std::vector<int> state_edges(const ContactPair& pair) {
+  std::vector<int> edges;
+  if (pair.constraints)
+    for (const auto& node : pair.constraints->nodes.nodes) edges.push_back(pair.constraints->edges[node.edge]);
+  else
+    for (const auto& cp : pair.points) edges.push_back(pair.edges[cp.edge]);
+  return edges;
+}
+
+/// The mesh edge of each of the other body's contact points.
+std::vector<int> other_point_edges(const ContactPair& pair) {
+  std::vector<int> edges;
+  for (const auto& cp : pair.other_points) edges.push_back(pair.other_edges[cp.edge]);
+  return edges;
+}
+
 ContactResult contact_result(const Discretization& d, const ContactPair& pair,
                              const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers) {
   const Body& body = d.bodies[pair.body];
@@ -407,6 +425,8 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       }
     }
   }
+  res.order = contact::boundary_order(body.mesh, state_edges(pair));
+  if (pair.other >= 0) res.other_order = contact::boundary_order(d.bodies[pair.other].mesh, other_point_edges(pair));
   for (const double p : res.pressure) res.pressure_max = std::max(res.pressure_max, p);
   ZoneEnds own = pair.constraints ? node_zone_ends(body, pair, res.nodes, u, multipliers->head(pair.constraints->size()))
                                   : zone_ends(body, pair.points, res.states, *pair.obstacle, pair, u);

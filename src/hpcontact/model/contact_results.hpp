@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include "hpcontact/contact/stick_slip.hpp"
 #include "hpcontact/model/contact_pairs.hpp"
 
 namespace hpcontact::model {
@@ -71,6 +72,9 @@ struct ContactResult {
   std::vector<Vec2> other_X;
   std::vector<double> other_s, other_pressure, other_pressure_from_stress, other_minus_sigma_nn,
       other_shear_from_stress;
+  /// The states' neighbours along the pair's contact boundary, and the other body's points'
+  /// along its boundary (contact::boundary_order): for walking each side in order.
+  contact::BoundaryOrder order, other_order;
   /// Exact enforcement: the multiplier nodes, with the pressure the method carries.
   struct Node {
     Vec2 X, x;          ///< undeformed and deformed position
