@@ -208,6 +208,9 @@ py::dict contact_table(const Result& res) {
   out["s"] = to_numpy(t.s);
   out["traction"] = to_numpy(t.traction);
   out["minus_sigma_nn"] = to_numpy(t.minus_sigma_nn);
+  out["tangent_x"] = to_numpy(t.tangent_x);
+  out["tangent_y"] = to_numpy(t.tangent_y);
+  out["shear_from_stress"] = to_numpy(t.shear_from_stress);
   return out;
 }
 
@@ -376,7 +379,9 @@ points and body as for displacement(); returns shape (n, 4) (or (4,)).)")
 Gauss point of every pair (the "pair" column says which): pair, X, Y (undeformed), x, y
 (deformed), gap, pressure (penalty), pressure_from_stress, tangential_gap,
 tangential_traction, slip (zero without friction) and state (str array: "open", "contact",
-"stick", "slip"). Arrays of length 0 when the problem has no contact.)")
+"stick", "slip"), body, s, traction, minus_sigma_nn, tangent_x, tangent_y (the tangent the
+friction columns are signed along) and shear_from_stress. Arrays of length 0 when the problem
+has no contact.)")
       .def("pressure_curve", &pressure_curve,
            R"(pressure.csv's columns as numpy arrays, when the first contact pair has a compare
 section (None otherwise): x (along the obstacle, on 1001 points of [0, 1.5 b] and the zone ends),

@@ -147,7 +147,8 @@ def test_hertz_run_writes_contact_curve(hpcontact, root, tmp_path):
     assert abs(s["contact"]["resultant"][1] - 35000) < 35
     lines = (tmp_path / "contact.csv").read_text().splitlines()
     assert lines[0] == ("pair,X,Y,x,y,gap,pressure,pressure_from_stress,tangential_gap,"
-                        "tangential_traction,slip,state,body,s,traction,minus_sigma_nn")
+                        "tangential_traction,slip,state,body,s,traction,minus_sigma_nn,"
+                        "tangent_x,tangent_y,shear_from_stress")
     assert {line.split(",")[11] for line in lines[1:]} <= {"open", "contact"}  # frictionless
     # a row per multiplier node: 8 + 1 Gauss-Lobatto points on each of the 2 contact edges,
     # their shared vertex once (exact enforcement against a rigid plane: collocation)

@@ -32,6 +32,14 @@ struct FrictionHistory {
   double slip = 0;          ///< accumulated slip g_s (the plastic part of g_T)
 };
 
+/// The unit tangent τ that friction is signed along at a point whose obstacle has the outward
+/// unit normal n there: n turned clockwise by 90°, τ = (n_y, −n_x), so that (τ, n) is
+/// right-handed. Defined by the normal alone, it runs the same way along the whole boundary of
+/// an obstacle: along a plane with normal (0, 1) it is (1, 0); against another body it does not
+/// depend on the direction that body's edges are parametrised in (an edge's dx/dt would flip
+/// between elements listed in opposite orientations, as hp refinement creates).
+inline Vec2 friction_tangent(const Vec2& n) { return Vec2(n.y(), -n.x()); }
+
 /// Stick or slip at one point.
 enum class StickSlip { open, stick, slip };
 

@@ -58,7 +58,7 @@ void penalty_contact(const std::vector<ContactPoint>& points, const Obstacle& ob
     }
     const double pen = g < 0 ? -g : 0.0;
     PointState ps{x, g, eps_n * pen, eps_n * pen * n, n};
-    ps.tau = Vec2(n.y(), -n.x());
+    ps.tau = friction_tangent(n);
     ps.foot = x - g * n;
     // g = 0 counts as active: the force is zero there but the tangent takes the side of
     // contact, so a body that touches its support without load (a zero initial gap) is held.

@@ -3,6 +3,8 @@
 // Wriggers, Computational Contact Mechanics, ch. 4; see two_body.hpp for the formula).
 #include "hpcontact/contact/point_gap.hpp"
 
+#include "hpcontact/contact/friction.hpp"
+
 namespace hpcontact::contact {
 
 PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const Eigen::VectorXd& u,
@@ -15,7 +17,7 @@ PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const
   Mat2 dn = Mat2::Zero();
   pg.g = obstacle.gap(pg.x, &pg.normal, second ? &dn : nullptr);
   pg.found = true;
-  pg.tangent = Vec2(pg.normal.y(), -pg.normal.x());
+  pg.tangent = friction_tangent(pg.normal);
   pg.foot = pg.x - pg.g * pg.normal;
   pg.dofs.resize(2 * m);
   pg.dg.resize(2 * m);
@@ -46,7 +48,7 @@ PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
   pg.found = true;
   const Vec2 n = foot.normal, t = foot.dx_dt;
   pg.normal = n;
-  pg.tangent = t.normalized();
+  pg.tangent = friction_tangent(n);  // not t/|t|: t follows the edge's parametrisation
   pg.foot = foot.x;
   pg.foot_edge = foot.edge;
   pg.foot_t = foot.t;

@@ -22,7 +22,7 @@ struct PointGap {
   double g = std::numeric_limits<double>::infinity();
   Vec2 x = Vec2::Zero();       ///< deformed position
   Vec2 normal = Vec2(0, 1);    ///< the obstacle's outward unit normal at the closest point
-  Vec2 tangent = Vec2(1, 0);   ///< unit tangent of the obstacle there, (n_y, −n_x) or dx_m/dξ
+  Vec2 tangent = Vec2(1, 0);   ///< unit tangent of the obstacle there, friction_tangent(normal)
   Vec2 foot = Vec2::Zero();    ///< the closest point
   int foot_edge = -1;          ///< two bodies: its edge of the other boundary, and parameter
   double foot_t = 0;

@@ -21,14 +21,17 @@ void two_body_contact(const std::vector<ContactPoint>& points, const Eigen::Vect
     for (int k = 0; k < ms; ++k)
       xs += cp.N(k) * Vec2(u_s(2 * cp.modes[k]), u_s(2 * cp.modes[k] + 1));
     if (!master.project(xs, foot)) {
-      if (states) (*states)[i] = PointState{xs, std::numeric_limits<double>::infinity(), 0, Vec2::Zero(), Vec2(0, 1)};
+      if (states) {
+        (*states)[i] = PointState{xs, std::numeric_limits<double>::infinity(), 0, Vec2::Zero(), Vec2(0, 1)};
+        (*states)[i].tau = Vec2::Zero();  // no foot, no tangent
+      }
       continue;
     }
     const Vec2 n = foot.normal, t = foot.dx_dt;
     const double g = (xs - foot.x).dot(n);
     const double p = g < 0 ? -eps_n * g : 0.0;
     PointState ps{xs, g, p, p * n, n};
-    ps.tau = t.normalized();
+    ps.tau = friction_tangent(n);
     ps.foot_edge = foot.edge;
     ps.foot_t = foot.t;
     ps.foot = foot.x;

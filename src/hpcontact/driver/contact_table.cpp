@@ -13,7 +13,8 @@ void add_side(ContactTable& t, int k, const std::string& body,
               const std::vector<contact::PointState>& states, const std::vector<Vec2>& X,
               const std::vector<double>& s, const std::vector<double>& pressure,
               const std::vector<double>& pressure_from_stress,
-              const std::vector<double>& minus_sigma_nn) {
+              const std::vector<double>& minus_sigma_nn,
+              const std::vector<double>& shear_from_stress) {
   for (size_t i = 0; i < states.size(); ++i) {
     const auto& p = states[i];
     t.pair.push_back(k);
@@ -31,6 +32,9 @@ void add_side(ContactTable& t, int k, const std::string& body,
     t.tangential_gap.push_back(p.g_t);
     t.tangential_traction.push_back(p.t_t);
     t.slip.push_back(p.slip);
+    t.tangent_x.push_back(p.tau.x());
+    t.tangent_y.push_back(p.tau.y());
+    t.shear_from_stress.push_back(shear_from_stress[i]);
     t.state.push_back(contact::state_name(contact::contact_state(p)));
   }
 }
@@ -45,10 +49,11 @@ ContactTable contact_table(const model::Discretization& d,
     const auto& c = contact[k];
     const int pk = static_cast<int>(k);
     add_side(t, pk, d.bodies[pairs[k].body].name, c.states, c.X, c.s, c.pressure,
-             c.pressure_from_stress, c.minus_sigma_nn);
+             c.pressure_from_stress, c.minus_sigma_nn, c.shear_from_stress);
     if (pairs[k].other >= 0)
       add_side(t, pk, d.bodies[pairs[k].other].name, c.other_states, c.other_X, c.other_s,
-               c.other_pressure, c.other_pressure_from_stress, c.other_minus_sigma_nn);
+               c.other_pressure, c.other_pressure_from_stress, c.other_minus_sigma_nn,
+               c.other_shear_from_stress);
   }
   return t;
 }
@@ -57,13 +62,14 @@ std::string contact_csv(const ContactTable& t) {
   std::ostringstream csv;
   csv << std::setprecision(12)
       << "pair,X,Y,x,y,gap,pressure,pressure_from_stress,tangential_gap,tangential_traction,"
-         "slip,state,body,s,traction,minus_sigma_nn\n";
+         "slip,state,body,s,traction,minus_sigma_nn,tangent_x,tangent_y,shear_from_stress\n";
   for (size_t i = 0; i < t.size(); ++i)
     csv << t.pair[i] << ',' << t.X[i] << ',' << t.Y[i] << ',' << t.x[i] << ',' << t.y[i] << ','
         << t.gap[i] << ',' << t.pressure[i] << ',' << t.pressure_from_stress[i] << ','
         << t.tangential_gap[i] << ',' << t.tangential_traction[i] << ',' << t.slip[i] << ','
         << t.state[i] << ',' << t.body[i] << ',' << t.s[i] << ',' << t.traction[i] << ','
-        << t.minus_sigma_nn[i] << '\n';
+        << t.minus_sigma_nn[i] << ',' << t.tangent_x[i] << ',' << t.tangent_y[i] << ','
+        << t.shear_from_stress[i] << '\n';
   return csv.str();
 }
 

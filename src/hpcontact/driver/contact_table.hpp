@@ -27,6 +27,13 @@ struct ContactTable {
   std::vector<double> traction;
   std::vector<double> minus_sigma_nn;    ///< −n·σ·n, n the body's undeformed outward normal
   std::vector<double> tangential_gap, tangential_traction, slip;  ///< zero without friction
+  /// The unit tangent τ that tangential_gap, tangential_traction and slip are signed along:
+  /// contact::friction_tangent of the outward normal of what the point touches (the row's body
+  /// receives −t_T τ); zero where the point has no foot on it.
+  std::vector<double> tangent_x, tangent_y;
+  /// The tangential traction from the body's stresses along τ, per unit length along the
+  /// obstacle (as pressure_from_stress): t_T dS/ds as the stresses say it.
+  std::vector<double> shear_from_stress;
   std::vector<std::string> state;        ///< "open", "contact", "stick" or "slip"
   size_t size() const { return pair.size(); }
 };
@@ -37,8 +44,9 @@ ContactTable contact_table(const model::Discretization& d,
                            const std::vector<model::ContactPair>& pairs);
 
 /// The table as CSV text (header pair,X,Y,x,y,gap,pressure,pressure_from_stress,tangential_gap,
-/// tangential_traction,slip,state,body,s,traction,minus_sigma_nn; 12 significant digits): the
-/// columns of earlier versions first, in their order.
+/// tangential_traction,slip,state,body,s,traction,minus_sigma_nn,tangent_x,tangent_y,
+/// shear_from_stress; 12 significant digits): the columns of earlier versions first, in their
+/// order.
 std::string contact_csv(const ContactTable& table);
 
 }  // namespace hpcontact::driver

@@ -195,7 +195,8 @@ nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureCompa
   cj["max_penetration"] = c.max_penetration;
   if (pair.friction.active()) {
     // Stick and slip along the interface: counts, the largest |t_T| / (mu p_N) of each state,
-    // and where the state changes between neighbouring points (midway between them).
+    // and where the state changes between neighbouring points along each side (midway
+    // between them).
     nlohmann::json fj;
     const bool coulomb = pair.friction.kind == contact::FrictionLaw::Kind::coulomb;
     fj["law"] = coulomb ? "coulomb" : "stick";
@@ -203,8 +204,6 @@ nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureCompa
     fj["penalty"] = pair.friction.eps_t;
     int n_stick = 0, n_slip = 0;
     double stick_ratio = 0, slip_ratio = 0;
-    std::vector<Vec2> transitions;
-    const contact::PointState* previous = nullptr;
     for (size_t i = 0; i < c.states.size(); ++i) {
       const auto& s = c.states[i];
       const double ratio = s.pressure > 0 && coulomb ? std::abs(s.t_t) / (pair.friction.mu * s.pressure) : 0;
@@ -215,10 +214,6 @@ nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureCompa
         ++n_slip;
         slip_ratio = std::max(slip_ratio, ratio);
       }
-      if (previous && previous->stick_slip != contact::StickSlip::open &&
-          s.stick_slip != contact::StickSlip::open && previous->stick_slip != s.stick_slip)
-        transitions.push_back(0.5 * (c.X[i - 1] + c.X[i]));
-      previous = &s;
     }
     fj["stick_points"] = n_stick;
     fj["slip_points"] = n_slip;
@@ -226,7 +221,10 @@ nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureCompa
       fj["max_stick_ratio"] = stick_ratio;
       fj["max_slip_ratio"] = slip_ratio;
     }
-    fj["stick_slip_transitions"] = points_json(transitions);
+    fj["stick_slip_transitions"] = points_json(contact::stick_slip_transitions(c.states, c.X, c.order));
+    if (pair.other >= 0 && !pair.constraints)  // the other body's points carry their own states
+      fj["stick_slip_transitions_other"] =
+          points_json(contact::stick_slip_transitions(c.other_states, c.other_X, c.other_order));
     cj["friction"] = fj;
   }
   if (comparison)

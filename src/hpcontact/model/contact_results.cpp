@@ -85,13 +85,17 @@ struct SideValues {
   double length_ratio = 1;    ///< dS/ds: undeformed boundary length per unit length along the obstacle
   double minus_sigma_nn = 0;  ///< −n·σ·n, n the outward normal (under finite strain the deformed one)
   double pressure_from_stress = 0;  ///< n_o·(P N) dS/ds
+  double shear_from_stress = 0;     ///< −τ_o·(P N) dS/ds, τ_o = friction_tangent(n_o)
 };
 
 /// At local edge parameter t of element q of `body`, against `obstacle` (its normal n_o at the
-/// deformed point: the direction the contact force acts along; −N where the point has no foot):
-///   −n·σ·n,   n_o·(P N) dS/ds,
+/// deformed point: the direction the contact force acts along; −N where the point has no foot;
+/// τ_o = friction_tangent(n_o) the direction friction acts along):
+///   −n·σ·n,   n_o·(P N) dS/ds,   −τ_o·(P N) dS/ds,
 /// N the undeformed outward normal, P N = J σ F⁻ᵀ N the traction per unit undeformed length
-/// (σ N in the linear theory), n = F⁻ᵀN / |F⁻ᵀN| (N in the linear theory).
+/// (σ N in the linear theory), n = F⁻ᵀN / |F⁻ᵀN| (N in the linear theory). The body receives
+/// the traction λ n_o − λ_T τ_o per unit undeformed length from the multipliers (penalty: p_N,
+/// t_T), so the two projections are what the stresses say λ and λ_T are.
 SideValues side_values(const Body& body, const ContactPair& pair, const contact::Obstacle& obstacle,
                        int q, int le, double t, const Eigen::VectorXd& u) {
   Vec2 N;
@@ -119,6 +123,7 @@ SideValues side_values(const Body& body, const ContactPair& pair, const contact:
   const double ds_dS = std::abs(pair.coordinate_rate(X, Vec2(N.y(), -N.x())));
   v.length_ratio = 1 / std::max(ds_dS, 1e-12);
   v.pressure_from_stress = n_o.dot(PN) * v.length_ratio;
+  v.shear_from_stress = -contact::friction_tangent(n_o).dot(PN) * v.length_ratio;
   return v;
 }
 
@@ -271,22 +276,44 @@ struct SideColumns {
   std::vector<double>& pressure;
   std::vector<double>& pressure_from_stress;
   std::vector<double>& minus_sigma_nn;
+  std::vector<double>& shear_from_stress;
   void add(const Vec2& X_point, double s_point, double p, const SideValues& sv) const {
     X.push_back(X_point);
     s.push_back(s_point);
     pressure.push_back(p);
     pressure_from_stress.push_back(sv.pressure_from_stress);
     minus_sigma_nn.push_back(sv.minus_sigma_nn);
+    shear_from_stress.push_back(sv.shear_from_stress);
   }
 };
+
+/// The mesh edge of each state's point of a pair's own side: its multiplier node's first edge
+/// (exact enforcement) or its contact point's.
+std::vector<int> state_edges(const ContactPair& pair) {
+  std::vector<int> edges;
+  if (pair.constraints)
+    for (const auto& node : pair.constraints->nodes.nodes) edges.push_back(pair.constraints->edges[node.edge]);
+  else
+    for (const auto& cp : pair.points) edges.push_back(pair.edges[cp.edge]);
+  return edges;
+}
+
+/// The mesh edge of each of the other body's contact points.
+std::vector<int> other_point_edges(const ContactPair& pair) {
+  std::vector<int> edges;
+  for (const auto& cp : pair.other_points) edges.push_back(pair.other_edges[cp.edge]);
+  return edges;
+}
 
 ContactResult contact_result(const Discretization& d, const ContactPair& pair,
                              const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers) {
   const Body& body = d.bodies[pair.body];
   ContactResult res;
-  const SideColumns own_side{res.X, res.s, res.pressure, res.pressure_from_stress, res.minus_sigma_nn};
+  const SideColumns own_side{res.X, res.s, res.pressure, res.pressure_from_stress, res.minus_sigma_nn,
+                             res.shear_from_stress};
   const SideColumns other_side{res.other_X, res.other_s, res.other_pressure,
-                           res.other_pressure_from_stress, res.other_minus_sigma_nn};
+                               res.other_pressure_from_stress, res.other_minus_sigma_nn,
+                               res.other_shear_from_stress};
   ConstraintState s;
   if (pair.constraints) {
     if (!multipliers) throw std::invalid_argument("evaluate_contact: an exact pair's results need its multipliers");
@@ -320,8 +347,9 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       ps.x = n.x;
       ps.gap = n.gap;
       ps.pressure = n.pressure;
+      ps.normal = Vec2::Zero();  // a node without a foot has neither normal nor tangent
       if (s.d_resultant[j].norm() > 0) ps.normal = s.d_resultant[j].normalized();
-      ps.tau = Vec2(ps.normal.y(), -ps.normal.x());
+      ps.tau = contact::friction_tangent(ps.normal);
       ps.traction = n.pressure * ps.normal;
       if (friction) {
         if (s.d_resultant_t[j].norm() > 0) ps.tau = -s.d_resultant_t[j].normalized();
@@ -341,11 +369,18 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
     }
     if (pair.other >= 0) {
       // The other body's points: their gap against this body's deformed boundary and the
-      // multiplier at their feet on it (the reaction, per unit length of this body's boundary).
+      // multipliers at their feet on it (the reaction, per unit length of this body's boundary).
+      // Their tangent is friction_tangent of this body's normal, opposite to the pair's: the
+      // other body receives +λ_T times the pair's tangent, i.e. −λ_T τ along its own, so t_T is
+      // λ_T on both sides.
       const Body& other = d.bodies[pair.other];
       const Eigen::VectorXd lambda = multipliers->head(c.size());
+      const Eigen::VectorXd lambda_t = friction ? Eigen::VectorXd(multipliers->tail(c.size()))
+                                                : Eigen::VectorXd::Zero(c.size());
       for (const auto& cp : pair.other_points) {
         contact::PointState ps;
+        ps.normal = Vec2::Zero();
+        ps.tau = Vec2::Zero();
         Vec2 X;
         ps.gap = gap_at(other, *pair.boundary, cp.element, cp.local_edge, cp.t, u, &ps.x, &X);
         double ratio = 0;
@@ -353,7 +388,9 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
         if (pair.boundary->project(ps.x, foot)) {
           ps.pressure = c.nodes.interpolate(foot.edge, foot.t, lambda);
           ps.normal = foot.normal;
-          ps.traction = -ps.pressure * foot.normal;
+          ps.tau = contact::friction_tangent(foot.normal);
+          ps.t_t = c.nodes.interpolate(foot.edge, foot.t, lambda_t);
+          ps.traction = ps.pressure * foot.normal - ps.t_t * ps.tau;
           const auto& edge = body.mesh.edge(pair.edges[foot.edge]);
           Vec2 N;
           double dS_dt = 0;
@@ -388,6 +425,8 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       }
     }
   }
+  res.order = contact::boundary_order(body.mesh, state_edges(pair));
+  if (pair.other >= 0) res.other_order = contact::boundary_order(d.bodies[pair.other].mesh, other_point_edges(pair));
   for (const double p : res.pressure) res.pressure_max = std::max(res.pressure_max, p);
   ZoneEnds own = pair.constraints ? node_zone_ends(body, pair, res.nodes, u, multipliers->head(pair.constraints->size()))
                                   : zone_ends(body, pair.points, res.states, *pair.obstacle, pair, u);

@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include "hpcontact/contact/stick_slip.hpp"
 #include "hpcontact/model/contact_pairs.hpp"
 
 namespace hpcontact::model {
@@ -32,9 +33,14 @@ struct ContactResult {
   /// obstacle at s: the traction the method carries (states[i].pressure, per unit undeformed
   /// boundary length) times dS/ds. What Hertz, Shtayerman and other codes give.
   std::vector<double> pressure;
-  /// Per state: the same from the body's stresses, −n_o·(P N) dS/ds (P N the traction per unit
-  /// undeformed length, n_o the obstacle's normal at the point).
+  /// Per state: the same from the body's stresses, n_o·(P N) dS/ds (P N the traction per unit
+  /// undeformed length, n_o the obstacle's outward normal at the deformed point: the direction
+  /// the normal contact force acts along).
   std::vector<double> pressure_from_stress;
+  /// Per state: the tangential traction from the body's stresses, −τ_o·(P N) dS/ds with
+  /// τ_o = contact::friction_tangent(n_o): what the stresses say t_T (the state's t_t, along its
+  /// tau) is, per unit length along the obstacle as `pressure`.
+  std::vector<double> shear_from_stress;
   /// Per state: −n·σ·n from the stresses, n the body's own undeformed outward normal (the
   /// seed's plotted pressure; a factor cos²θ below `pressure` where the boundary is inclined).
   std::vector<double> minus_sigma_nn;
@@ -64,7 +70,11 @@ struct ContactResult {
   /// Per other_states entry, as X, s, pressure, pressure_from_stress, minus_sigma_nn are for
   /// the states (positions along the same obstacle frame).
   std::vector<Vec2> other_X;
-  std::vector<double> other_s, other_pressure, other_pressure_from_stress, other_minus_sigma_nn;
+  std::vector<double> other_s, other_pressure, other_pressure_from_stress, other_minus_sigma_nn,
+      other_shear_from_stress;
+  /// The states' neighbours along the pair's contact boundary, and the other body's points'
+  /// along its boundary (contact::boundary_order): for walking each side in order.
+  contact::BoundaryOrder order, other_order;
   /// Exact enforcement: the multiplier nodes, with the pressure the method carries.
   struct Node {
     Vec2 X, x;          ///< undeformed and deformed position

@@ -43,6 +43,8 @@ void write_contact_vtu(const std::string& path, const std::vector<model::Contact
   column("pressure_from_stress", &model::ContactResult::pressure_from_stress);
   grid.point_scalar("traction_normal", [&](std::size_t n) { return state(n).pressure; });
   column("minus_sigma_nn", &model::ContactResult::minus_sigma_nn);
+  column("shear_from_stress", &model::ContactResult::shear_from_stress);
+  grid.point_vector("tangent", [&](std::size_t n) { return state(n).tau; });
   grid.point_scalar("tangential_traction", [&](std::size_t n) { return state(n).t_t; });
   grid.point_scalar("slip", [&](std::size_t n) { return state(n).slip; });
   grid.point_scalar(
