@@ -1,0 +1,187 @@
+#!/usr/bin/python3
+"""A partial-slip run (examples/partial-slip/) against Cattaneo–Mindlin's closed form.
+
+Reads the run's summary.json (P = normal_force and Q = tangential_force of pair 0) and
+contact.csv (the multiplier nodes of the pair's own body), and measures, on force per unit
+length along the common tangent (the tangential multiplier times the pressure's dS/ds):
+
+- the shear q against q(x) = mu p0 [sqrt(1 - x²/a²) - (c/a) sqrt(1 - x²/c²)] (stick, |x| < c),
+  mu p(x) (slip), c = a sqrt(1 - Q / (mu P)): the relative L2 error over the nodes in [-a, a]
+  (the nodes are the contact edges' Gauss–Lobatto points: each edge's nodes integrate the
+  polynomial through them in x exactly), and that of the pressure against Hertz's;
+- the stick zone's ends from the nodes' states: the outermost stick node on each side and the
+  first slip node beyond it, against ±c;
+- the total variation of the shear over each slip zone (an oscillation indicator), against the
+  closed form's over the same nodes;
+- the Coulomb bound |t_T| <= mu t_N at every node (largest ratio), ∫ q dx and ∫ p dx, and
+  the part of Q the pressure carries on the deformed, tilted interface (∫ p y' dx).
+
+    partial_slip_compare.py results/small-load                  # figures as JSON
+    partial_slip_compare.py results/small-load --plot shear.png # and the plot
+
+E, nu and R are read from the run's input.yaml (the upper body's material and its contact
+arcs' radius), mu from its friction.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import sys
+
+import numpy as np
+import yaml
+
+
+def closed_form(R_star, E_star, mu, P, Q):
+    """(a, c, p0, pressure(x), shear(x)) of Cattaneo–Mindlin for two similar cylinders."""
+    a = math.sqrt(4 * P * R_star / (math.pi * E_star))
+    p0 = 2 * P / (math.pi * a)
+    c = a * math.sqrt(max(0.0, 1 - Q / (mu * P)))
+    ell = lambda x, w: np.sqrt(np.clip(1 - (np.asarray(x) / w) ** 2, 0, None)) if w > 0 else 0 * np.asarray(x)  # noqa: E731
+    return a, c, p0, lambda x: p0 * ell(x, a), lambda x: mu * p0 * (ell(x, a) - c / a * ell(x, c))
+
+
+def read_case(folder):
+    """mu, R*, E*, the pair's body and the degree along the contact of the run (its input.yaml:
+    both bodies' materials and contact arcs)."""
+    spec = yaml.safe_load(open(os.path.join(folder, "input.yaml")))
+    pair = spec["contact"][0]
+    bodies = {b["name"]: b for b in spec["bodies"]}
+    inv_E, curv = 0.0, 0.0
+    for name in (pair["body"], pair["obstacle"]["body"]):
+        m = bodies[name]["material"]
+        inv_E += (1 - m["nu"] ** 2) / m["E"] if m.get("plane", "strain") == "strain" else 1 / m["E"]
+        curv += 1 / bodies[name]["curves"][0]["arc"]["radius"]
+    degree = spec["discretization"]["degree"]
+    degree = degree[0] if isinstance(degree, list) else degree
+    return pair["friction"]["mu"], 1 / curv, 1 / inv_E, pair["body"], degree
+
+
+def read_nodes(folder, body):
+    """The multiplier nodes of pair 0 (the body's own rows of contact.csv), sorted along s."""
+    with open(os.path.join(folder, "contact.csv")) as f:
+        rows = [r for r in csv.DictReader(f) if r["pair"] == "0" and r["body"] == body]
+    rows.sort(key=lambda r: float(r["s"]))
+    col = lambda k: np.array([float(r[k]) for r in rows])  # noqa: E731
+    return {"s": col("s"), "x": col("x"), "y": col("y"), "pressure": col("pressure"), "traction": col("traction"),
+            "t_t": col("tangential_traction"), "state": np.array([r["state"] for r in rows])}
+
+
+def edge_weights(s, degree):
+    """Quadrature weights of the nodes along s: the contact edges' Gauss–Lobatto nodes come in
+    blocks of degree + 1 sharing their ends (len(s) = k degree + 1), and each block's weights
+    integrate the polynomial through its nodes in s exactly."""
+    n = len(s) - 1
+    if n % degree:
+        raise SystemExit(f"{n + 1} contact nodes are not blocks of p + 1 = {degree + 1} sharing their ends")
+    w = np.zeros_like(s)
+    for k in range(0, n, degree):
+        x = s[k:k + degree + 1]
+        m, h = 0.5 * (x[0] + x[-1]), 0.5 * (x[-1] - x[0])
+        t = (x - m) / h
+        V = np.vander(t, degree + 1, increasing=True).T   # V[j, i] = t_i^j
+        moments = np.array([(1 - (-1) ** (j + 1)) / (j + 1) for j in range(degree + 1)]) * h
+        w[k:k + degree + 1] += np.linalg.solve(V, moments)
+    return w
+
+
+def total_variation(v):
+    return float(np.sum(np.abs(np.diff(v)))) if len(v) > 1 else 0.0
+
+
+def measure(folder):
+    summary = json.load(open(os.path.join(folder, "summary.json")))
+    pair = summary["contact_pairs"][0]
+    mu, R_star, E_star, body, degree = read_case(folder)
+    n = read_nodes(folder, body)
+    P, Q_run = pair["normal_force"], pair["tangential_force"]
+    Q = abs(Q_run)
+    a, c, p0, p_exact, q_exact = closed_form(R_star, E_star, mu, P, Q)
+    s = n["s"]
+    # dS/ds of each node: the pressure per unit length along the tangent over the multiplier
+    ratio = np.where(n["traction"] > 0, n["pressure"] / np.where(n["traction"] > 0, n["traction"], 1), 1.0)
+    # taken positive in the direction of its resultant (the multiplier's sign follows the
+    # tangent's orientation)
+    q = np.sign(np.sum(n["t_t"])) * n["t_t"] * ratio
+    w = edge_weights(s, degree)
+    rel = lambda fe, ex: float(np.sqrt(np.sum(w * (fe - ex) ** 2) / np.sum(w * ex ** 2)))  # noqa: E731
+    out = {"P": P, "Q": Q, "mu": mu, "R_star": R_star, "E_star": E_star, "a": a, "c": c,
+           "c_over_a": c / a, "b_over_R": a / (2 * R_star), "dofs": summary["dofs"],
+           "nodes_in_contact": int(np.sum(n["state"] != "open")),
+           "shear_rel_L2": rel(q, q_exact(s)),
+           "pressure_rel_L2": rel(n["pressure"], p_exact(s)),
+           "shear_integral": float(np.sum(w * q)), "pressure_integral": float(np.sum(w * n["pressure"]))}
+    # The pressure on the deformed interface, tilted by its slope y' (the shear's own
+    # (1 - 2 nu)(1 + nu) q / E, absent from the linear theory), carries part of Q as well:
+    # Q = ∫ q dx + ∫ p y' dx, y' of the deformed nodes, signed for the push (Q_run, the
+    # contact force on the body, opposes it)
+    slope = np.gradient(n["y"], n["x"])
+    out["tilt_force"] = float(np.sum(w * n["pressure"] * slope)) * (1.0 if Q_run <= 0 else -1.0)
+    out["x_force"] = out["shear_integral"] + out["tilt_force"]
+    # Coulomb: the multipliers themselves (per unit undeformed length), every node
+    bound = mu * np.abs(n["traction"])
+    out["coulomb_ratio_max"] = float(np.max(np.where(bound > 0, np.abs(n["t_t"]) / np.where(bound > 0, bound, 1), 0.0)))
+    out["coulomb_excess_max"] = float(np.max(np.abs(n["t_t"]) - bound * (1 + 1e-9)))
+    # stick zone ends: outermost stick node on each side, and the next slip node beyond it
+    stick = np.where(n["state"] == "stick")[0]
+    ends = {}
+    if len(stick):
+        for side, k, step in (("left", stick[0], -1), ("right", stick[-1], 1)):
+            j = k + step
+            beyond = float(s[j]) if 0 <= j < len(s) and n["state"][j] == "slip" else float("nan")
+            ends[side] = [float(s[k]), beyond]
+        mid = lambda e: 0.5 * (e[0] + e[1]) if not math.isnan(e[1]) else e[0]  # noqa: E731
+        c_fe = 0.5 * (mid(ends["right"]) - mid(ends["left"]))
+        out["stick_ends"] = ends
+        out["c_fe"] = c_fe
+        out["c_rel_error"] = (c_fe - c) / c
+    # oscillation: total variation of q over each slip zone's nodes, FE and closed form
+    tv_fe = tv_ex = 0.0
+    slip = n["state"] == "slip"
+    for zone in (slip & (s < 0), slip & (s > 0)):
+        tv_fe += total_variation(q[zone])
+        tv_ex += total_variation(q_exact(s[zone]))
+    out["slip_tv_fe"], out["slip_tv_exact"] = tv_fe, tv_ex
+    out["slip_tv_ratio"] = tv_fe / tv_ex if tv_ex > 0 else float("nan")
+    return out, (s, q, n["pressure"], n["state"], mu, a, c, p_exact, q_exact)
+
+
+def plot(data, path, title):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    s, q, p, state, mu, a, c, p_exact, q_exact = data
+    x = np.linspace(-1.2 * a, 1.2 * a, 2001)
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ax.axvspan(-c / a, c / a, color="0.92", label="stick zone, closed form")
+    ax.plot(x / a, mu * p_exact(x), "k--", lw=1, label="μ p, Hertz")
+    ax.plot(x / a, q_exact(x), "k-", lw=1.2, label="q, Cattaneo–Mindlin")
+    ax.plot(s / a, mu * p, "c.", ms=4, label="μ p, FE")
+    for st, m, col in (("stick", "o", "tab:blue"), ("slip", "s", "tab:red")):
+        k = state == st
+        ax.plot(s[k] / a, q[k], m, mfc="none", color=col, ms=4, label=f"q, FE ({st})")
+    ax.set_xlim(-1.2, 1.2)
+    ax.set_xlabel("x / a")
+    ax.set_ylabel("traction per unit length")
+    ax.set_title(title)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("folder", help="the run's output folder (summary.json, contact.csv, input.yaml)")
+    ap.add_argument("--plot", help="PNG of the shear and mu p, FE and closed form")
+    args = ap.parse_args()
+    out, data = measure(args.folder)
+    json.dump(out, sys.stdout, indent=1)
+    sys.stdout.write("\n")
+    if args.plot:
+        plot(data, args.plot, f"P = {out['P']:.5g}, Q = {out['Q']:.4g}, c/a = {out['c_over_a']:.3f}, "
+                              f"{out['dofs']} DOF")
+
+
+if __name__ == "__main__":
+    main()
