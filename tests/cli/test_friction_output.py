@@ -201,3 +201,30 @@ def test_transitions_where_the_state_changes_along_the_interface(hpcontact, root
     friction = json.load(open(out / "summary.json"))["contact_pairs"][0]["friction"]
     got = [p[0] for p in friction["stick_slip_transitions"]]
     assert got == pytest.approx(expected, abs=1e-9)  # contact.csv has 12 digits
+
+
+@pytest.mark.parametrize("mu", [0.5, 0.1])
+def test_friction_capacity_of_a_uniform_block(hpcontact, tmp_path, mu):
+    """The block on the plane under Coulomb friction, p = 10 on a length of 2: capacity mu p L
+    exactly. mu = 0.5: the uniform stick state (t_T = 2), ratio t_T / (mu p) = 0.4. mu = 0.1: the
+    block slides; with the sides loaded by mu p = 1 the state is uniform again (t_T = mu p, every
+    node slipping), ratio 1, no stick-slip transition. Catches: a capacity or ratio from another
+    force (the resultant's norm, the applied one). (Exact pairs leave contact.csv's slip at 0:
+    the accumulated slip a - H t_T / G = 0.002 is not reported yet.)"""
+    text, exact = block_on_plane(0.0)
+    shear = exact["shear"] if mu == 0.5 else mu * exact["pressure"]
+    text = text.replace("{law: stick, penalty: 1.0e5}", f"{{law: coulomb, mu: {mu}}}")
+    text = text.replace("[0.0, -2.0]", f"[0.0, {-shear}]").replace("[0.0, 2.0]", f"[0.0, {shear}]")
+    rows, pair = run_case(hpcontact, tmp_path, text)
+    rows = in_contact(rows)
+    friction = pair["friction"]
+    L = exact["length"]
+    assert friction["tangential_force_capacity"] == pytest.approx(mu * exact["pressure"] * L, rel=1e-9)
+    assert friction["tangential_traction_integral"] == pytest.approx(shear * L, rel=1e-9)
+    assert friction["tangential_force_ratio"] == pytest.approx(shear / (mu * exact["pressure"]), rel=1e-9)
+    assert pair["tangential_force"] == pytest.approx(-shear * L, rel=1e-9)
+    np.testing.assert_allclose(column(rows, "tangential_traction"), shear, rtol=1e-8)
+    np.testing.assert_allclose(column(rows, "shear_from_stress"), shear, rtol=1e-8)
+    assert {r["state"] for r in rows} == ({"stick"} if mu == 0.5 else {"slip"})
+    if mu == 0.1:
+        assert friction["stick_slip_transitions"] == []

@@ -192,6 +192,7 @@ nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureCompa
   cj["resultant"] = {c.resultant.x(), c.resultant.y()};
   cj["normal_force"] = c.resultant.dot(pair.normal());
   cj["tangential_force"] = c.resultant.dot(pair.tangent);
+  cj["tangent"] = {pair.tangent.x(), pair.tangent.y()};  // what tangential_force is along
   cj["max_penetration"] = c.max_penetration;
   if (pair.friction.active()) {
     // Stick and slip along the interface: counts, the largest |t_T| / (mu p_N) of each state,
@@ -214,6 +215,13 @@ nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureCompa
         ++n_slip;
         slip_ratio = std::max(slip_ratio, ratio);
       }
+    }
+    // What the friction carries, ∫ t_T dS, against what it could carry, mu ∫ p_N dS.
+    fj["tangential_traction_integral"] = c.tangential_traction_total;
+    if (coulomb) {
+      const double capacity = pair.friction.mu * c.normal_traction_total;
+      fj["tangential_force_capacity"] = capacity;
+      if (capacity > 0) fj["tangential_force_ratio"] = std::abs(c.tangential_traction_total) / capacity;
     }
     fj["stick_points"] = n_stick;
     fj["slip_points"] = n_slip;

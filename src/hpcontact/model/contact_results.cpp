@@ -342,6 +342,8 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       n.active = passive ? n.pressure > 0
                          : node_active(c, s, multipliers->head(c.size()), j) && n.pressure >= 0;
       res.p_max = std::max(res.p_max, n.pressure);
+      res.normal_traction_total += c.weight(j) * n.pressure;
+      res.tangential_traction_total += c.weight(j) * n.tangential;
       res.nodes.push_back(n);
       contact::PointState ps;
       ps.x = n.x;
@@ -415,6 +417,8 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       const auto& cp = pair.points[i];
       const SideValues sv = side_values(body, pair, *pair.obstacle, cp.element, cp.local_edge, cp.t, u);
       own_side.add(cp.X, sv.s, res.states[i].pressure * sv.length_ratio, sv);
+      res.normal_traction_total += cp.weight * res.states[i].pressure;
+      res.tangential_traction_total += cp.weight * res.states[i].t_t;
     }
     if (pair.other >= 0) {
       const Body& other = d.bodies[pair.other];

@@ -72,6 +72,10 @@ struct ContactResult {
   std::vector<Vec2> other_X;
   std::vector<double> other_s, other_pressure, other_pressure_from_stress, other_minus_sigma_nn,
       other_shear_from_stress;
+  /// ∫ p_N dS and ∫ t_T dS over the pair's body's contact boundary (undeformed length, per unit
+  /// thickness; axisymmetric: over the whole circle): the normal traction's total, which bounds
+  /// the friction's (times mu), and the friction's total along the states' tangents.
+  double normal_traction_total = 0, tangential_traction_total = 0;
   /// The states' neighbours along the pair's contact boundary, and the other body's points'
   /// along its boundary (contact::boundary_order): for walking each side in order.
   contact::BoundaryOrder order, other_order;
