@@ -10,6 +10,7 @@
 #include <limits>
 #include <vector>
 
+#include "hpcontact/fem/finite_strain.hpp"
 #include "hpcontact/fem/out_of_plane.hpp"
 #include "hpcontact/material/hyperelastic_hoop.hpp"
 
@@ -71,14 +72,7 @@ FiniteStrainElement axisymmetric_finite_strain_element(const ElementValues& ev,
   }
   if (!tangent) return el;
   el.K.noalias() = B.transpose() * CB;
-  Eigen::MatrixXd G(n, n);
-  G.noalias() = ev.dN_dx * wS11.asDiagonal() * ev.dN_dx.transpose();
-  G.noalias() += ev.dN_dy * wS22.asDiagonal() * ev.dN_dy.transpose();
-  Eigen::MatrixXd XY(n, n);
-  XY.noalias() = ev.dN_dx * wS12.asDiagonal() * ev.dN_dy.transpose();
-  G += XY + XY.transpose();
-  el.K.topLeftCorner(n, n) += G;
-  el.K.bottomRightCorner(n, n) += G;
+  add_geometric_stiffness(ev, wS11, wS22, wS12, el.K);
   el.K.topLeftCorner(n, n).noalias() += ev.N * wShoop.asDiagonal() * ev.N.transpose();
   return el;
 }

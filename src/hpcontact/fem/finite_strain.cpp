@@ -25,6 +25,20 @@ Eigen::Matrix2d deformation_gradient(const PointValues& pv, const Eigen::VectorX
   return F;
 }
 
+void add_geometric_stiffness(const ElementValues& ev, const Eigen::VectorXd& wS11,
+                             const Eigen::VectorXd& wS22, const Eigen::VectorXd& wS12,
+                             Eigen::MatrixXd& K) {
+  const int n = ev.n_modes();
+  Eigen::MatrixXd G(n, n);
+  G.noalias() = ev.dN_dx * wS11.asDiagonal() * ev.dN_dx.transpose();
+  G.noalias() += ev.dN_dy * wS22.asDiagonal() * ev.dN_dy.transpose();
+  Eigen::MatrixXd XY(n, n);
+  XY.noalias() = ev.dN_dx * wS12.asDiagonal() * ev.dN_dy.transpose();
+  G += XY + XY.transpose();
+  K.topLeftCorner(n, n) += G;
+  K.bottomRightCorner(n, n) += G;
+}
+
 FiniteStrainElement finite_strain_element(const ElementValues& ev, const material::LinearElastic& elastic,
                                           material::Law law, double thickness,
                                           const Eigen::VectorXd& u_e, bool tangent) {
@@ -64,14 +78,7 @@ FiniteStrainElement finite_strain_element(const ElementValues& ev, const materia
   }
   if (!tangent) return el;
   el.K.noalias() = B.transpose() * CB;
-  Eigen::MatrixXd G(n, n);
-  G.noalias() = ev.dN_dx * wS11.asDiagonal() * ev.dN_dx.transpose();
-  G.noalias() += ev.dN_dy * wS22.asDiagonal() * ev.dN_dy.transpose();
-  Eigen::MatrixXd XY(n, n);
-  XY.noalias() = ev.dN_dx * wS12.asDiagonal() * ev.dN_dy.transpose();
-  G += XY + XY.transpose();
-  el.K.topLeftCorner(n, n) += G;
-  el.K.bottomRightCorner(n, n) += G;
+  add_geometric_stiffness(ev, wS11, wS22, wS12, el.K);
   return el;
 }
 

@@ -26,6 +26,12 @@ struct FiniteStrainElement {
 
 /// The element at local coefficients u_e. Where det F ≤ 0 at a quadrature point the element is
 /// inverted: f_int, K and energy are left empty and zero, min_J says by how much.
+/// K += the in-plane geometric stiffness δ_ik ∇N_a · S ∇N_b, the point weights times S's
+/// components (11, 22, 12) given per quadrature point, on both displacement blocks.
+void add_geometric_stiffness(const ElementValues& ev, const Eigen::VectorXd& wS11,
+                             const Eigen::VectorXd& wS22, const Eigen::VectorXd& wS12,
+                             Eigen::MatrixXd& K);
+
 FiniteStrainElement finite_strain_element(const ElementValues& ev, const material::LinearElastic& elastic,
                                           material::Law law, double thickness,
                                           const Eigen::VectorXd& u_e, bool tangent);
