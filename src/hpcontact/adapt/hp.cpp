@@ -17,6 +17,7 @@ namespace {
 struct Centre {
   int body = 0, node = 0;
   Vec2 at = Vec2::Zero();  ///< where the node is put on the input mesh
+  ZoneEnd::Kind kind = ZoneEnd::Kind::contact;  ///< what it follows
 };
 
 /// The input mesh with the centres moved to their points and refined `steps` times around them,
@@ -77,6 +78,7 @@ HpOptions hp_options(const model::AdaptSpec& adapt) {
   o.min_degree = adapt.min_degree;
   o.tolerance = adapt.method == model::AdaptMethod::hp && adapt.tolerance_given ? adapt.tolerance : 0;
   o.max_dofs = adapt.max_dofs;
+  o.stick_slip = adapt.stick_slip;
   return o;
 }
 
@@ -122,10 +124,10 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
             s = r.solved;
             base = s->spec;
           }
-          ends = outer_zone_ends(*s);
+          ends = adapt_targets(*s, options.stick_slip);
           if (step == 0)
             for (const auto& n : nearest_movable_nodes(*s, ends))
-              centres.push_back({n.track.body(), n.track.node_id(), n.end.X});
+              centres.push_back({n.track.body(), n.track.node_id(), n.end.X, n.end.kind});
         } catch (const AdaptError& e) {
           // The solve itself succeeded: it is the last good result, recorded without centres.
           HpOutcome stopped = stopped_after_solve(
@@ -142,7 +144,8 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         std::vector<Centre> recentred = centres;
         for (Centre& c : recentred) {
           const BoundaryTrack track(s->spec, c.body, c.node);
-          const ZoneEnd* nearest = nearest_end(ends, c.body, c.at);
+          const ZoneEnd* nearest = nearest_end(ends, c.body, c.kind, c.at);
+          if (!nearest) continue;  // a stick–slip point gone: the centre stays
           const double t = track.parameter(nearest->X);
           if (t <= track.lower() || t >= track.upper()) {
             rec.inside = false;
@@ -200,9 +203,9 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         return out;
       }
       // The next mesh is centred on the zone ends of the better solve.
-      const auto ends_plus = outer_zone_ends(*enriched);
+      const auto ends_plus = adapt_targets(*enriched, options.stick_slip);
       for (Centre& c : centres)
-        if (const ZoneEnd* nearest = nearest_end(ends_plus, c.body, c.at)) c.at = nearest->X;
+        if (const ZoneEnd* nearest = nearest_end(ends_plus, c.body, c.kind, c.at)) c.at = nearest->X;
     }
     if (options.tolerance > 0) {
       out.stopped = "step limit";

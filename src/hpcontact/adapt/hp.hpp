@@ -23,6 +23,8 @@ struct HpOptions {
   /// the loop stops at the first below it; `steps` is then the most it may take. 0: `steps`.
   double tolerance = 0;
   int max_dofs = 0;  ///< > 0 (with a tolerance): a mesh of more free dofs ends the loop
+  /// Centres on the stick–slip points of exact Coulomb pairs too (adapt_targets()).
+  bool stick_slip = true;
 };
 
 /// The options an input's `adapt` section asks for.

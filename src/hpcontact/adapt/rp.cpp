@@ -16,6 +16,7 @@ RpOptions rp_options(const model::AdaptSpec& adapt) {
   o.tolerance = adapt.tolerance;
   o.max_iterations = adapt.max_iterations;
   o.secant = adapt.secant;
+  o.stick_slip = adapt.stick_slip;
   return o;
 }
 
@@ -27,7 +28,11 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
   };
   RpOutcome out;
   model::ProblemSpec current = spec;
-  std::vector<std::pair<int, int>> moved;  // (body, node id) per zone end, fixed after the first solve
+  struct Moved {
+    int body, id;
+    ZoneEnd::Kind kind;
+  };
+  std::vector<Moved> moved;  // per zone end (stick–slip point), fixed after the first solve
   try {
     for (int it = 0;; ++it) {
       const auto t0 = Clock::now();
@@ -36,10 +41,10 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
       rec.iteration = it;
       std::vector<ZoneEnd> ends;
       try {
-        ends = outer_zone_ends(*s);
+        ends = adapt_targets(*s, options.stick_slip);
         if (moved.empty())
           for (const auto& n : nearest_movable_nodes(*s, ends))
-            moved.emplace_back(n.track.body(), n.track.node_id());
+            moved.push_back({n.track.body(), n.track.node_id(), n.end.kind});
       } catch (const AdaptError& e) {
         // The solve itself succeeded: it is the last good result, recorded without nodes.
         return stopped_after_solve(std::move(out), rec, s, ends,
@@ -48,16 +53,18 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
       }
       rec.solve = figures_of(*s, ends, std::chrono::duration<double>(Clock::now() - t0).count());
       for (const auto& c : s->solution.contact) rec.zone_ends_found += static_cast<int>(c.gamma_star.size());
-      // Each node follows the zone end of its body nearest to it (ends a coarse solve adds
-      // elsewhere, e.g. an opening at a symmetry line, are left alone).
+      // Each node follows the zone end (stick–slip point) of its body nearest to it (ends a
+      // coarse solve adds elsewhere, e.g. an opening at a symmetry line, are left alone); a
+      // node whose stick–slip point is gone stays where it is.
       std::vector<Vec2> target;
-      for (const auto& [body, id] : moved) {
+      for (const auto& [body, id, kind] : moved) {
         const Vec2 X = node_position(current.bodies[body], id);
-        const ZoneEnd* nearest = nearest_end(ends, body, X);
-        target.push_back(nearest->X);
+        const ZoneEnd* nearest = nearest_end(ends, body, kind, X);
+        const Vec2 to = nearest ? nearest->X : X;
+        target.push_back(to);
         const double size = s->discretization.bodies[body].mesh.size();
-        rec.distance = std::max(rec.distance, (nearest->X - X).norm() / size);
-        rec.nodes.push_back({body, id, X, nearest->X});
+        rec.distance = std::max(rec.distance, (to - X).norm() / size);
+        rec.nodes.push_back({body, id, X, to, kind});
       }
       {
         std::ostringstream os;
@@ -65,7 +72,8 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
         os << "rp iteration " << it << ":";
         for (const auto& n : rec.nodes)
           os << " node " << n.node_id << " at (" << n.position.x() << ", " << n.position.y()
-             << "), zone end at (" << n.gamma_star.x() << ", " << n.gamma_star.y() << ");";
+             << "), " << (n.kind == ZoneEnd::Kind::contact ? "zone end" : "stick-slip point")
+             << " at (" << n.gamma_star.x() << ", " << n.gamma_star.y() << ");";
         os.precision(3);
         os << " distance " << rec.distance << " of the body size";
         say(os.str());
@@ -89,7 +97,7 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
       // Move each node: secant step on r(s) = Γ*(s) − s along its track, or onto Γ*.
       model::ProblemSpec next = current;
       for (size_t k = 0; k < moved.size(); ++k) {
-        const BoundaryTrack track(next, moved[k].first, moved[k].second);
+        const BoundaryTrack track(next, moved[k].body, moved[k].id);
         const double phi = track.node(), psi = track.parameter(target[k]);
         double s_new = psi;
         if (options.secant && out.history.size() >= 2) {

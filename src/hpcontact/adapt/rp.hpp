@@ -20,7 +20,8 @@ struct RelocatedNode {
   int body = 0;
   int node_id = 0;
   Vec2 position = Vec2::Zero();    ///< where the node was in this iteration's solve
-  Vec2 gamma_star = Vec2::Zero();  ///< the zone end that solve found
+  Vec2 gamma_star = Vec2::Zero();  ///< the zone end (or stick–slip point) that solve found
+  ZoneEnd::Kind kind = ZoneEnd::Kind::contact;
 };
 
 struct RpIteration {
@@ -35,6 +36,8 @@ struct RpOptions {
   double tolerance = 1e-10;  ///< stop when distance <= tolerance
   int max_iterations = 20;   ///< relocations after the first solve
   bool secant = true;        ///< secant steps on Γ*(node) − node; false: move onto the last Γ*
+  /// Nodes onto the stick–slip points of exact Coulomb pairs too (adapt_targets()).
+  bool stick_slip = true;
 };
 
 /// The options an input's `adapt` section asks for.

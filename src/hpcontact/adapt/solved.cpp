@@ -31,7 +31,9 @@ SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progres
   return s;
 }
 
-std::vector<ZoneEnd> outer_zone_ends(const Solved& s) {
+namespace {
+
+std::vector<ZoneEnd> contact_ends(const Solved& s) {
   std::vector<ZoneEnd> ends;
   for (size_t k = 0; k < s.solution.contact.size(); ++k) {
     const auto& c = s.solution.contact[k];
@@ -40,15 +42,40 @@ std::vector<ZoneEnd> outer_zone_ends(const Solved& s) {
     for (int i : c.other_zone_ends.outer)
       ends.push_back({s.solution.pairs[k].other, c.other_zone_ends.X[i]});
   }
+  return ends;
+}
+
+}  // namespace
+
+std::vector<ZoneEnd> outer_zone_ends(const Solved& s) {
+  std::vector<ZoneEnd> ends = contact_ends(s);
   HPC_REQUIRE(!ends.empty(), AdaptError, s.spec.file, ": no end of a contact zone found (no "
               "contact, or every contact point is closed); there is no Γ* to adapt the mesh to");
   return ends;
 }
 
-const ZoneEnd* nearest_end(const std::vector<ZoneEnd>& ends, int body, const Vec2& X) {
+std::vector<ZoneEnd> adapt_targets(const Solved& s, bool stick_slip) {
+  if (!stick_slip) return outer_zone_ends(s);
+  std::vector<ZoneEnd> ends = contact_ends(s);
+  for (size_t k = 0; k < s.solution.contact.size(); ++k) {
+    const auto& c = s.solution.contact[k];
+    for (const Vec2& X : c.stick_slip.X)
+      ends.push_back({s.solution.pairs[k].body, X, ZoneEnd::Kind::stick_slip});
+    for (const Vec2& X : c.other_stick_slip.X)
+      ends.push_back({s.solution.pairs[k].other, X, ZoneEnd::Kind::stick_slip});
+  }
+  HPC_REQUIRE(!ends.empty(), AdaptError, s.spec.file, ": no end of a contact zone found (no "
+              "contact, or every contact point is closed) and no stick–slip point (no friction, "
+              "or all points stick or all slip); there is no Γ* to adapt the mesh to");
+  return ends;
+}
+
+const ZoneEnd* nearest_end(const std::vector<ZoneEnd>& ends, int body, ZoneEnd::Kind kind,
+                           const Vec2& X) {
   const ZoneEnd* nearest = nullptr;
   for (const auto& e : ends)
-    if (e.body == body && (!nearest || (e.X - X).norm() < (nearest->X - X).norm())) nearest = &e;
+    if (e.body == body && e.kind == kind && (!nearest || (e.X - X).norm() < (nearest->X - X).norm()))
+      nearest = &e;
   return nearest;
 }
 
@@ -83,7 +110,9 @@ std::vector<NodeForEnd> nearest_movable_nodes(const Solved& s, const std::vector
           const double dist = (body->mesh.node(v) - end.X).norm();
           if (dist >= best) continue;
           try {
-            choice.emplace(s.spec, end.body, body->mesh.node_id(v));
+            // built first: a node that refuses must not empty the choice made so far
+            BoundaryTrack track(s.spec, end.body, body->mesh.node_id(v));
+            choice.emplace(std::move(track));
             best = dist;
           } catch (const AdaptError& err) {
             if (refused.insert(v).second) reasons += std::string("\n  ") + err.what();

@@ -27,17 +27,27 @@ using SolvedPtr = std::shared_ptr<const Solved>;
 SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progress = {},
                 const Solved* previous = nullptr);
 
-/// An end of a contact zone (Γ*) on the undeformed boundary of a body.
+/// A point of the undeformed boundary of a body that rp and hp adapt the mesh to: an end of a
+/// contact zone (Γ*), or a stick–slip point of a frictional zone, where the tangential traction
+/// has the same square-root end the pressure has at Γ*.
 struct ZoneEnd {
+  enum class Kind { contact, stick_slip };
   int body = 0;
   Vec2 X = Vec2::Zero();
+  Kind kind = Kind::contact;
 };
 
 /// The outer ends of every pair's active region (ContactResult::outer_ends), pair by pair.
 std::vector<ZoneEnd> outer_zone_ends(const Solved& s);
 
-/// The zone end of `body` nearest to X, or null if that body has none.
-const ZoneEnd* nearest_end(const std::vector<ZoneEnd>& ends, int body, const Vec2& X);
+/// What rp and hp adapt to: outer_zone_ends(), and with `stick_slip` every exact Coulomb pair's
+/// stick–slip points (ContactResult::stick_slip) on both bodies; AdaptError when there is none of
+/// either.
+std::vector<ZoneEnd> adapt_targets(const Solved& s, bool stick_slip);
+
+/// The point of `body` and `kind` nearest to X, or null if that body has none.
+const ZoneEnd* nearest_end(const std::vector<ZoneEnd>& ends, int body, ZoneEnd::Kind kind,
+                           const Vec2& X);
 
 /// A boundary node that can move onto a zone end, and that end.
 struct NodeForEnd {

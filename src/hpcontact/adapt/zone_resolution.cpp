@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "hpcontact/adapt/geometric_refinement.hpp"
+#include "hpcontact/core/error.hpp"
 
 namespace hpcontact::adapt {
 
@@ -59,7 +60,13 @@ Resolution resolve_zones(const SolvedPtr& s0, int max_rounds, const model::Progr
   r.solved = s0;
   for (int round = 1; round <= max_rounds; ++round) {
     const SolvedPtr s = r.solved;
-    const auto nodes = nearest_movable_nodes(*s, outer_zone_ends(*s));
+    std::vector<ZoneEnd> ends;
+    try {
+      ends = outer_zone_ends(*s);
+    } catch (const AdaptError&) {
+      break;  // no zone end (e.g. in contact to the boundary's ends): no zone to resolve
+    }
+    const auto nodes = nearest_movable_nodes(*s, ends);
     model::ProblemSpec spec = s->spec;
     const size_t before = r.towards.size();
     std::set<std::pair<int, int>> refined;  // (body, node): once per round

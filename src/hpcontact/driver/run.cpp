@@ -233,6 +233,10 @@ nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureCompa
     if (pair.other >= 0 && !pair.constraints)  // the other body's points carry their own states
       fj["stick_slip_transitions_other"] =
           points_json(contact::stick_slip_transitions(c.other_states, c.other_X, c.other_order));
+    if (pair.constraints && coulomb) {
+      fj["stick_slip_points"] = points_json(c.stick_slip.X);
+      if (pair.other >= 0) fj["stick_slip_points_other"] = points_json(c.other_stick_slip.X);
+    }
     cj["friction"] = fj;
   }
   if (comparison)
@@ -391,7 +395,8 @@ nlohmann::json rp_iteration_json(const adapt::RpIteration& it) {
   for (const auto& n : it.nodes)
     j["nodes"].push_back({{"body", n.body}, {"node", n.node_id},
                           {"position", {n.position.x(), n.position.y()}},
-                          {"gamma_star", {n.gamma_star.x(), n.gamma_star.y()}}});
+                          {"gamma_star", {n.gamma_star.x(), n.gamma_star.y()}},
+                          {"follows", n.kind == adapt::ZoneEnd::Kind::contact ? "zone end" : "stick-slip point"}});
   j["zone_ends_found"] = it.zone_ends_found;
   j["distance"] = it.distance;
   return j;

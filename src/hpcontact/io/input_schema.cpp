@@ -522,6 +522,12 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "rp: secant: secant steps on Γ*(node) - node along the boundary (fewer solves); "
               "relocate: put the node onto the last Γ* (the seed's iteration).",
        .choices = {"secant", "relocate"}},
+      {.path = "adapt.stick_slip", .type = T::boolean, .default_yaml = "true",
+       .doc = "rp and hp: adapt to the stick–slip points of exactly enforced Coulomb pairs as to "
+              "the zone ends (a node moved onto each, or a refinement centre at each, on both "
+              "bodies): the tangential traction ends there with the square root the pressure "
+              "has at Γ*. The points are summary.json's `friction.stick_slip_points`; a node "
+              "whose point is gone in a later solve stays where it is."},
 
       {.path = "output", .type = T::section, .default_yaml = "{}",
        .doc = "What is written next to the results."},
@@ -710,7 +716,11 @@ std::string input_schema_markdown() {
         "`stick_slip_transitions` midway between neighbouring points along the boundary of "
         "which one sticks and one slips, never across an open or not yet anchored point; a "
         "penalty pair between two bodies also `stick_slip_transitions_other` on the other "
-        "body; `tangential_traction_integral` ∫ t_T dS, the force the friction carries along "
+        "body; exact Coulomb pairs also `stick_slip_points`, the stick–slip points located "
+        "between a sticking and a slipping node as the root of |λ_T + κ ĝ_T| − μ λ_N along the "
+        "edge (ĝ_T the last step's slip, κ = E' p / h; what rp and hp adapt to, `adapt.stick_slip`) "
+        "undeformed, and against another body `stick_slip_points_other` their feet on it; "
+        "`tangential_traction_integral` ∫ t_T dS, the force the friction carries along "
         "the contact.csv tangent; Coulomb: `tangential_force_capacity` mu ∫ p_N dS, the most it "
         "could carry, and `tangential_force_ratio` |∫ t_T dS| / capacity, 1 in gross sliding), "
         "`tangent` the direction `tangential_force` (resultant · tangent) is along, "

@@ -523,6 +523,7 @@ class SpecBuilder {
     a.max_dofs = integer(node["max_dofs"]);
     a.max_iterations = integer(node["max_iterations"]);
     a.secant = node["update"].Scalar() == "secant";
+    a.stick_slip = boolean(node["stick_slip"]);
     if (a.method != AdaptMethod::none && spec.contact.empty())
       source_.fail(node["method"], "adapt.method",
                    method + " adapts the mesh to the ends of contact zones, but the problem has no contact");

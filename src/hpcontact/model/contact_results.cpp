@@ -218,6 +218,16 @@ std::pair<Vec2, Vec2> boundary_position(const Body& body, int q, int le, double 
   return {X, x};
 }
 
+/// E' p / h of a contact edge of degree p: the stiffness of the boundary over a node spacing,
+/// the scale that makes a gap and a pressure (or a slip and a traction) comparable.
+double edge_stiffness(const Body& body, const mesh::Edge& edge, int p) {
+  const auto& m = body.material_of(edge.quads[0]);
+  const double E = m.plane != material::Plane::stress
+                       ? m.youngs_modulus / (1 - m.poisson_ratio * m.poisson_ratio)
+                       : m.youngs_modulus;
+  return E * p / (body.mesh.node(edge.v1) - body.mesh.node(edge.v0)).norm();
+}
+
 /// The zone ends of an exactly enforced pair: between neighbouring multiplier nodes of one edge
 /// of which one carries pressure and the other not. The exact pressure λ and gap g both vanish at
 /// the end b (λ > 0, g = 0 before it; λ = 0, g > 0 beyond), so for any stiffness κ > 0
@@ -235,12 +245,7 @@ ZoneEnds node_zone_ends(const Body& body, const ContactPair& pair,
     const auto& en = c.nodes.edge_nodes[k];
     const auto& edge = body.mesh.edge(pair.edges[k]);
     const int q = edge.quads[0], le = edge.local_edge[0];
-    const auto& m = body.material_of(q);
-    const double E = m.plane != material::Plane::stress
-                         ? m.youngs_modulus / (1 - m.poisson_ratio * m.poisson_ratio)
-                         : m.youngs_modulus;
-    const int p = static_cast<int>(en.size()) - 1;
-    const double kappa = E * p / (body.mesh.node(edge.v1) - body.mesh.node(edge.v0)).norm();
+    const double kappa = edge_stiffness(body, edge, static_cast<int>(en.size()) - 1);
     auto phi = [&](double t) {
       return gap_at(body, *pair.obstacle, q, le, t, u, nullptr) -
              c.nodes.interpolate(static_cast<int>(k), t, lambda) / kappa;
@@ -265,6 +270,62 @@ ZoneEnds node_zone_ends(const Body& body, const ContactPair& pair,
       hi = std::max(hi, pair.coordinate(n.X));
     }
   mark_outer_ends(z, pair, lo, hi);
+  return z;
+}
+
+/// The stick–slip points of an exactly enforced pair with Coulomb friction. The exact tangential
+/// traction t and slip ġ of the step satisfy |t| ≤ μ p, ġ = 0 where the point sticks and
+/// |t| = μ p, ġ t ≥ 0 where it slips, so that for any stiffness κ > 0
+///   ψ = |λ_T + κ ĝ_T| − μ λ
+/// is negative in the stick zone, positive in the slip zone and zero at the point between them
+/// (the complementarity function of friction; κ = E' p / h as for the zone ends). Between
+/// neighbouring active nodes of one edge where ψ changes sign the root of ψ along the
+/// interpolated multiplier and slip fields (Pegasus) is the estimate. A node within round-off of
+/// the cone (|ψ| ≤ 1e-8 μ λ_max: a node rp has put on the point) counts as slipping and is itself
+/// the point when its neighbour sticks: its state is then a matter of round-off, and the point
+/// must not jump to the next interval with it.
+ZoneEnds stick_slip_points(const Body& body, const ContactPair& pair,
+                           const std::vector<ContactResult::Node>& nodes, const Eigen::VectorXd& u,
+                           const Eigen::VectorXd& lambda, const Eigen::VectorXd& lambda_t,
+                           const Eigen::VectorXd& slips) {
+  const PairConstraints& c = *pair.constraints;
+  const double zero = 1e-8 * c.friction.mu * std::max(lambda.maxCoeff(), 0.0);
+  ZoneEnds z;
+  for (size_t k = 0; k < c.nodes.edge_nodes.size(); ++k) {
+    const auto& en = c.nodes.edge_nodes[k];
+    const auto& edge = body.mesh.edge(pair.edges[k]);
+    const double kappa = edge_stiffness(body, edge, static_cast<int>(en.size()) - 1);
+    const int e = static_cast<int>(k);
+    auto psi = [&](double t) {
+      return std::abs(c.nodes.interpolate(e, t, lambda_t) + kappa * c.nodes.interpolate(e, t, slips)) -
+             c.friction.mu * c.nodes.interpolate(e, t, lambda);
+    };
+    for (size_t i = 0; i + 1 < en.size(); ++i) {
+      if (!nodes[en[i]].active || !nodes[en[i + 1]].active) continue;
+      const double ta = c.nodes.edge_points[k][i], tb = c.nodes.edge_points[k][i + 1];
+      const double fa = psi(ta), fb = psi(tb);
+      if ((fa < -zero) == (fb < -zero)) continue;
+      const double t_point = std::abs(fa) <= zero   ? ta
+                             : std::abs(fb) <= zero ? tb
+                                                    : pegasus_root(psi, ta, tb, fa, fb, 1e-14);
+      const auto [X, x] = boundary_position(body, edge.quads[0], edge.local_edge[0], t_point, u);
+      z.X.push_back(X);
+      z.x.push_back(x);
+    }
+  }
+  return z;
+}
+
+/// Points of this body's boundary carried to their feet on the other body's (one-sided exact
+/// pairs: the other side's zone ends and stick–slip points).
+ZoneEnds feet_on_other(const ContactPair& pair, const std::vector<Vec2>& deformed) {
+  ZoneEnds z;
+  for (const Vec2& x : deformed) {
+    contact::BoundaryPoint foot;
+    if (!pair.other_boundary->project(x, foot)) continue;
+    z.x.push_back(foot.x);
+    z.X.push_back(pair.other_boundary->undeformed(foot.edge, foot.t));
+  }
   return z;
 }
 
@@ -306,7 +367,8 @@ std::vector<int> other_point_edges(const ContactPair& pair) {
 }
 
 ContactResult contact_result(const Discretization& d, const ContactPair& pair,
-                             const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers) {
+                             const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers,
+                             const Eigen::VectorXd* step_slips) {
   const Body& body = d.bodies[pair.body];
   ContactResult res;
   const SideColumns own_side{res.X, res.s, res.pressure, res.pressure_from_stress, res.minus_sigma_nn,
@@ -332,6 +394,7 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       std::tie(n.X, n.x) = boundary_position(body, cp.element, cp.local_edge, cp.t, u);
       n.pressure = (*multipliers)(j);
       if (friction) n.tangential = (*multipliers)(c.size() + j);
+      if (friction && step_slips && step_slips->size() == c.size()) n.step_slip = (*step_slips)(j);
       n.gap = !s.found[j]           ? std::numeric_limits<double>::infinity()
               : c.weight(j) != 0.0 ? s.G(j) / c.weight(j)
               : c.rule == ConstraintRule::collocation ? s.points[j].gap  // the node's own point
@@ -434,6 +497,14 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
   for (const double p : res.pressure) res.pressure_max = std::max(res.pressure_max, p);
   ZoneEnds own = pair.constraints ? node_zone_ends(body, pair, res.nodes, u, multipliers->head(pair.constraints->size()))
                                   : zone_ends(body, pair.points, res.states, *pair.obstacle, pair, u);
+  if (pair.constraints && pair.constraints->has_friction() &&
+      pair.constraints->friction.kind == contact::FrictionLaw::Kind::coulomb && step_slips &&
+      step_slips->size() == pair.constraints->size() && multipliers->size() == 2 * pair.constraints->size()) {
+    const int n = pair.constraints->size();
+    res.stick_slip = stick_slip_points(body, pair, res.nodes, u, multipliers->head(n),
+                                       multipliers->tail(n), *step_slips);
+    if (pair.other >= 0) res.other_stick_slip = feet_on_other(pair, res.stick_slip.x);
+  }
   res.gamma_star = std::move(own.X);
   res.gamma_star_deformed = std::move(own.x);
   res.outer_ends = std::move(own.outer);
@@ -442,12 +513,7 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
                                     *pair.boundary, pair, u);
   } else if (pair.other >= 0) {
     // one-sided: the other body's zone ends are the feet of this body's, on its boundary
-    for (const Vec2& x : res.gamma_star_deformed) {
-      contact::BoundaryPoint foot;
-      if (!pair.other_boundary->project(x, foot)) continue;
-      res.other_zone_ends.x.push_back(foot.x);
-      res.other_zone_ends.X.push_back(pair.other_boundary->undeformed(foot.edge, foot.t));
-    }
+    res.other_zone_ends = feet_on_other(pair, res.gamma_star_deformed);
     res.other_zone_ends.outer = res.outer_ends;
   }
   for (const Vec2& g : res.gamma_star)
@@ -472,8 +538,9 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
 }  // namespace
 
 ContactResult evaluate_contact(const Discretization& d, const ContactPair& pair,
-                               const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers) {
-  return contact_result(d, pair, u, multipliers);
+                               const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers,
+                               const Eigen::VectorXd* step_slips) {
+  return contact_result(d, pair, u, multipliers, step_slips);
 }
 
 BoundaryPressureProbe::BoundaryPressureProbe(const Discretization& d, const ContactPair& pair,

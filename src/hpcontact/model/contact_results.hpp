@@ -85,9 +85,18 @@ struct ContactResult {
     double pressure = 0;  ///< λ_j
     double tangential = 0;  ///< λ_T,j with friction: the tangential traction (along τ on the other side)
     double gap = 0;       ///< the weighted gap G_j / W_j (collocation: g_N at the node)
+    /// With exact Coulomb friction and the step's slips given: the weighted slip of the last
+    /// load step Ĝ_T,j / W_j along the node's tangent (0 where it sticks).
+    double step_slip = 0;
     bool active = false;  ///< λ_j > 0
   };
   std::vector<Node> nodes;
+  /// Exact Coulomb friction (the step's slips given): the stick–slip points, where the friction
+  /// state changes between neighbouring active nodes of one contact edge, located as the root
+  /// of the edge's complementarity function of friction (stick_slip_points in
+  /// contact_results.cpp) — the points rp and hp adapt to as to Γ*. Against another body their
+  /// feet on its boundary are `other`.
+  ZoneEnds stick_slip, other_stick_slip;
 };
 
 /// Pressures at one point of a contact boundary.
@@ -132,8 +141,11 @@ private:
 
 /// The contact state of a pair at the dofs u (and its multipliers, when it is enforced exactly):
 /// its points' states, pressures from the stresses, resultant, Γ*, half width.
+/// `step_slips`: with exact Coulomb friction, the nodes' slips of the last step
+/// (ContactSystem::step_slips), which locate the stick–slip points; without them there are none.
 ContactResult evaluate_contact(const Discretization& d, const ContactPair& pair,
-                               const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers = nullptr);
+                               const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers = nullptr,
+                               const Eigen::VectorXd* step_slips = nullptr);
 
 /// The constraints of an exactly enforced pair at u with all its multipliers (normal, then
 /// tangential with friction), the tangential slips measured from the undeformed state.

@@ -139,8 +139,10 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   // The contact results at the end (converged or not).
   auto finish = [&]() {
     sol.multipliers = system.multipliers(x);
+    const std::vector<Eigen::VectorXd> slips = system.step_slips(x);
     for (size_t k = 0; k < pairs.size(); ++k)
-      sol.contact.push_back(evaluate_contact(d, pairs[k], sol.u, sol.multipliers_of(k)));
+      sol.contact.push_back(evaluate_contact(d, pairs[k], sol.u, sol.multipliers_of(k),
+                                             slips[k].size() ? &slips[k] : nullptr));
   };
   Factors converged;  // the factors of the last converged step
   auto say = [&](const std::string& s) {

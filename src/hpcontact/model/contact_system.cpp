@@ -36,6 +36,7 @@ ContactSystem::ContactSystem(const Discretization& d, const std::vector<ContactP
     }
   K_prescribed_ = op_.K * d_.prescribed;
   u_committed_ = Eigen::VectorXd::Zero(d_.n_dofs);
+  u_step_start_ = u_committed_;
 }
 
 void ContactSystem::set_factors(const Vec2& displacements, double loads) {
@@ -75,10 +76,36 @@ void ContactSystem::commit(const Eigen::VectorXd& x) {
   if (!has_friction()) return;
   const Eigen::VectorXd u = full(x);
   // exact friction measures slips from here
+  u_step_start_ = u_committed_;
+  factors_step_start_ = factors_committed_;
   u_committed_ = u;
   factors_committed_ = displacement_factors(x);
   for (const auto& pair : pairs_)
     if (pair.memory) commit_friction(pair, pair_forces(d_, pair, u, nullptr));
+}
+
+std::vector<Eigen::VectorXd> ContactSystem::step_slips(const Eigen::VectorXd& x) const {
+  std::vector<Eigen::VectorXd> slips(pairs_.size());
+  const Eigen::VectorXd u = full(x);
+  const Vec2 factors = displacement_factors(x);
+  for (size_t k = 0; k < pairs_.size(); ++k) {
+    const ContactPair& pair = pairs_[k];
+    if (!pair.constraints || !pair.constraints->has_friction()) continue;
+    const PairConstraints& c = *pair.constraints;
+    const int o = n_u_ + z_offset_[k];
+    const Eigen::VectorXd lambda = x.segment(o, c.size());
+    const Eigen::VectorXd lambda_t = x.segment(o + c.size(), c.size());
+    FrictionInputs fi;
+    fi.lambda_t = &lambda_t;
+    fi.u_committed = &u_step_start_;
+    if (pair.moving)
+      fi.obstacle_increment = (factors - factors_step_start_).cwiseProduct(pair.moving->direction());
+    const ConstraintState s = evaluate_constraints(d_, pair, u, lambda, nullptr, nullptr, false, fi);
+    slips[k] = Eigen::VectorXd::Zero(c.size());
+    for (int j = 0; j < c.size(); ++j)
+      if (c.weight(j) != 0.0 && s.GT.size() == c.size()) slips[k](j) = s.GT(j) / c.weight(j);
+  }
+  return slips;
 }
 
 Eigen::VectorXd ContactSystem::load_vector() const { return op_.restrict(d_, op_.load); }

@@ -64,6 +64,11 @@ public:
   /// After a converged load step at x: the friction histories take its anchors and slips (and
   /// exact friction measures its slips from x).
   void commit(const Eigen::VectorXd& x);
+  /// Per pair with exact Coulomb friction, per multiplier node, the weighted slip of the last
+  /// committed step at x: ĝ_T,j = G_T,j / W_j (zero at a passive node), measured from the step
+  /// before the last commit (x the state committed last: the slip its step made); empty for
+  /// the other pairs. What locates the stick–slip points (ContactResult::stick_slip).
+  std::vector<Eigen::VectorXd> step_slips(const Eigen::VectorXd& x) const;
   /// The load vector on the unknowns (what a unit load factor applies).
   Eigen::VectorXd load_vector() const;
   const Vec2& displacement_factors() const { return factors_; }
@@ -163,6 +168,9 @@ private:
   Eigen::VectorXd prescribed(const Vec2& factors) const;
   Eigen::VectorXd u_committed_;    ///< all dofs at the last converged step (exact friction)
   Vec2 factors_committed_ = Vec2::Zero();  ///< the displacement factors there
+  /// The same at the converged step before it: where the last step started (step_slips()).
+  Eigen::VectorXd u_step_start_;
+  Vec2 factors_step_start_ = Vec2::Zero();
 };
 
 /// The system on the path of the loads' factor (arc-length), the prescribed displacements held.

@@ -274,6 +274,8 @@ struct AdaptSpec {
   int steps = 8;             ///< hp: refinement steps
   bool rising_degree = true; ///< hp: degree min_degree + layer (false: discretization.degree)
   int min_degree = 1;        ///< hp: degree of the elements at Γ*
+  /// rp and hp: adapt to the stick–slip points of exact Coulomb pairs as to the zone ends.
+  bool stick_slip = true;
   SourceRef where;
 };
 
