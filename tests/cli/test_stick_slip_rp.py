@@ -84,3 +84,18 @@ def test_stick_slip_off_follows_zone_ends_only(hpcontact, root, tmp_path):
     history = summary(tmp_path / "last-good")["adapt"]["history"]
     assert history[0]["nodes"]
     assert all(n["follows"] == "zone end" for n in history[0]["nodes"])
+
+
+def test_nodes_slip_along_their_traction_and_stick_without_slip(located):
+    """contact.csv's tangential_gap of an exact node is its slip over the last load step:
+    zero where it sticks, and along its tangential traction where it slips (ġ_T t_T > 0: the
+    friction opposes the slip), as the Coulomb law requires."""
+    nodes = upper_nodes(located)
+    stick = [r for r in nodes if r["state"] == "stick"]
+    slip = [r for r in nodes if r["state"] == "slip"]
+    assert len(stick) >= 5 and len(slip) >= 3
+    largest = max(abs(float(r["tangential_gap"])) for r in slip)
+    assert largest > 1e-7
+    assert all(abs(float(r["tangential_gap"])) <= 1e-9 * largest for r in stick)
+    assert all(float(r["tangential_gap"]) * float(r["tangential_traction"]) > 0 for r in slip)
+    assert all(float(r["tangential_gap"]) == 0 for r in nodes if r["state"] == "open")

@@ -419,6 +419,7 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       if (friction) {
         if (s.d_resultant_t[j].norm() > 0) ps.tau = -s.d_resultant_t[j].normalized();
         ps.t_t = n.tangential;
+        if (n.active) ps.g_t = n.step_slip;  // an open node has no slip
         ps.traction -= n.tangential * ps.tau;
         if (n.active)
           ps.stick_slip = c.friction.kind == contact::FrictionLaw::Kind::coulomb &&
