@@ -75,6 +75,10 @@ def test_rp_moves_a_node_of_each_bar_onto_the_stick_slip_point(hpcontact, root, 
     d = stick_slip_distances(history)
     assert d[0] > 1e-3
     assert d[-1] < d[0] / 100
+    # the kept solve's load path: press, then four shear steps to the full load
+    path = list(csv.DictReader(open(tmp_path / "last-good" / "path.csv")))
+    assert len(path) == summary(tmp_path / "last-good")["load_steps"] == 5
+    assert [float(r["load_factor"]) for r in path] == [0, 0.25, 0.5, 0.75, 1]
 
 
 def test_stick_slip_off_follows_zone_ends_only(hpcontact, root, tmp_path):

@@ -562,6 +562,8 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     SolvedState st{&last->discretization, last->solution.u, last->solution.contact,
                    last->solution.pairs, last->solution.multipliers};
     post_process(last->spec, st, out_dir, options, comparisons, result);
+    // the load path of the final mesh's solve (its first pair's resultant: no contact history)
+    write_path(last->spec, last->solution, {}, out_dir);
     if (!out_dir.empty())
       post::write_text_file((fs::path(out_dir) / "mesh.yaml").string(), mesh_yaml(last->spec));
     s.converged = converged;
