@@ -305,7 +305,7 @@ MUTATIONS = [
              ["cli:tests/cli/test_partial_slip.py::test_stick_slip_points_located_between_their_nodes",
               "cli:tests/cli/test_stick_slip_rp.py::test_stick_slip_point_between_a_stick_and_a_slip_node"]),
     Mutation("stick-slip-one-body", "adapt", S + "adapt/solved.cpp",
-             "ends.push_back({s.solution.pairs[k].other, X, ZoneEnd::Kind::stick_slip});",
+             "ends.push_back({pair.other, X, ZoneEnd::Kind::stick_slip});",
              "(void)X;",
              "the other body's stick–slip points left out of what rp and hp adapt to",
              ["cli:tests/cli/test_stick_slip_rp.py::test_rp_moves_a_node_of_each_bar_onto_the_stick_slip_point"]),

@@ -72,7 +72,7 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
         os << "rp iteration " << it << ":";
         for (const auto& n : rec.nodes)
           os << " node " << n.node_id << " at (" << n.position.x() << ", " << n.position.y()
-             << "), " << (n.kind == ZoneEnd::Kind::contact ? "zone end" : "stick-slip point")
+             << "), " << kind_name(n.kind)
              << " at (" << n.gamma_star.x() << ", " << n.gamma_star.y() << ");";
         os.precision(3);
         os << " distance " << rec.distance << " of the body size";

@@ -31,43 +31,35 @@ SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progres
   return s;
 }
 
-namespace {
-
-std::vector<ZoneEnd> contact_ends(const Solved& s) {
+std::vector<ZoneEnd> zone_ends_of(const Solved& s, bool stick_slip) {
   std::vector<ZoneEnd> ends;
   for (size_t k = 0; k < s.solution.contact.size(); ++k) {
     const auto& c = s.solution.contact[k];
-    for (int i : c.outer_ends) ends.push_back({s.solution.pairs[k].body, c.gamma_star[i]});
+    const auto& pair = s.solution.pairs[k];
+    for (int i : c.outer_ends) ends.push_back({pair.body, c.gamma_star[i]});
     // Against another body, the zone ends on its boundary too (seed §5.2.3: both bodies).
-    for (int i : c.other_zone_ends.outer)
-      ends.push_back({s.solution.pairs[k].other, c.other_zone_ends.X[i]});
+    for (int i : c.other_zone_ends.outer) ends.push_back({pair.other, c.other_zone_ends.X[i]});
+    if (!stick_slip) continue;
+    for (const Vec2& X : c.stick_slip.X) ends.push_back({pair.body, X, ZoneEnd::Kind::stick_slip});
+    for (const Vec2& X : c.other_stick_slip.X)
+      ends.push_back({pair.other, X, ZoneEnd::Kind::stick_slip});
   }
-  return ends;
-}
-
-}  // namespace
-
-std::vector<ZoneEnd> outer_zone_ends(const Solved& s) {
-  std::vector<ZoneEnd> ends = contact_ends(s);
-  HPC_REQUIRE(!ends.empty(), AdaptError, s.spec.file, ": no end of a contact zone found (no "
-              "contact, or every contact point is closed); there is no Γ* to adapt the mesh to");
   return ends;
 }
 
 std::vector<ZoneEnd> adapt_targets(const Solved& s, bool stick_slip) {
-  if (!stick_slip) return outer_zone_ends(s);
-  std::vector<ZoneEnd> ends = contact_ends(s);
-  for (size_t k = 0; k < s.solution.contact.size(); ++k) {
-    const auto& c = s.solution.contact[k];
-    for (const Vec2& X : c.stick_slip.X)
-      ends.push_back({s.solution.pairs[k].body, X, ZoneEnd::Kind::stick_slip});
-    for (const Vec2& X : c.other_stick_slip.X)
-      ends.push_back({s.solution.pairs[k].other, X, ZoneEnd::Kind::stick_slip});
-  }
+  std::vector<ZoneEnd> ends = zone_ends_of(s, stick_slip);
   HPC_REQUIRE(!ends.empty(), AdaptError, s.spec.file, ": no end of a contact zone found (no "
-              "contact, or every contact point is closed) and no stick–slip point (no friction, "
-              "or all points stick or all slip); there is no Γ* to adapt the mesh to");
+              "contact, or every contact point is closed)",
+              stick_slip ? " and no stick–slip point (no friction, or all points stick or all slip)" : "",
+              "; there is no Γ* to adapt the mesh to");
   return ends;
+}
+
+std::vector<ZoneEnd> outer_zone_ends(const Solved& s) { return adapt_targets(s, false); }
+
+const char* kind_name(ZoneEnd::Kind kind) {
+  return kind == ZoneEnd::Kind::contact ? "zone end" : "stick-slip point";
 }
 
 const ZoneEnd* nearest_end(const std::vector<ZoneEnd>& ends, int body, ZoneEnd::Kind kind,

@@ -37,12 +37,18 @@ struct ZoneEnd {
   Kind kind = Kind::contact;
 };
 
-/// The outer ends of every pair's active region (ContactResult::outer_ends), pair by pair.
+/// "zone end", "stick-slip point" (progress lines, summary.json).
+const char* kind_name(ZoneEnd::Kind kind);
+
+/// The outer ends of every pair's active region (ContactResult::outer_ends), pair by pair, on
+/// both bodies, and with `stick_slip` every exact Coulomb pair's stick–slip points
+/// (ContactResult::stick_slip) on both bodies; possibly none.
+std::vector<ZoneEnd> zone_ends_of(const Solved& s, bool stick_slip);
+
+/// zone_ends_of(s, false); AdaptError when there is none.
 std::vector<ZoneEnd> outer_zone_ends(const Solved& s);
 
-/// What rp and hp adapt to: outer_zone_ends(), and with `stick_slip` every exact Coulomb pair's
-/// stick–slip points (ContactResult::stick_slip) on both bodies; AdaptError when there is none of
-/// either.
+/// What rp and hp adapt to: zone_ends_of(s, stick_slip); AdaptError when there is none.
 std::vector<ZoneEnd> adapt_targets(const Solved& s, bool stick_slip);
 
 /// The point of `body` and `kind` nearest to X, or null if that body has none.

@@ -9,7 +9,6 @@
 #include <sstream>
 
 #include "hpcontact/adapt/geometric_refinement.hpp"
-#include "hpcontact/core/error.hpp"
 
 namespace hpcontact::adapt {
 
@@ -60,12 +59,8 @@ Resolution resolve_zones(const SolvedPtr& s0, int max_rounds, const model::Progr
   r.solved = s0;
   for (int round = 1; round <= max_rounds; ++round) {
     const SolvedPtr s = r.solved;
-    std::vector<ZoneEnd> ends;
-    try {
-      ends = outer_zone_ends(*s);
-    } catch (const AdaptError&) {
-      break;  // no zone end (e.g. in contact to the boundary's ends): no zone to resolve
-    }
+    const std::vector<ZoneEnd> ends = zone_ends_of(*s, false);
+    if (ends.empty()) break;  // no zone end (e.g. in contact to the boundary's ends): none to resolve
     const auto nodes = nearest_movable_nodes(*s, ends);
     model::ProblemSpec spec = s->spec;
     const size_t before = r.towards.size();

@@ -396,7 +396,7 @@ nlohmann::json rp_iteration_json(const adapt::RpIteration& it) {
     j["nodes"].push_back({{"body", n.body}, {"node", n.node_id},
                           {"position", {n.position.x(), n.position.y()}},
                           {"gamma_star", {n.gamma_star.x(), n.gamma_star.y()}},
-                          {"follows", n.kind == adapt::ZoneEnd::Kind::contact ? "zone end" : "stick-slip point"}});
+                          {"follows", adapt::kind_name(n.kind)}});
   j["zone_ends_found"] = it.zone_ends_found;
   j["distance"] = it.distance;
   return j;

@@ -37,6 +37,11 @@ double LinearElastic::lambda() const {
   return youngs_modulus * nu / ((1 + nu) * (1 - 2 * nu));
 }
 
+double LinearElastic::plane_modulus() const {
+  return plane == Plane::stress ? youngs_modulus
+                                : youngs_modulus / (1 - poisson_ratio * poisson_ratio);
+}
+
 Voigt LinearElastic::axisymmetric_stress(const Voigt& eps, double eps_hoop, double* hoop) const {
   const double l = lambda(), l2m = D()(0, 0);  // λ + 2μ
   if (hoop) *hoop = l * (eps(0) + eps(1)) + l2m * eps_hoop;

@@ -30,6 +30,9 @@ struct LinearElastic {
 
   /// Lamé's first parameter λ = E ν / ((1 + ν)(1 − 2ν)) (3-D).
   double lambda() const;
+  /// The modulus of the plane problem: E' = E / (1 − ν²) (plane strain, axisymmetric), E (plane
+  /// stress); the stiffness scale of a contact boundary.
+  double plane_modulus() const;
   /// Axisymmetric stresses from the in-plane strains (ε_rr, ε_zz, γ_rz) and the hoop strain
   /// ε_θθ = u_r / r: (σ_rr, σ_zz, τ_rz) = D ε + λ ε_θθ (1, 1, 0), and σ_θθ into *hoop.
   Voigt axisymmetric_stress(const Voigt& eps, double eps_hoop, double* hoop) const;

@@ -113,10 +113,7 @@ std::shared_ptr<const PairConstraints> make_pair_constraints(const ContactPairSp
   }
   c->scale.resize(n);
   for (int j = 0; j < n; ++j) {
-    const auto& m = body.material_of(c->nodes.nodes[j].element);
-    const double E = m.plane != material::Plane::stress
-                         ? m.youngs_modulus / (1 - m.poisson_ratio * m.poisson_ratio)
-                         : m.youngs_modulus;
+    const double E = body.material_of(c->nodes.nodes[j].element).plane_modulus();
     c->scale(j) = E * c->nodes.nodes[j].stiffness_scale;
   }
   c->augmentation = spec.penalty > 0 ? Eigen::VectorXd::Constant(n, spec.penalty) : c->scale;

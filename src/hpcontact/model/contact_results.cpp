@@ -221,11 +221,8 @@ std::pair<Vec2, Vec2> boundary_position(const Body& body, int q, int le, double 
 /// E' p / h of a contact edge of degree p: the stiffness of the boundary over a node spacing,
 /// the scale that makes a gap and a pressure (or a slip and a traction) comparable.
 double edge_stiffness(const Body& body, const mesh::Edge& edge, int p) {
-  const auto& m = body.material_of(edge.quads[0]);
-  const double E = m.plane != material::Plane::stress
-                       ? m.youngs_modulus / (1 - m.poisson_ratio * m.poisson_ratio)
-                       : m.youngs_modulus;
-  return E * p / (body.mesh.node(edge.v1) - body.mesh.node(edge.v0)).norm();
+  return body.material_of(edge.quads[0]).plane_modulus() * p /
+         (body.mesh.node(edge.v1) - body.mesh.node(edge.v0)).norm();
 }
 
 /// The zone ends of an exactly enforced pair: between neighbouring multiplier nodes of one edge
@@ -388,13 +385,16 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       if (std::isfinite(ps.gap)) res.max_penetration = std::max(res.max_penetration, -ps.gap);
     res.resultant = s.resultant;
     const bool friction = c.has_friction() && multipliers->size() == 2 * c.size();
+    // the last step's slips, which locate the stick–slip points of a Coulomb pair
+    const Eigen::VectorXd* slips =
+        friction && step_slips && step_slips->size() == c.size() ? step_slips : nullptr;
     for (int j = 0; j < c.size(); ++j) {
       const auto& cp = c.node_points[j];
       ContactResult::Node n;
       std::tie(n.X, n.x) = boundary_position(body, cp.element, cp.local_edge, cp.t, u);
       n.pressure = (*multipliers)(j);
       if (friction) n.tangential = (*multipliers)(c.size() + j);
-      if (friction && step_slips && step_slips->size() == c.size()) n.step_slip = (*step_slips)(j);
+      if (slips) n.step_slip = (*slips)(j);
       n.gap = !s.found[j]           ? std::numeric_limits<double>::infinity()
               : c.weight(j) != 0.0 ? s.G(j) / c.weight(j)
               : c.rule == ConstraintRule::collocation ? s.points[j].gap  // the node's own point
@@ -432,6 +432,11 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       if (const auto at = node_stress_point(body, pair, j))
         sv = side_values(body, pair, *pair.obstacle, std::get<0>(*at), std::get<1>(*at), std::get<2>(*at), u);
       own_side.add(n.X, pair.coordinate(n.X), n.pressure * sv.length_ratio, sv);
+    }
+    if (slips && c.friction.kind == contact::FrictionLaw::Kind::coulomb) {
+      res.stick_slip = stick_slip_points(body, pair, res.nodes, u, multipliers->head(c.size()),
+                                         multipliers->tail(c.size()), *slips);
+      if (pair.other >= 0) res.other_stick_slip = feet_on_other(pair, res.stick_slip.x);
     }
     if (pair.other >= 0) {
       // The other body's points: their gap against this body's deformed boundary and the
@@ -498,14 +503,6 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
   for (const double p : res.pressure) res.pressure_max = std::max(res.pressure_max, p);
   ZoneEnds own = pair.constraints ? node_zone_ends(body, pair, res.nodes, u, multipliers->head(pair.constraints->size()))
                                   : zone_ends(body, pair.points, res.states, *pair.obstacle, pair, u);
-  if (pair.constraints && pair.constraints->has_friction() &&
-      pair.constraints->friction.kind == contact::FrictionLaw::Kind::coulomb && step_slips &&
-      step_slips->size() == pair.constraints->size() && multipliers->size() == 2 * pair.constraints->size()) {
-    const int n = pair.constraints->size();
-    res.stick_slip = stick_slip_points(body, pair, res.nodes, u, multipliers->head(n),
-                                       multipliers->tail(n), *step_slips);
-    if (pair.other >= 0) res.other_stick_slip = feet_on_other(pair, res.stick_slip.x);
-  }
   res.gamma_star = std::move(own.X);
   res.gamma_star_deformed = std::move(own.x);
   res.outer_ends = std::move(own.outer);

@@ -84,6 +84,16 @@ void ContactSystem::commit(const Eigen::VectorXd& x) {
     if (pair.memory) commit_friction(pair, pair_forces(d_, pair, u, nullptr));
 }
 
+FrictionInputs ContactSystem::friction_inputs(const ContactPair& pair, const Eigen::VectorXd& lambda_t,
+                                              const Eigen::VectorXd& u_from, const Vec2& factors_from,
+                                              const Vec2& factors) const {
+  FrictionInputs fi;
+  fi.lambda_t = &lambda_t;
+  fi.u_committed = &u_from;
+  if (pair.moving) fi.obstacle_increment = (factors - factors_from).cwiseProduct(pair.moving->direction());
+  return fi;
+}
+
 std::vector<Eigen::VectorXd> ContactSystem::step_slips(const Eigen::VectorXd& x) const {
   std::vector<Eigen::VectorXd> slips(pairs_.size());
   const Eigen::VectorXd u = full(x);
@@ -95,12 +105,9 @@ std::vector<Eigen::VectorXd> ContactSystem::step_slips(const Eigen::VectorXd& x)
     const int o = n_u_ + z_offset_[k];
     const Eigen::VectorXd lambda = x.segment(o, c.size());
     const Eigen::VectorXd lambda_t = x.segment(o + c.size(), c.size());
-    FrictionInputs fi;
-    fi.lambda_t = &lambda_t;
-    fi.u_committed = &u_step_start_;
-    if (pair.moving)
-      fi.obstacle_increment = (factors - factors_step_start_).cwiseProduct(pair.moving->direction());
-    const ConstraintState s = evaluate_constraints(d_, pair, u, lambda, nullptr, nullptr, false, fi);
+    const ConstraintState s =
+        evaluate_constraints(d_, pair, u, lambda, nullptr, nullptr, false,
+                             friction_inputs(pair, lambda_t, u_step_start_, factors_step_start_, factors));
     slips[k] = Eigen::VectorXd::Zero(c.size());
     for (int j = 0; j < c.size(); ++j)
       if (c.weight(j) != 0.0 && s.GT.size() == c.size()) slips[k](j) = s.GT(j) / c.weight(j);
@@ -270,13 +277,8 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
     const bool tangential = c.has_friction();
     const Eigen::VectorXd lambda_t = tangential ? Eigen::VectorXd(x.segment(o + c.size(), c.size()))
                                                 : Eigen::VectorXd();
-    FrictionInputs fi;
-    if (tangential) {
-      fi.lambda_t = &lambda_t;
-      fi.u_committed = &u_committed_;
-      if (pair.moving)
-        fi.obstacle_increment = (factors - factors_committed_).cwiseProduct(pair.moving->direction());
-    }
+    const FrictionInputs fi = tangential ? friction_inputs(pair, lambda_t, u_committed_, factors_committed_, factors)
+                                         : FrictionInputs{};
     const ConstraintState s = evaluate_constraints(d_, pair, u, lambda, &R, t, T != nullptr, fi);
     deepest_.resize(pairs_.size());
     deepest_[k] = {};

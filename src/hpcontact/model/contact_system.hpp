@@ -64,7 +64,7 @@ public:
   /// After a converged load step at x: the friction histories take its anchors and slips (and
   /// exact friction measures its slips from x).
   void commit(const Eigen::VectorXd& x);
-  /// Per pair with exact Coulomb friction, per multiplier node, the weighted slip of the last
+  /// Per pair with exact friction, per multiplier node, the weighted slip of the last
   /// committed step at x: ĝ_T,j = G_T,j / W_j (zero at a passive node), measured from the step
   /// before the last commit (x the state committed last: the slip its step made); empty for
   /// the other pairs. What locates the stick–slip points (ContactResult::stick_slip).
@@ -166,6 +166,11 @@ private:
   Eigen::VectorXd K_prescribed_;   ///< K times the prescribed displacements (for ∂/∂α)
   /// The prescribed displacements, their x and y components scaled by `factors`.
   Eigen::VectorXd prescribed(const Vec2& factors) const;
+  /// What an exact friction pair's evaluation needs: its tangential multipliers, and the dofs and
+  /// factors its slips are measured from (the obstacle's move since then at `factors`).
+  FrictionInputs friction_inputs(const ContactPair& pair, const Eigen::VectorXd& lambda_t,
+                                 const Eigen::VectorXd& u_from, const Vec2& factors_from,
+                                 const Vec2& factors) const;
   Eigen::VectorXd u_committed_;    ///< all dofs at the last converged step (exact friction)
   Vec2 factors_committed_ = Vec2::Zero();  ///< the displacement factors there
   /// The same at the converged step before it: where the last step started (step_slips()).
