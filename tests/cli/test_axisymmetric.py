@@ -15,6 +15,14 @@ def test_thick_sphere_energy_is_lames(hpcontact, root, tmp_path):
     s = json.loads((tmp_path / "s" / "summary.json").read_text())
     assert abs(s["strain_energy"] / (40 * math.pi) - 1) < 1e-8
     assert "2 pi r" in s["units"]["axisymmetric"]
+    # exact: lame_sphere: the energy-norm error from the exact strains (hoop strain included)
+    # equals the one from the energies, √((U − U_h)/U), and is below 0.01 %
+    e = s["error"]
+    assert e["reference"] == "analytic:lame_sphere"
+    assert abs(e["reference_energy"] / (40 * math.pi) - 1) < 1e-10
+    from_energies = 100 * math.sqrt(1 - s["strain_energy"] / (40 * math.pi))
+    assert abs(e["energy_norm_rel_percent"] / from_energies - 1) < 1e-3
+    assert e["energy_norm_rel_percent"] < 0.01
 
 
 def test_what_does_not_apply_is_refused(hpcontact, root, tmp_path):

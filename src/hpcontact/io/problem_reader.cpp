@@ -73,7 +73,7 @@ class SpecBuilder {
     spec.discretization = discretization(root["discretization"]);
     spec.solver = solver(root["solver"]);
     if (root["contact"]) spec.contact = contact(root["contact"], "contact", spec.bodies);
-    if (root["exact"]) spec.exact = exact(root["exact"]);
+    if (root["exact"]) spec.exact = exact(root["exact"], spec.bodies);
     if (root["adapt"]) spec.adapt = adapt(root["adapt"], spec);
     spec.output = output(root["output"]);
     require_bounded_work(spec, root);
@@ -714,15 +714,26 @@ class SpecBuilder {
     return o;
   }
 
-  ExactSpec exact(const YAML::Node& node) {
+  /// lame is the thick cylinder of plane bodies, lame_sphere the thick sphere of axisymmetric
+  /// ones (its meridian section): the other pairing is refused, naming the body.
+  ExactSpec exact(const YAML::Node& node, const std::vector<BodySpec>& bodies) {
     ExactSpec e;
     e.where = source_.where(node, "exact");
     if (node["type"].Scalar() == "none") return e;
     e.type = node["type"].Scalar();
+    const bool sphere = e.type == "lame_sphere";
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+      if ((bodies[i].material.plane == PlaneMode::axisymmetric) != sphere)
+        source_.fail(node["type"], "exact.type",
+                     sphere ? "lame_sphere is the thick sphere of an axisymmetric body, and " +
+                                  join_index("bodies", i) + " is plane (use lame)"
+                            : "lame is the thick cylinder of a plane body, and " +
+                                  join_index("bodies", i) +
+                                  " is axisymmetric (use lame_sphere for the thick sphere)");
     for (const char* key : {"inner_radius", "outer_radius"})
       if (!node[key])
         source_.fail(node, "exact",
-                     std::string("missing key '") + key + "' (required by type: lame)");
+                     std::string("missing key '") + key + "' (required by type: " + e.type + ")");
     e.inner_radius = number(node["inner_radius"]);
     e.outer_radius = number(node["outer_radius"]);
     if (e.outer_radius <= e.inner_radius)
@@ -732,6 +743,10 @@ class SpecBuilder {
     e.inner_pressure = number(node["inner_pressure"]);
     e.outer_pressure = number(node["outer_pressure"]);
     e.center = point(node["center"]);
+    if (sphere && e.center[0] != 0)
+      source_.fail(node["center"], "exact.center",
+                   "the centre of a sphere of revolution lies on the axis r = 0 (got " +
+                       shown_value(node["center"]) + ")");
     return e;
   }
 

@@ -243,7 +243,7 @@ struct ContactPairSpec {
 
 /// A closed-form solution to measure the error against.
 struct ExactSpec {
-  std::string type;  ///< "" (none) or "lame"
+  std::string type;  ///< "" (none), "lame" (thick cylinder) or "lame_sphere"
   double inner_radius = 0, outer_radius = 0;
   double inner_pressure = 0, outer_pressure = 0;
   std::array<double, 2> center{0, 0};

@@ -37,12 +37,17 @@ std::array<double, 2> principal_stresses(double sxx, double syy, double sxy);
 /// body ∫ W(F) t dA over the reference body.
 double strain_energy(const model::Discretization& d, const Eigen::VectorXd& u);
 
-/// Exact strain (xx, yy, gamma_xy) as a function of the physical point.
-using StrainField = std::function<Eigen::Vector3d(const Vec2&)>;
+/// An exact strain field as functions of the physical point: the in-plane strain (xx, yy,
+/// gamma_xy) and, for an axisymmetric body (x = r), the hoop strain ε_θθ.
+struct ExactStrain {
+  std::function<Eigen::Vector3d(const Vec2&)> in_plane;
+  std::function<double(const Vec2&)> hoop;  ///< required where a body is axisymmetric
+};
 
-/// ||u_exact - u||_E² = ½ ∫ (eps_ex - eps)^T D (eps_ex - eps) t dA, integrated with
-/// `extra_points` more Gauss points per direction than the solve used.
+/// ||u_exact - u||_E² = ½ ∫ (eps_ex - eps)^T D (eps_ex - eps) t dA (axisymmetric: the four
+/// strains with D₄, over 2π r dA), integrated with `extra_points` more Gauss points per
+/// direction than the solve used.
 double energy_error_squared(const model::Discretization& d, const Eigen::VectorXd& u,
-                            const StrainField& exact, int extra_points = 4);
+                            const ExactStrain& exact, int extra_points = 4);
 
 }  // namespace hpcontact::post
