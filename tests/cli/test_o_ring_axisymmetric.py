@@ -111,7 +111,10 @@ def test_what_does_not_apply_is_refused(hpcontact, root, tmp_path):
                 "does not apply to an axisymmetric body"),
                (["contact[0].compare.radius=2"], "contact[0].compare",
                 "Hertz and Shtayerman are the linear theory"),
-               (["exact.type=lame", "exact.inner_radius=1", "exact.outer_radius=2"], "exact", "does not apply to a finite-strain body"),
+               (["exact.type=lame_sphere", "exact.inner_radius=1", "exact.outer_radius=2"], "exact",
+                "does not apply to a finite-strain body"),
+               (["exact.type=lame", "exact.inner_radius=1", "exact.outer_radius=2"], "exact.type",
+                "lame is the thick cylinder of a plane body"),
                (["bodies[0].material.plane=stress"], "bodies[0].material.plane",
                 "neo-hooke is implemented in plane strain and axisymmetry only")]
     for settings, key, cause in refused:
