@@ -116,8 +116,7 @@ model::ProblemSpec with_node_moved(const model::ProblemSpec& spec, const Boundar
   const model::BodySpec& b = spec.bodies[track.body()];
   const int id = track.node_id();
   const Vec2 target = track.point(s);
-  const double margin = 0.01 * (track.upper() - track.lower());
-  HPC_REQUIRE(s > track.lower() + margin && s < track.upper() - margin, AdaptError, spec.file, ": rp: node ", id,
+  HPC_REQUIRE(track.reaches(s), AdaptError, spec.file, ": rp: node ", id,
               " of body '", b.name, "' cannot move to (", target.x(), ", ", target.y(),
               "): that point is not between its two boundary neighbours on its ", track.describe());
 

@@ -24,6 +24,16 @@ public:
   double node() const { return s_node_; }  ///< the node's own parameter
   double lower() const { return s_lower_; }
   double upper() const { return s_upper_; }
+  /// Whether the node can move to s: strictly between its neighbours, by 1 % of the track.
+  bool reaches(double s) const {
+    const double margin = 0.01 * (s_upper_ - s_lower_);
+    return s > s_lower_ + margin && s < s_upper_ - margin;
+  }
+  /// Whether X lies on the curve (to 1e-6 of the track's chord) at a parameter the node reaches.
+  bool reaches(const Vec2& X) const {
+    const double s = parameter(X), chord = (point(s_upper_) - point(s_lower_)).norm();
+    return reaches(s) && (point(s) - X).norm() <= 1e-6 * chord;
+  }
   int node_id() const { return node_id_; }
   int body() const { return body_; }
   /// "circle (centre, radius)" or "line".

@@ -20,6 +20,24 @@ RpOptions rp_options(const model::AdaptSpec& adapt) {
   return o;
 }
 
+namespace {
+
+/// The zone end (stick–slip point) of `kind` nearest to the node at X among those its track
+/// reaches (strictly between its boundary neighbours), or none. The nearest of the body's may
+/// lie beyond them — the other end of the zone when the node's own stick–slip point has
+/// vanished — and the node cannot go there.
+const ZoneEnd* reachable_end(const std::vector<ZoneEnd>& ends, const BoundaryTrack& track,
+                             ZoneEnd::Kind kind, const Vec2& X) {
+  const ZoneEnd* nearest = nullptr;
+  for (const auto& e : ends) {
+    if (e.body != track.body() || e.kind != kind || !track.reaches(e.X)) continue;
+    if (!nearest || (e.X - X).norm() < (nearest->X - X).norm()) nearest = &e;
+  }
+  return nearest;
+}
+
+}  // namespace
+
 RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& options,
                          const model::ProgressFn& progress, const IterationObserver& observe) {
   using Clock = std::chrono::steady_clock;
@@ -43,7 +61,7 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
       try {
         ends = adapt_targets(*s, options.stick_slip);
         if (moved.empty())
-          for (const auto& n : nearest_movable_nodes(*s, ends))
+          for (const auto& n : nearest_movable_nodes(*s, ends, /*must_reach=*/true))
             moved.push_back({n.track.body(), n.track.node_id(), n.end.kind});
       } catch (const AdaptError& e) {
         // The solve itself succeeded: it is the last good result, recorded without nodes.
@@ -59,21 +77,25 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
       std::vector<Vec2> target;
       for (const auto& [body, id, kind] : moved) {
         const Vec2 X = node_position(current.bodies[body], id);
-        const ZoneEnd* nearest = nearest_end(ends, body, kind, X);
+        const ZoneEnd* nearest = reachable_end(ends, BoundaryTrack(current, body, id), kind, X);
         const Vec2 to = nearest ? nearest->X : X;
         target.push_back(to);
         const double size = s->discretization.bodies[body].mesh.size();
         rec.distance = std::max(rec.distance, (to - X).norm() / size);
-        rec.nodes.push_back({body, id, X, to, kind});
+        rec.nodes.push_back({body, id, X, to, kind, nearest != nullptr});
       }
       {
         std::ostringstream os;
         os.precision(10);
         os << "rp iteration " << it << ":";
-        for (const auto& n : rec.nodes)
+        for (const auto& n : rec.nodes) {
           os << " node " << n.node_id << " at (" << n.position.x() << ", " << n.position.y()
-             << "), " << kind_name(n.kind)
-             << " at (" << n.gamma_star.x() << ", " << n.gamma_star.y() << ");";
+             << "), " << kind_name(n.kind);
+          if (n.has_target)
+            os << " at (" << n.gamma_star.x() << ", " << n.gamma_star.y() << ");";
+          else
+            os << " none in reach, stays;";
+        }
         os.precision(3);
         os << " distance " << rec.distance << " of the body size";
         say(os.str());
@@ -99,6 +121,9 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
       for (size_t k = 0; k < moved.size(); ++k) {
         const BoundaryTrack track(next, moved[k].body, moved[k].id);
         const double phi = track.node(), psi = track.parameter(target[k]);
+        // a neighbour moved before it may now lie between the node and its target (a stick–slip
+        // point inside the zone, its node beyond the zone end's): it stays this time
+        if (!track.reaches(psi)) continue;
         double s_new = psi;
         if (options.secant && out.history.size() >= 2) {
           const auto& prev = out.history[out.history.size() - 2].nodes[k];

@@ -22,6 +22,10 @@ struct RelocatedNode {
   Vec2 position = Vec2::Zero();    ///< where the node was in this iteration's solve
   Vec2 gamma_star = Vec2::Zero();  ///< the zone end (or stick–slip point) that solve found
   ZoneEnd::Kind kind = ZoneEnd::Kind::contact;
+  /// false: no zone end of its kind lay within its reach (between its boundary neighbours) in
+  /// this solve — its stick–slip point vanished or moved past a neighbour — and it stays;
+  /// gamma_star is then its own position
+  bool has_target = true;
 };
 
 struct RpIteration {

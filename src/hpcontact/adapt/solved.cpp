@@ -82,18 +82,33 @@ SolveFigures figures_of(const Solved& s, const std::vector<ZoneEnd>& ends, doubl
   return f;
 }
 
-std::vector<NodeForEnd> nearest_movable_nodes(const Solved& s, const std::vector<ZoneEnd>& ends) {
+std::vector<NodeForEnd> nearest_movable_nodes(const Solved& s, const std::vector<ZoneEnd>& ends,
+                                              bool must_reach) {
   struct Choice {
     NodeForEnd node;
     double distance;
   };
   std::vector<Choice> chosen;
-  for (const ZoneEnd& end : ends) {
+  // Zone ends choose first; a stick–slip point takes the nearest node no zone end has (on a
+  // coarse mesh both may be nearest to one node, and the pressure's end matters more), and one
+  // without a free node is left alone. With must_reach a node serves an end only if its track
+  // reaches it; an end that movable nodes exist for but none reaches (it lies within 1 % of a
+  // node that cannot move, e.g. where the other body's corner stands on this one) is left
+  // alone too.
+  std::vector<const ZoneEnd*> order;
+  for (const auto kind : {ZoneEnd::Kind::contact, ZoneEnd::Kind::stick_slip})
+    for (const ZoneEnd& end : ends)
+      if (end.kind == kind) order.push_back(&end);
+  std::set<std::pair<int, int>> zone_end_nodes;  // (body, node id)
+  for (const ZoneEnd* end_ptr : order) {
+    const ZoneEnd& end = *end_ptr;
+    const bool stick_slip = end.kind == ZoneEnd::Kind::stick_slip;
     const model::Body* body = &s.discretization.bodies[end.body];
     double best = std::numeric_limits<double>::infinity();
     std::optional<BoundaryTrack> choice;
     std::string reasons;
     std::set<int> refused;  // node ids already explained
+    bool movable = false;   // some node could move, though none reaches the end
     for (size_t k = 0; k < s.solution.pairs.size(); ++k) {
       const auto& pair = s.solution.pairs[k];
       if (pair.body != end.body && pair.other != end.body) continue;
@@ -101,9 +116,12 @@ std::vector<NodeForEnd> nearest_movable_nodes(const Solved& s, const std::vector
         for (int v : {body->mesh.edge(e).v0, body->mesh.edge(e).v1}) {
           const double dist = (body->mesh.node(v) - end.X).norm();
           if (dist >= best) continue;
+          if (stick_slip && zone_end_nodes.count({end.body, body->mesh.node_id(v)})) continue;
           try {
             // built first: a node that refuses must not empty the choice made so far
             BoundaryTrack track(s.spec, end.body, body->mesh.node_id(v));
+            movable = true;
+            if (must_reach && !track.reaches(end.X)) continue;
             choice.emplace(std::move(track));
             best = dist;
           } catch (const AdaptError& err) {
@@ -111,6 +129,7 @@ std::vector<NodeForEnd> nearest_movable_nodes(const Solved& s, const std::vector
           }
         }
     }
+    if (!choice && (stick_slip || movable)) continue;
     HPC_REQUIRE(choice, AdaptError, s.spec.file, ": no boundary node of body '", body->name,
                 "' can move onto the zone end at (", end.X.x(), ", ", end.X.y(), "):", reasons);
     // Two ends nearest to one node (a coarse solve whose zone starts open at a symmetry line as
@@ -122,6 +141,7 @@ std::vector<NodeForEnd> nearest_movable_nodes(const Solved& s, const std::vector
         if (best < c.distance) c = {{*choice, end}, best};
       }
     if (!taken) chosen.push_back({{*choice, end}, best});
+    if (!stick_slip) zone_end_nodes.insert({choice->body(), choice->node_id()});
   }
   std::vector<NodeForEnd> nodes;
   for (const auto& c : chosen) nodes.push_back(c.node);

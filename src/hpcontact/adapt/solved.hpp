@@ -63,8 +63,13 @@ struct NodeForEnd {
 
 /// For each zone end, the movable boundary node of its pair's contact edges nearest to it (one
 /// per node: of two ends nearest to the same node, the nearer is served); AdaptError when an
-/// end has no movable node.
-std::vector<NodeForEnd> nearest_movable_nodes(const Solved& s, const std::vector<ZoneEnd>& ends);
+/// end has no movable node. Stick–slip points choose after the zone ends, among the nodes no
+/// zone end has taken; one with none left gets no node. With must_reach (rp, which moves the
+/// node onto its end) only a node whose track reaches the end serves it, and an end no movable
+/// node reaches gets none; without (hp and the zone resolution, which refine towards the
+/// nearest node) the nearest serves.
+std::vector<NodeForEnd> nearest_movable_nodes(const Solved& s, const std::vector<ZoneEnd>& ends,
+                                              bool must_reach = false);
 
 /// The figures of one solve of an adaptive loop, as its history records them.
 struct SolveFigures {

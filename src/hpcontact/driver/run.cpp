@@ -406,7 +406,8 @@ nlohmann::json rp_iteration_json(const adapt::RpIteration& it) {
   for (const auto& n : it.nodes)
     j["nodes"].push_back({{"body", n.body}, {"node", n.node_id},
                           {"position", {n.position.x(), n.position.y()}},
-                          {"gamma_star", {n.gamma_star.x(), n.gamma_star.y()}},
+                          {"gamma_star", n.has_target ? nlohmann::json{n.gamma_star.x(), n.gamma_star.y()}
+                                                      : nlohmann::json()},
                           {"follows", adapt::kind_name(n.kind)}});
   j["zone_ends_found"] = it.zone_ends_found;
   j["distance"] = it.distance;
