@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <mutex>
 
 #include <muParser.h>
 
@@ -29,6 +30,7 @@ std::string shown_message(const std::string& message) {
 struct Expression::Impl {
   mu::Parser parser;
   double vars[2] = {0, 0};
+  std::mutex turn;  ///< one evaluation at a time: vars and the parser's stack are shared
 };
 
 Expression::Expression(const std::string& text, const std::vector<std::string>& names,
@@ -59,10 +61,11 @@ Expression::Expression(const Expression& other)
 
 double Expression::operator()(double a, double b) const {
   if (constant_) return value_;
-  impl_->vars[0] = a;
-  impl_->vars[1] = b;
   double v;
   try {
+    const std::lock_guard<std::mutex> lock(impl_->turn);
+    impl_->vars[0] = a;
+    impl_->vars[1] = b;
     v = impl_->parser.Eval();
   } catch (const mu::Parser::exception_type& e) {
     throw InputError(where_ + ": cannot evaluate " + shown(text_) + ": " + shown_message(e.GetMsg()));

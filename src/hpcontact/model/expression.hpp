@@ -7,8 +7,9 @@
 
 namespace hpcontact::model {
 
-/// A scalar formula in named variables, checked when constructed. Not thread-safe: each thread
-/// needs its own copy.
+/// A scalar formula in named variables, checked when constructed. Safe to evaluate from several
+/// threads (a parametric curve inside the parallel assembly): evaluations of one formula take
+/// turns, since its parser holds the variables and its evaluation stack.
 class Expression {
 public:
   /// Parses `text` with the variables `names` (e.g. {"x", "y"}); InputError naming `where` if the

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/model/expression.hpp"
 #include "hpcontact/model/parallel.hpp"
 
 using namespace hpcontact;
@@ -29,5 +30,24 @@ TEST(ParallelFor, SmallestFailingIndexIsRethrownAsItsType) {
     } catch (const NumericalError& e) {
       EXPECT_EQ(std::string(e.what()), "element 41");
     }
+  }
+}
+
+// A user formula evaluated from the parallel element loop (a parametric curve's x(s) inside the
+// assembly): every thread gets its own argument's value. The parser holds the variables, so
+// unguarded evaluations overwrote each other's s (seen as a random "non-positive Jacobian" of
+// curved elements in about one run in six).
+TEST(ParallelFor, OneFormulaEvaluatedFromEveryThread) {
+  const model::Expression f("2 + 0.3*s*(1 - s)", {"s"}, "curves[0].parametric.x");
+  constexpr int n = 20000;
+  std::vector<double> value(n);
+  for (int repeat = 0; repeat < 5; ++repeat) {
+    model::parallel_for(n, [&](int i) { value[i] = f(i / double(n)); });
+    int wrong = 0;
+    for (int i = 0; i < n; ++i) {
+      const double s = i / double(n);
+      wrong += value[i] != 2 + 0.3 * s * (1 - s);
+    }
+    EXPECT_EQ(wrong, 0);
   }
 }
