@@ -22,7 +22,8 @@ using namespace hpcontact;
 std::string source(const std::string& path) { return std::string(HPC_SOURCE_DIR) + "/" + path; }
 
 /// The overrides that turn every contact pair of the case to the penalty; a pair whose input
-/// gives no penalty gets the one its example had before exact contact (bilateral: 1.05e8 = 500 E).
+/// gives no penalty gets the one its example had before exact contact (bilateral: 1.05e8 = 500 E),
+/// and the other body's normal (normal: mean is exact enforcement's).
 std::vector<std::string> penalty_overrides(const std::string& path) {
   const auto spec = io::read_problem(source(path), {});
   std::vector<std::string> o;
@@ -30,6 +31,7 @@ std::vector<std::string> penalty_overrides(const std::string& path) {
     const std::string pair = "contact[" + std::to_string(i) + "].";
     o.push_back(pair + "enforcement=penalty");
     if (spec.contact[i].penalty == 0) o.push_back(pair + "penalty=1.05e8");
+    if (spec.contact[i].mean_normal) o.push_back(pair + "normal=other");  // the penalty's one
   }
   return o;
 }

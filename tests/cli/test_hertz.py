@@ -88,28 +88,45 @@ def test_p_examples_converge_to_the_reference(hpcontact, root, tmp_path):
     assert errors[2] < 3.0  # measured 2.48 %
 
 
+def rows_by_x(path):
+    """pressure.csv's rows keyed by x (to 1e-9): two runs sample [0, 1.5 b] alike but for the
+    sample each puts on its own zone end."""
+    with open(path) as f:
+        return {round(float(r["x"]), 9): r for r in csv.DictReader(f)}
+
+
 def test_bilateral_equals_unilateral(hpcontact, root, tmp_path):
     """Two equal cylinders (bilateral.yaml: exact contact, the upper cylinder's multiplier nodes
-    against the lower one's deformed boundary, mortar on segments) against the unilateral
-    p8.yaml: the same energy per cylinder and load factor to 1e-5 (measured 2.2e-5 and 9.7e-6
-    with mortar on both; 3e-6 and 2e-6 with collocation on both), the pressure from stresses
-    within 1e-2 of p0 on [0, 1.5 b] (measured 4e-3, at the axis and the zone end, and not falling
-    with p: 3.7e-3 at p = 12 and 16). One-sided enforcement carries the pressure along the lower
-    cylinder's deformed normal, which at a node of the discrete interface is tilted by the
-    surfaces' crossing there, so the symmetric pair is not quite the unilateral problem (the
-    seed's two-sided penalty averages the tilt away; two-sided exact constraints would repeat
-    one another)."""
+    against the lower one's deformed boundary, collocated, the gap along the mean of the two
+    boundaries' normals) against the unilateral p8.yaml (issue 15): the multiplier and
+    -sigma_nn within 1e-8 of p0 at every common sample of [0, 1.5 b] (measured 9e-12), energy per
+    cylinder and load factor within 1e-10 (2e-13, 6e-14). Not the located zone end: it is the
+    root of g - lambda_h/kappa with kappa of one body's E', while between two bodies the gap
+    opens under both (1.7 % inside p8's; E* in kappa brings it to 1.3e-5 but leaves
+    bilateral-rp.yaml at a noise floor of 5e-7: open, issue 15). With the other body's normal alone (normal: other) the upper
+    node is pushed along the lower body's normal, which at a node of the edge the zone ends in is
+    tilted by the surfaces' crossing there: energy 3.3e-6, multiplier 8e-4 of p0 off (asserted,
+    so that the mean normal is seen to be what closes the gap)."""
     uni = run(hpcontact, root, "p8.yaml", tmp_path / "uni")
     bil = run(hpcontact, root, "bilateral.yaml", tmp_path / "bil")
     assert bil["converged"] and bil["dofs"] == 2 * uni["dofs"]
-    _, pu = read_curve(tmp_path / "uni" / "pressure.csv")
-    _, pb = read_curve(tmp_path / "bil" / "pressure.csv")
     p0 = uni["contact"]["hertz_peak_pressure"]
-    assert len(pu) == len(pb)
-    assert max(abs(a - b) for a, b in zip(pu, pb)) < 1e-2 * p0
-    assert abs(bil["strain_energy"] - 2 * uni["strain_energy"]) < 1e-4 * bil["strain_energy"]
-    assert abs(bil["load_factor"] / uni["load_factor"] - 1) < 1e-4
+    ru, rb = rows_by_x(tmp_path / "uni" / "pressure.csv"), rows_by_x(tmp_path / "bil" / "pressure.csv")
+    common = sorted(set(ru) & set(rb))
+    assert len(common) >= len(ru) - 1
+    for column in ("pressure_multiplier", "minus_sigma_nn"):
+        assert max(abs(float(ru[x][column]) - float(rb[x][column])) for x in common) < 1e-8 * p0
+    assert abs(bil["strain_energy"] / (2 * uni["strain_energy"]) - 1) < 1e-10
+    assert abs(bil["load_factor"] / uni["load_factor"] - 1) < 1e-10
     assert abs(bil["contact"]["resultant"][1] - 35000) < 35
+    one = hpcontact("run", os.path.join(root, HERTZ, "bilateral.yaml"), "--out", tmp_path / "one",
+                    "-q", "--set", "contact[0].normal=other")
+    assert one.returncode == 0, one.stderr
+    s1 = json.loads((tmp_path / "one" / "summary.json").read_text())
+    r1 = rows_by_x(tmp_path / "one" / "pressure.csv")
+    assert abs(s1["strain_energy"] / (2 * uni["strain_energy"]) - 1) > 1e-6
+    assert max(abs(float(ru[x]["pressure_multiplier"]) - float(r1[x]["pressure_multiplier"]))
+               for x in set(ru) & set(r1)) > 1e-4 * p0
 
 
 def test_bilateral_rp_moves_a_node_of_each_body_and_equals_rp8(hpcontact, root, tmp_path):

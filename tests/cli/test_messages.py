@@ -72,6 +72,21 @@ def test_edges_counted_twice_are_refused(hpcontact, root, tmp_path):
     assert r.returncode == 2 and "bodies[0].loads[0].edges[1]" in r.stderr, r.stderr
 
 
+@pytest.mark.parametrize("case, override, cause", [
+    ("p8.yaml", "contact[0].normal=mean", "mean is the mean of two bodies' normals; against a "
+     "rigid obstacle the obstacle's normal is the only one"),
+    ("bilateral.yaml", "contact[0].enforcement=penalty", "mean applies to augmented-lagrangian "
+     "(exact) enforcement; the penalty measures its gaps along the other body's normal"),
+])
+def test_mean_normal_where_it_does_not_apply_is_refused(hpcontact, root, case, override, cause):
+    """contact[].normal: mean needs two bodies and exact enforcement; elsewhere it is refused
+    with the key named (bilateral.yaml sets it in the file: the error points at its line)."""
+    r = hpcontact("check", os.path.join(root, "examples/hertz", case), "--set", override)
+    assert r.returncode in (1, 2) and "contact[0].normal" in r.stderr and cause in r.stderr, r.stderr
+    if case == "bilateral.yaml":
+        assert "bilateral.yaml:" in r.stderr and r.returncode == 1
+
+
 def test_two_constraints_on_the_same_edge_are_refused(hpcontact, root, tmp_path):
     """Two constraints prescribing uy on the same edges: the later won silently."""
     case = copy_with(root, tmp_path, HERTZ, "      - {edges: [centre], uy: -0.02}\n",

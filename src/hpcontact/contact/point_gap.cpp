@@ -38,7 +38,8 @@ PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const
 }
 
 PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
-                            const DeformableBoundary& master, int offset_s, int offset_m, bool second) {
+                            const DeformableBoundary& master, int offset_s, int offset_m, bool second,
+                            const DeformableBoundary* own) {
   PointGap pg;
   const int ms = static_cast<int>(cp.modes.size());
   pg.x = cp.X;
@@ -46,7 +47,14 @@ PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
   BoundaryPoint foot;
   if (!master.project(pg.x, foot)) return pg;
   pg.found = true;
-  const Vec2 n = foot.normal, t = foot.dx_dt;
+  Vec2 n = foot.normal;
+  const Vec2 t = foot.dx_dt;
+  if (own) {
+    BoundaryPoint here;
+    own->evaluate(cp.edge, cp.t, here);
+    const Vec2 mean = foot.normal - here.normal;
+    if (mean.norm() > 1e-8) n = mean.normalized();
+  }
   pg.normal = n;
   pg.tangent = friction_tangent(n);  // not t/|t|: t follows the edge's parametrisation
   pg.foot = foot.x;

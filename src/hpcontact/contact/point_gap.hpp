@@ -40,7 +40,15 @@ PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const
                          int offset, bool second);
 
 /// Against the deformed boundary of another body (its displacement set); offsets as above.
+/// With `own` (the point's body's contact boundary, its displacement set, its edges those the
+/// point's ContactPoint::edge counts) the gap is measured along the mean normal
+/// n̄ = (n_m − n_s)/|n_m − n_s| of the two boundaries (n_s the point's own outward normal), not
+/// the other body's alone: the two-sided pairing, which treats both bodies alike, so that
+/// mirror-image bodies press each other along the mirror's normal. Its ∂g/∂u holds n̄ and the
+/// foot's parameter fixed (exact where the bodies touch and n_m = −n_s; otherwise Newton's
+/// tangent is approximate by the angle between the normals), and ∂²g/∂u² is the one-sided one.
 PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
-                            const DeformableBoundary& master, int offset_s, int offset_m, bool second);
+                            const DeformableBoundary& master, int offset_s, int offset_m, bool second,
+                            const DeformableBoundary* own = nullptr);
 
 }  // namespace hpcontact::contact

@@ -618,6 +618,15 @@ class SpecBuilder {
       c.constraint = rule == "collocation" ? ConstraintRule::collocation
                      : rule == "mortar"    ? ConstraintRule::mortar
                                            : ConstraintRule::automatic;
+      c.mean_normal = node["normal"].Scalar() == "mean";
+      if (c.mean_normal && c.obstacle.kind != ObstacleKind::body)
+        source_.fail(node["normal"], item_path + ".normal",
+                     "mean is the mean of two bodies' normals; against a rigid obstacle the "
+                     "obstacle's normal is the only one (normal: other)");
+      if (c.mean_normal && c.enforcement == Enforcement::penalty)
+        source_.fail(node["normal"], item_path + ".normal",
+                     "mean applies to augmented-lagrangian (exact) enforcement; the penalty "
+                     "measures its gaps along the other body's normal");
       if (node["penalty"]) c.penalty = number(node["penalty"]);
       else if (c.enforcement == Enforcement::penalty)
         source_.fail(node, item_path, "missing key 'penalty' (required by enforcement: penalty)");

@@ -66,6 +66,7 @@ std::shared_ptr<const PairConstraints> make_pair_constraints(const ContactPairSp
                                                          : ConstraintRule::collocation;
   c->segmented = two_bodies && c->rule == ConstraintRule::mortar;
   c->segment_quadrature = spec.quadrature;
+  c->mean_normal = two_bodies && spec.mean_normal;
   for (const auto& ce : chain) c->edges.push_back(ce.edge);
   c->nodes = contact::multiplier_nodes(body.mesh, body.dofs, body.maps, chain, body.out_of_plane());
   const int n = c->nodes.size();
@@ -169,7 +170,7 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
     pair.boundary->set_displacement(ua);
     pair.other_boundary->set_displacement(u.segment(other.dof_offset, other.dofs.n_dofs()));
   }
-  const bool second = t != nullptr && !std::getenv("HPC_NO_CURV");
+  const bool second = t != nullptr;
   // the points and their coefficients: fixed, or the segments of the current state
   std::vector<contact::ContactPoint> seg_points;
   std::vector<std::vector<std::pair<int, double>>> seg_coefficients;
@@ -189,7 +190,8 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
       pg = contact::rigid_point_gap(cp, *pair.obstacle, ua, body.dof_offset, second);
     } else {
       pg = contact::two_body_point_gap(cp, ua, *pair.other_boundary, body.dof_offset,
-                                       d.bodies[pair.other].dof_offset, second);
+                                       d.bodies[pair.other].dof_offset, second,
+                                       c.mean_normal ? pair.boundary.get() : nullptr);
     }
     contact::PointState& ps = s.points[q];
     ps.x = pg.x;

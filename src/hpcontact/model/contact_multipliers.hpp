@@ -51,6 +51,8 @@ struct PairConstraints {
   /// the other body crosses one of its vertices (so that each integrand is smooth; `points`
   /// then holds the unsegmented rule, for W_j only).
   bool segmented = false;
+  /// Two bodies: the gap along the mean normal of both boundaries (two_body_point_gap's `own`).
+  bool mean_normal = false;
   int segment_quadrature = 0;
   std::vector<int> edges;  ///< the mesh edge of each edge of the nodes (chain order)
   /// Friction at the nodes: a tangential multiplier λ_T,j (the traction along τ the other side

@@ -232,6 +232,9 @@ struct ContactPairSpec {
   ObstacleSpec obstacle;
   Enforcement enforcement = Enforcement::augmented_lagrangian;
   ConstraintRule constraint = ConstraintRule::automatic;
+  /// Between two bodies, exact enforcement: the gap along the mean of both boundaries' normals
+  /// (two-sided) instead of the other body's normal (one-sided).
+  bool mean_normal = false;
   /// eps_N [force/length³]: the penalty; with augmented_lagrangian the augmentation (0: the
   /// default E p² / h at each node), a parameter of convergence speed, not of the answer.
   double penalty = 0;
