@@ -39,6 +39,8 @@ struct FrictionHistory {
 /// depend on the direction that body's edges are parametrised in (an edge's dx/dt would flip
 /// between elements listed in opposite orientations, as hp refinement creates).
 inline Vec2 friction_tangent(const Vec2& n) { return Vec2(n.y(), -n.x()); }
+/// The matrix Q of friction_tangent: τ = Q n (for the derivatives of τ).
+inline Mat2 tangent_rotation() { return (Mat2() << 0, 1, -1, 0).finished(); }
 
 /// Stick or slip at one point.
 enum class StickSlip { open, stick, slip };

@@ -33,6 +33,13 @@ PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const
     for (int a = 0; a < m; ++a)
       for (int b = 0; b < m; ++b)
         pg.d2g.block<2, 2>(2 * a, 2 * b) = cp.N(a) * cp.N(b) * dn;
+    // τ = Q n(x): ∂τ/∂u = Q (∂n/∂x) ∂x/∂u; dt_i = N_k τ_c
+    const Mat2 Qdn = tangent_rotation() * dn;
+    pg.dtau.resize(2, 2 * m);
+    for (int b = 0; b < m; ++b) pg.dtau.middleCols<2>(2 * b) = cp.N(b) * Qdn;
+    pg.ddt.resize(2 * m, 2 * m);
+    for (int a = 0; a < m; ++a)
+      for (int c = 0; c < 2; ++c) pg.ddt.row(2 * a + c) = cp.N(a) * pg.dtau.row(c);
   }
   return pg;
 }
@@ -89,6 +96,21 @@ PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
     const Eigen::MatrixXd M =
         -(Dn * H.transpose() / cc + Gt * Dn.transpose() / a + kappa * Gt * H.transpose() / (a * cc));
     pg.d2g = 0.5 * (M + M.transpose());
+    if (!own) {
+      // The foot slides, δξ = H·δu / cc, and the tangent x_m' turns with it and with the other
+      // body's modes: n·δx_m' = W·δu, δn = −x_m' (W·δu) / a, δτ = Q δn. dt_i = ±N_k(ξ) τ_c
+      // changes with τ and, for the other body's modes, with N_k(ξ).
+      const Eigen::VectorXd W = Dn + kappa * H / cc;
+      const Vec2 Qt = tangent_rotation() * t;
+      pg.dtau = -Qt * W.transpose() / a;
+      pg.ddt.resize(L, L);
+      for (int k = 0; k < ms; ++k)
+        for (int c = 0; c < 2; ++c) pg.ddt.row(2 * k + c) = cp.N(k) * pg.dtau.row(c);
+      for (int k = 0; k < mm; ++k)
+        for (int c = 0; c < 2; ++c)
+          pg.ddt.row(2 * (ms + k) + c) =
+              -foot.N(k) * pg.dtau.row(c) - (foot.dN(k) * pg.tangent(c) / cc) * H.transpose();
+    }
   }
   return pg;
 }

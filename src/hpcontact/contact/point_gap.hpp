@@ -32,6 +32,10 @@ struct PointGap {
   /// tangential relative displacement of the point per unit dof (friction).
   Eigen::VectorXd dt;
   Eigen::MatrixXd d2g;         ///< ∂²g/∂u² at dofs (empty unless asked for)
+  /// With d2g (empty with a mean normal): how the tangent turns and the foot slides with u —
+  /// ∂τ/∂u (2 × dofs) and ∂dt/∂u (dofs × dofs, row i the derivative of dt_i), the terms of
+  /// friction's tangent that a curved obstacle or another body adds to a plane's.
+  Eigen::MatrixXd dtau, ddt;
 };
 
 /// Against a rigid obstacle; u holds the body's dofs (dof = 2·mode + component), `offset` the

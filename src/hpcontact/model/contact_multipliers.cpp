@@ -162,7 +162,7 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
   if (tangential) {
     s.GT = Eigen::VectorXd::Zero(n);
     s.d_resultant_t.assign(n, Vec2::Zero());
-    if (gradients) s.dGT.resize(n);
+    if (gradients) s.dGT.resize(n), s.dT.resize(n);
   }
   const Eigen::VectorXd ua = u.segment(body.dof_offset, body.dofs.n_dofs());
   if (pair.other >= 0) {
@@ -206,12 +206,19 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
     double lambda_q = 0, w_q = 0, lambda_t_q = 0;
     // tangential slip since the last converged step: τ·Δ(x − x_foot), the foot a material point
     double slip_q = 0;
+    Eigen::VectorXd dslip;  // ∂slip_q/∂u at pg.dofs
     if (tangential) {
+      Eigen::VectorXd du(pg.dofs.size());
       for (size_t i = 0; i < pg.dofs.size(); ++i) {
         const int dof = pg.dofs[i];
-        slip_q += pg.dt(i) * (u(dof) - (friction.u_committed ? (*friction.u_committed)(dof) : 0.0));
+        du(i) = u(dof) - (friction.u_committed ? (*friction.u_committed)(dof) : 0.0);
       }
-      slip_q -= pg.tangent.dot(friction.obstacle_increment);
+      slip_q = pg.dt.dot(du) - pg.tangent.dot(friction.obstacle_increment);
+      if (gradients) {
+        dslip = pg.dt;
+        if (pg.ddt.size() > 0)
+          dslip += pg.ddt.transpose() * du - pg.dtau.transpose() * friction.obstacle_increment;
+      }
     }
     for (const auto& [j, a] : coefficients[q]) {
       lambda_q += a * lambda(j);
@@ -225,7 +232,10 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
         lambda_t_q += a * (*friction.lambda_t)(j);
         s.GT(j) += a * slip_q;
         s.d_resultant_t[j] -= a * pg.tangent;
-        if (gradients) accumulate(s.dGT[j], pg.dofs, pg.dt, a);
+        if (gradients) {
+          accumulate(s.dGT[j], pg.dofs, dslip, a);
+          accumulate(s.dT[j], pg.dofs, pg.dt, a);
+        }
       }
     }
     ps.pressure = w_q != 0 ? lambda_q / w_q : 0.0;
@@ -251,10 +261,16 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
       for (size_t a = 0; a < pg.dofs.size(); ++a)
         for (size_t b = 0; b < pg.dofs.size(); ++b)
           if (const double v = pg.d2g(a, b); v != 0.0) t->emplace_back(pg.dofs[a], pg.dofs[b], -lambda_q * v);
+    // the tangential force λ_T,q dt_q turns with τ and slides with the foot
+    if (second && tangential && lambda_t_q != 0.0 && pg.ddt.size() > 0)
+      for (size_t a = 0; a < pg.dofs.size(); ++a)
+        for (size_t b = 0; b < pg.dofs.size(); ++b)
+          if (const double v = pg.ddt(a, b); v != 0.0) t->emplace_back(pg.dofs[a], pg.dofs[b], lambda_t_q * v);
   }
   if (gradients) {
     for (auto& g : s.dG) merge(g);
     for (auto& g : s.dGT) merge(g);
+    for (auto& g : s.dT) merge(g);
   }
   if (c.segmented) s.segment_points = std::move(seg_points);
   return s;

@@ -91,9 +91,12 @@ struct ConstraintState {
   /// they are PairConstraints::points.
   std::vector<contact::ContactPoint> segment_points;
   /// With friction: per node the weighted tangential slip since the last converged step
-  /// [length²], its gradient (when asked for) and ∂resultant/∂λ_T,j.
+  /// [length²], its gradient ∂G_T,j/∂u (when asked for; with the tangent's turning and the
+  /// foot's sliding when the curvature part is asked for too), the weighted virtual slip
+  /// dT_j = Σ_q a_qj ∂(τ·(x − x_foot))/∂u with τ and the foot held (the column ∂R/∂λ_T,j of
+  /// the tangential force), and ∂resultant/∂λ_T,j.
   Eigen::VectorXd GT;
-  std::vector<std::vector<std::pair<int, double>>> dGT;
+  std::vector<std::vector<std::pair<int, double>>> dGT, dT;
   std::vector<Vec2> d_resultant_t;
 };
 
@@ -110,8 +113,8 @@ struct FrictionInputs {
 /// dofs, the residual K u − f − f_c) when R is not null, adds the curvature part of their
 /// tangent, −Σ_q λ_q ∇²g_N(x_q), to t when t is not null, and fills the gradients dG when
 /// `gradients`. With friction (the pair's law and friction.lambda_t given) also the tangential
-/// slips, their gradients and forces (the tangent of τ's turning is left out: friction's Newton
-/// converges linearly where τ turns).
+/// slips, their gradients and forces; with t the tangent of the tangential force, Σ_q λ_T,q ∂dt_q/∂u,
+/// and the slips' gradients include how τ turns and the foot slides (not with normal: mean).
 ConstraintState evaluate_constraints(const Discretization& d, const ContactPair& pair,
                                      const Eigen::VectorXd& u, const Eigen::VectorXd& lambda,
                                      Eigen::VectorXd* R, std::vector<Eigen::Triplet<double>>* t,

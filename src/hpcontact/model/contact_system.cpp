@@ -390,11 +390,12 @@ void ContactSystem::tangential_rows(const PairConstraints& c, const ConstraintSt
       case State::slip: r(row) = W * (lambda_t(j) - c.friction.mu * sign * lambda(j)); break;
     }
     if (!T) continue;
+    // force column ∂r_u/∂λ_T = +dT_j (the body receives −λ_T τ), and the row's u-part cT ∂G_T/∂u
+    for (const auto& [dof, v] : s.dT[j])
+      if (const int i = op_.unknown(d_, dof); i >= 0) T->emplace_back(i, row, v);
     for (const auto& [dof, v] : s.dGT[j]) {
-      // force column ∂r_u/∂λ_T = +∂G_T/∂u (the body receives −λ_T τ), and the row's u-part
       const int i = op_.unknown(d_, dof);
       if (i >= 0) {
-        T->emplace_back(i, row, v);
         T->emplace_back(row, i, state == State::stick ? cT * v : 0.0);
       } else if (z_rows && state == State::stick) {
         z_rows->emplace_back(row, dof, cT * v);
