@@ -92,6 +92,33 @@ def test_force_control_with_friction(hpcontact, tmp_path):
         assert float(p["x"]) == pytest.approx(float(q["x"]), rel=1e-8, abs=1e-12)
 
 
+def test_friction_on_a_curved_obstacle_from_a_symmetry_line(hpcontact, root, tmp_path):
+    """Hertz p5 pressed onto a rigid disc with Coulomb friction under force control (the
+    defaults: collocation at the nodes). The first node touching is the one on the symmetry line,
+    whose slip along the disc no unknown moves (u_x is held there): its stick row was zero to
+    round-off and every step failed as singular. Now its tangential multiplier is the support's,
+    pinned to 0; the run converges with the target force, the friction sticks inside and slips
+    outside, on the Coulomb bound there and within it everywhere."""
+    mu = 0.3
+    s = run(hpcontact, os.path.join(root, "examples/hertz/p5.yaml"), tmp_path,
+            "contact[0].obstacle={type: circle, center: [0, -50], radius: 50}",
+            f"contact[0].friction={{law: coulomb, mu: {mu}}}")
+    assert s["converged"] and abs(s["contact"]["resultant"][1] - 35000) < 35
+    points = rows(tmp_path / "contact.csv")
+    axis = min(points, key=lambda p: abs(float(p["X"])))
+    assert float(axis["X"]) < 1e-12 and float(axis["tangential_traction"]) == 0
+    # t_T and the normal multiplier `traction` are both per unit undeformed length
+    p_max = max(float(p["traction"]) for p in points)
+    states = {p["state"] for p in points}
+    assert {"stick", "slip", "open"} <= states, states
+    for p in points:
+        t, pn = abs(float(p["tangential_traction"])), float(p["traction"])
+        assert t <= mu * pn * (1 + 1e-9) + 1e-9 * p_max, p
+        if p["state"] == "slip":
+            assert t == pytest.approx(mu * pn, rel=1e-9)
+    assert max(abs(float(p["tangential_traction"])) for p in points) > 0.1 * mu * p_max
+
+
 @pytest.mark.parametrize("settings, message, code", [
     # given on the command line: a command-line mistake (exit 2)
     (["solver.stages[0].displacements=1"],

@@ -363,11 +363,27 @@ void ContactSystem::tangential_rows(const PairConstraints& c, const ConstraintSt
   for (int j = 0; j < m; ++j) {
     const int row = o + m + j;
     const double W = c.weight(j), cT = c.scale(j);
-    enum class State { open, stick, slip } state = State::open;
+    // held: a sticking node whose slip no unknown moves (on a symmetry line, its tangent along
+    // the held direction: the axis node of a half model); its λ_T is the support's and is pinned
+    // to 0 (else the row is zero and the system singular). Decided at each tangent, kept between.
+    enum class State { open, stick, slip, held } state = State::open;
     double sign = 1;
     if (node_active(c, s, lambda, j)) {
       state = State::stick;
-      if (c.friction.kind == contact::FrictionLaw::Kind::coulomb) {
+      bool held = false;
+      if (T) {
+        double free = 0, all = 0;  // |∂G_T/∂u| over the unknowns and over all dofs
+        for (const auto& [dof, v] : s.dGT[j]) {
+          all += std::abs(v);
+          if (op_.unknown(d_, dof) >= 0) free += std::abs(v);
+        }
+        held = free <= 1e-10 * all;  // round-off of a normal that is the held direction's
+      } else {
+        held = tangent_states_.size() == states_.size() &&
+               tangent_states_[row - n_u_] == static_cast<char>(State::held);
+      }
+      if (held) state = State::held;
+      if (!held && c.friction.kind == contact::FrictionLaw::Kind::coulomb) {
         // the trial traction against the augmented normal pressure
         const double trial = lambda_t(j) + cT * s.GT(j) / W;
         const double bound = c.friction.mu * (lambda(j) - c.scale(j) * s.G(j) / W);
@@ -385,7 +401,8 @@ void ContactSystem::tangential_rows(const PairConstraints& c, const ConstraintSt
     }
     states_[row - n_u_] = static_cast<char>(state);
     switch (state) {
-      case State::open: r(row) = W * lambda_t(j); break;
+      case State::open:
+      case State::held: r(row) = W * lambda_t(j); break;
       case State::stick: r(row) = cT * s.GT(j); break;
       case State::slip: r(row) = W * (lambda_t(j) - c.friction.mu * sign * lambda(j)); break;
     }
