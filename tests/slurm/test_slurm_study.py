@@ -100,6 +100,24 @@ def wait_submitted(folder, seconds=60):
     pytest.fail(f"no job submitted into {folder} within {seconds} s")
 
 
+def wait_unlocked(run_dir, seconds=60):
+    """Until no process holds the run folder's lock (.hpcontact-lock, flock): Slurm records a
+    task CANCELLED when it signals it, and the run it killed may live on for a moment (up to
+    KillWait) holding its folder; a run started there meanwhile is refused, as it should be."""
+    import fcntl
+    path = os.path.join(run_dir, ".hpcontact-lock")
+    deadline = time.monotonic() + seconds
+    while os.path.exists(path):
+        with open(path, "a") as f:
+            try:
+                fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
+                return
+            except BlockingIOError:
+                pass
+        assert time.monotonic() < deadline, f"{path} still locked after {seconds} s"
+        time.sleep(0.2)
+
+
 def test_cancelled_task_is_a_failed_row_and_resubmission_completes(exe, cluster, tmp_path):
     """scancel of one running task: that row fails with its label and log, the others are
     collected; submitting again runs only that row, and the study is complete."""
@@ -133,6 +151,7 @@ runs:
     assert f"FAILED slow: array task {job}_1 ended CANCELLED" in r.stdout, r.stdout
     assert "2 of 3 runs converged" in r.stdout
 
+    wait_unlocked(str(out / "runs" / "02-slow"))
     r = hpcontact(exe, cluster, "study", study, "--executor", "slurm", "--out", out, "--wait")
     assert r.returncode == 0, r.stdout + r.stderr + cluster.logs()
     assert "1 tasks (rows 1," in r.stdout and "2 rows already have a successful run" in r.stdout

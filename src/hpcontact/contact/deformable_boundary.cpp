@@ -53,6 +53,22 @@ DeformableBoundary::DeformableBoundary(const mesh::Mesh& mesh, const fem::DofMap
       for (size_t j = 0; j < edges_.size(); ++j)
         if (j != k && (end_vertex[j][0] == end_vertex[k][end] || end_vertex[j][1] == end_vertex[k][end]))
           edges_[k].shared_end[end] = true;
+  sample();
+}
+
+void DeformableBoundary::set_displacement(const Eigen::VectorXd& u) const {
+  u_ = u;
+  sample();
+}
+
+void DeformableBoundary::sample() const {
+  samples_.resize(edges_.size() * (kSamples + 1));
+  BoundaryPoint bp;
+  for (size_t k = 0; k < edges_.size(); ++k)
+    for (int i = 0; i <= kSamples; ++i) {
+      evaluate(static_cast<int>(k), -1 + 2.0 * i / kSamples, bp);
+      samples_[k * (kSamples + 1) + i] = {bp.x, bp.dx_dt};
+    }
 }
 
 Vec2 DeformableBoundary::tangent_at(int k, double t) const {
@@ -130,19 +146,17 @@ std::vector<DeformableBoundary::Vertex> DeformableBoundary::vertices() const {
 std::vector<double> DeformableBoundary::segments(int k, const DeformableBoundary& master) const {
   std::vector<double> ends{-1.0, 1.0};
   BoundaryPoint bp;
-  evaluate(k, -1, bp);
-  const Vec2 a = bp.x;
-  evaluate(k, 1, bp);
-  const double length = (bp.x - a).norm();
+  const Sample* s = &samples_[k * (kSamples + 1)];
+  const double length = (s[kSamples].x - s[0].x).norm();
   for (const Vertex& v : master.vertices()) {
     // f(t) = (x(t) − x_v)·τ_v changes sign where the edge passes the normal through the vertex
     auto f = [&](double t) {
       evaluate(k, t, bp);
       return (bp.x - v.x).dot(v.tangent);
     };
-    double ta = -1, fa = f(ta);
+    double ta = -1, fa = (s[0].x - v.x).dot(v.tangent);
     for (int i = 1; i <= kSamples; ++i) {
-      const double tb = -1 + 2.0 * i / kSamples, fb = f(tb);
+      const double tb = -1 + 2.0 * i / kSamples, fb = (s[i].x - v.x).dot(v.tangent);
       if ((fa < 0) != (fb < 0)) {
         const double t = pegasus_root(f, ta, tb, fa, fb, 1e-15);
         evaluate(k, t, bp);
@@ -191,23 +205,25 @@ bool DeformableBoundary::project(const Vec2& x, BoundaryPoint& foot) const {
   auto shared_vertex = [&](int k, double end) { return edges_[k].shared_end[end > 0 ? 1 : 0]; };
   // A point level with a free end of the boundary (to round-off of the edge's size) has its
   // foot there: a node of the other body over the end of a matching boundary.
-  auto level_with_free_end = [&](int k, double end, double f_end) {
-    return !shared_vertex(k, end) && std::abs(f_end) <= 1e-10 * bp.dx_dt.squaredNorm();
+  auto level_with_free_end = [&](int k, double end, double f_end, const Sample& at) {
+    return !shared_vertex(k, end) && std::abs(f_end) <= 1e-10 * at.dx_dt.squaredNorm();
   };
   for (int k = 0; k < static_cast<int>(edges_.size()); ++k) {
-    double ta = -1, fa = f(k, ta);
-    if ((fa < 0 && shared_vertex(k, -1)) || level_with_free_end(k, -1, fa)) consider(k, -1);
+    const Sample* s = &samples_[k * (kSamples + 1)];
+    auto f_sample = [&](int i) { return (x - s[i].x).dot(s[i].dx_dt); };
+    double ta = -1, fa = f_sample(0);
+    if ((fa < 0 && shared_vertex(k, -1)) || level_with_free_end(k, -1, fa, s[0])) consider(k, -1);
     for (int i = 1; i <= kSamples; ++i) {
-      const double tb = -1 + 2.0 * i / kSamples, fb = f(k, tb);
+      const double tb = -1 + 2.0 * i / kSamples, fb = f_sample(i);
       if (fa > 0 && fb <= 0) {
         const double t = pegasus_root([&](double r) { return f(k, r); }, ta, tb, fa, fb,
-                                      1e-15 * (1 + bp.dx_dt.squaredNorm()));
+                                      1e-15 * (1 + s[i].dx_dt.squaredNorm()));
         if (std::abs(t) < 1 || shared_vertex(k, t)) consider(k, t);
       }
       ta = tb;
       fa = fb;
     }
-    if ((fa > 0 && shared_vertex(k, 1)) || level_with_free_end(k, 1, fa)) consider(k, 1);
+    if ((fa > 0 && shared_vertex(k, 1)) || level_with_free_end(k, 1, fa, s[kSamples])) consider(k, 1);
   }
   return found;
 }

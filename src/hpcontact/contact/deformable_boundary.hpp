@@ -33,8 +33,9 @@ public:
   DeformableBoundary(const mesh::Mesh& mesh, const fem::DofMap& dofs,
                      const std::vector<mesh::ElementMap>& maps, const std::vector<int>& edges);
 
-  /// The body's dofs (dof = 2·mode + component); kept by copy.
-  void set_displacement(const Eigen::VectorXd& u) const { u_ = u; }
+  /// The body's dofs (dof = 2·mode + component); kept by copy. The deformed boundary is sampled
+  /// here once (the points project() brackets its minima between), not at every projection.
+  void set_displacement(const Eigen::VectorXd& u) const;
 
   /// The closest point of the deformed boundary to x (a local minimum of the distance with its
   /// foot inside an edge, or on a node shared by two edges); false if there is none.
@@ -81,6 +82,12 @@ private:
   const std::vector<mesh::ElementMap>& maps_;
   std::vector<Edge> edges_;
   mutable Eigen::VectorXd u_;
+  /// Per edge, the deformed position and tangent at its bracketing samples (set_displacement).
+  struct Sample {
+    Vec2 x, dx_dt;
+  };
+  mutable std::vector<Sample> samples_;
+  void sample() const;
   mutable Eigen::VectorXd N_, dxi_, deta_;  ///< scratch of evaluate()
   Vec2 tangent_at(int k, double t) const;
 };
