@@ -2,6 +2,9 @@
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -305,6 +308,14 @@ int slurm_study_command(const std::string& file, std::string out_dir,
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef __GLIBC__
+  // Each Newton iteration builds and frees the same large buffers (triplets, the multiplier
+  // system's dense blocks): keep freed memory for the next one instead of returning it to the
+  // system and faulting it in again (the two bars with friction: system time 0.22 s -> 0.04 s,
+  // wall -25 %; a few MiB more at the peak). Blocks above 32 MiB still go back at once.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+#endif
   CLI::App app{"hpcontact: 2D contact problems with high-order finite elements"};
   app.set_version_flag("--version", std::string("hpcontact ") + HPC_VERSION);
   bool help_input = false;
