@@ -65,6 +65,34 @@ def test_the_load_path_matters(hpcontact, tmp_path):
     assert s["contact"]["resultant"][0] == pytest.approx(0, abs=1e-9)
 
 
+def test_slip_is_the_path_total(hpcontact, tmp_path):
+    """contact.csv's `slip` of exact friction: the nodes' slips of every step added up, against
+    the homogeneous sliding state. The shear patch block is pressed (p = 10), then its top is
+    pushed to u = 0.006 with its sides carrying the shear mu p = 3 (the base sticks, on the
+    cone), then on to u = 0.01 in three steps with the shear held: the block slides, sheared by
+    gamma = 3 / G = 0.006, so its base slid 0.004 along the plane's tangent (+x) at every node,
+    0.004 / 3 in the last step (`tangential_gap`)."""
+    text = open(PATCH).read()
+    for old, new in (("ux: 0.004", "ux: 0.01"), ("traction: [0, -2]", "traction: [0, -3]"),
+                     ("traction: [0, 2]", "traction: [0, 3]"),
+                     ("    - {displacements: 1, loads: 1, steps: 2}",
+                      "    - {displacements_x: 0.6, displacements_y: 1, loads: 1, steps: 1}\n"
+                      "    - {displacements: 1, loads: 1, steps: 3}")):
+        assert text.count(old) == 1, old
+        text = text.replace(old, new)
+    case = tmp_path / "slide.yaml"
+    case.write_text(text)
+    run(hpcontact, str(case), tmp_path / "slide")
+    points = rows(tmp_path / "slide" / "contact.csv")
+    assert len(points) >= 7
+    for p in points:
+        assert p["state"] == "slip" and float(p["tangent_x"]) == 1
+        assert float(p["pressure"]) == pytest.approx(10, rel=1e-9)
+        assert abs(float(p["tangential_traction"])) == pytest.approx(3, rel=1e-9)
+        assert float(p["slip"]) == pytest.approx(0.004, rel=1e-9)
+        assert float(p["tangential_gap"]) == pytest.approx(0.004 / 3, rel=1e-9)
+
+
 def force_controlled(tmp_path):
     """The press-push block under force control: its top's displacement scaled to P = 20."""
     case = tmp_path / "force.yaml"

@@ -365,7 +365,7 @@ std::vector<int> other_point_edges(const ContactPair& pair) {
 
 ContactResult contact_result(const Discretization& d, const ContactPair& pair,
                              const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers,
-                             const Eigen::VectorXd* step_slips) {
+                             const Eigen::VectorXd* step_slips, const Eigen::VectorXd* total_slips) {
   const Body& body = d.bodies[pair.body];
   ContactResult res;
   const SideColumns own_side{res.X, res.s, res.pressure, res.pressure_from_stress, res.minus_sigma_nn,
@@ -395,6 +395,7 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       n.pressure = (*multipliers)(j);
       if (friction) n.tangential = (*multipliers)(c.size() + j);
       if (slips) n.step_slip = (*slips)(j);
+      if (friction && total_slips && total_slips->size() == c.size()) n.slip = (*total_slips)(j);
       n.gap = !s.found[j]           ? std::numeric_limits<double>::infinity()
               : c.weight(j) != 0.0 ? s.G(j) / c.weight(j)
               : c.rule == ConstraintRule::collocation ? s.points[j].gap  // the node's own point
@@ -419,7 +420,8 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       if (friction) {
         if (s.d_resultant_t[j].norm() > 0) ps.tau = -s.d_resultant_t[j].normalized();
         ps.t_t = n.tangential;
-        if (n.active) ps.g_t = n.step_slip;  // an open node has no slip
+        if (n.active) ps.g_t = n.step_slip;  // an open node has no slip this step
+        ps.slip = n.slip;                    // but keeps what it slipped before it opened
         ps.traction -= n.tangential * ps.tau;
         if (n.active)
           ps.stick_slip = c.friction.kind == contact::FrictionLaw::Kind::coulomb &&
@@ -537,8 +539,8 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
 
 ContactResult evaluate_contact(const Discretization& d, const ContactPair& pair,
                                const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers,
-                               const Eigen::VectorXd* step_slips) {
-  return contact_result(d, pair, u, multipliers, step_slips);
+                               const Eigen::VectorXd* step_slips, const Eigen::VectorXd* total_slips) {
+  return contact_result(d, pair, u, multipliers, step_slips, total_slips);
 }
 
 BoundaryPressureProbe::BoundaryPressureProbe(const Discretization& d, const ContactPair& pair,

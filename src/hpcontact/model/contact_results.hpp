@@ -88,6 +88,8 @@ struct ContactResult {
     /// With exact Coulomb friction and the step's slips given: the weighted slip of the last
     /// load step Ĝ_T,j / W_j along the node's tangent (0 where it sticks).
     double step_slip = 0;
+    /// With exact friction and the path's slips given: the slips of all steps added up.
+    double slip = 0;
     bool active = false;  ///< λ_j > 0
   };
   std::vector<Node> nodes;
@@ -143,9 +145,12 @@ private:
 /// its points' states, pressures from the stresses, resultant, Γ*, half width.
 /// `step_slips`: with exact Coulomb friction, the nodes' slips of the last step
 /// (ContactSystem::step_slips), which locate the stick–slip points; without them there are none.
+/// `total_slips`: with exact friction, the nodes' slips over the whole path
+/// (ContactSystem::total_slips), the points' `slip`; without them it is 0.
 ContactResult evaluate_contact(const Discretization& d, const ContactPair& pair,
                                const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers = nullptr,
-                               const Eigen::VectorXd* step_slips = nullptr);
+                               const Eigen::VectorXd* step_slips = nullptr,
+                               const Eigen::VectorXd* total_slips = nullptr);
 
 /// The constraints of an exactly enforced pair at u with all its multipliers (normal, then
 /// tangential with friction), the tangential slips measured from the undeformed state.

@@ -82,6 +82,13 @@ void ContactSystem::commit(const Eigen::VectorXd& x) {
   factors_committed_ = displacement_factors(x);
   for (const auto& pair : pairs_)
     if (pair.memory) commit_friction(pair, pair_forces(d_, pair, u, nullptr));
+  // the slip the step just converged made at each node, added to the path's
+  const std::vector<Eigen::VectorXd> step = step_slips(x);
+  total_slips_.resize(step.size());
+  for (size_t k = 0; k < step.size(); ++k) {
+    if (total_slips_[k].size() != step[k].size()) total_slips_[k] = Eigen::VectorXd::Zero(step[k].size());
+    total_slips_[k] += step[k];
+  }
 }
 
 FrictionInputs ContactSystem::friction_inputs(const ContactPair& pair, const Eigen::VectorXd& lambda_t,

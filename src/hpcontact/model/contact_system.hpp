@@ -69,6 +69,10 @@ public:
   /// before the last commit (x the state committed last: the slip its step made); empty for
   /// the other pairs. What locates the stick–slip points (ContactResult::stick_slip).
   std::vector<Eigen::VectorXd> step_slips(const Eigen::VectorXd& x) const;
+  /// Per pair with exact friction, per multiplier node: the slips of every committed step added
+  /// up, signed along the node's tangent (the path's slip: contact.csv `slip`); empty for the
+  /// other pairs.
+  const std::vector<Eigen::VectorXd>& total_slips() const { return total_slips_; }
   /// The load vector on the unknowns (what a unit load factor applies).
   Eigen::VectorXd load_vector() const;
   const Vec2& displacement_factors() const { return factors_; }
@@ -171,6 +175,7 @@ private:
   FrictionInputs friction_inputs(const ContactPair& pair, const Eigen::VectorXd& lambda_t,
                                  const Eigen::VectorXd& u_from, const Vec2& factors_from,
                                  const Vec2& factors) const;
+  std::vector<Eigen::VectorXd> total_slips_;  ///< total_slips()
   Eigen::VectorXd u_committed_;    ///< all dofs at the last converged step (exact friction)
   Vec2 factors_committed_ = Vec2::Zero();  ///< the displacement factors there
   /// The same at the converged step before it: where the last step started (step_slips()).
