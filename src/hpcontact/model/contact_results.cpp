@@ -103,7 +103,8 @@ SideValues side_values(const Body& body, const ContactPair& pair, const contact:
   const Vec2 X = fem::edge_geometry(body.maps[q], le, t, &N, &dS_dt);
   const auto r = fem::edge_reference_point(le, t);
   const auto pv = fem::point_values(body.dofs.element(q), body.maps[q], r[0], r[1]);
-  const auto ps = point_stress(body, q, pv, body.element_coefficients(q, u));
+  const Eigen::VectorXd ue = body.element_coefficients(q, u);
+  const auto ps = point_stress(body, q, pv, ue);
   Mat2 sigma;
   sigma << ps.stress(0), ps.stress(2), ps.stress(2), ps.stress(1);
   SideValues v;
@@ -117,7 +118,21 @@ SideValues side_values(const Body& body, const ContactPair& pair, const contact:
   gap_at(body, contact::RigidPlane(Vec2::Zero(), Vec2(0, 1)), q, le, t, u, &x);
   Vec2 n_o = -N;
   Vec2 normal = Vec2::Zero();
-  if (std::isfinite(obstacle.gap(x, &normal, nullptr)) && normal.norm() > 0) n_o = normal;
+  if (std::isfinite(obstacle.gap(x, &normal, nullptr)) && normal.norm() > 0) {
+    n_o = normal;
+    if (pair.constraints && pair.constraints->mean_normal) {
+      // the direction the pair's pressure acts along: the mean of the other boundary's normal
+      // and this one's deformed normal F⁻ᵀN (F = I + ∇u in the linear theory)
+      Mat2 F = ps.F;
+      if (!body.finite_strain()) {
+        const int n = static_cast<int>(pv.N.size());
+        const auto ux = ue.head(n), uy = ue.tail(n);
+        F << 1 + ux.dot(pv.dN_dx), ux.dot(pv.dN_dy), uy.dot(pv.dN_dx), 1 + uy.dot(pv.dN_dy);
+      }
+      const Vec2 mean = n_o - Vec2(F.inverse().transpose() * N).normalized();
+      if (mean.norm() > 1e-8) n_o = mean.normalized();
+    }
+  }
   // ds/dS along the boundary's unit tangent; where the boundary runs across the obstacle the
   // ratio is capped (no pressure there).
   const double ds_dS = std::abs(pair.coordinate_rate(X, Vec2(N.y(), -N.x())));
