@@ -311,8 +311,8 @@ int main(int argc, char** argv) {
 #ifdef __GLIBC__
   // Each Newton iteration builds and frees the same large buffers (triplets, the multiplier
   // system's dense blocks): keep freed memory for the next one instead of returning it to the
-  // system and faulting it in again (the two bars with friction: system time 0.22 s -> 0.04 s,
-  // wall -25 %; a few MiB more at the peak). Blocks above 32 MiB still go back at once.
+  // system and faulting it in again (examples/two-bars/coulomb.yaml, farm-bench A/B: system time
+  // 0.19 s -> 0.04 s, wall 0.70 s -> 0.55 s). Blocks above 32 MiB still go back at once.
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
 #endif

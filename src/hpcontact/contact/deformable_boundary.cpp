@@ -53,22 +53,20 @@ DeformableBoundary::DeformableBoundary(const mesh::Mesh& mesh, const fem::DofMap
       for (size_t j = 0; j < edges_.size(); ++j)
         if (j != k && (end_vertex[j][0] == end_vertex[k][end] || end_vertex[j][1] == end_vertex[k][end]))
           edges_[k].shared_end[end] = true;
-  sample();
 }
 
-void DeformableBoundary::set_displacement(const Eigen::VectorXd& u) const {
-  u_ = u;
-  sample();
-}
-
-void DeformableBoundary::sample() const {
-  samples_.resize(edges_.size() * (kSamples + 1));
-  BoundaryPoint bp;
-  for (size_t k = 0; k < edges_.size(); ++k)
-    for (int i = 0; i <= kSamples; ++i) {
-      evaluate(static_cast<int>(k), -1 + 2.0 * i / kSamples, bp);
-      samples_[k * (kSamples + 1) + i] = {bp.x, bp.dx_dt};
-    }
+const DeformableBoundary::Sample* DeformableBoundary::samples_of(int k) const {
+  if (!sampled_) {
+    samples_.resize(edges_.size() * (kSamples + 1));
+    BoundaryPoint bp;
+    for (size_t e = 0; e < edges_.size(); ++e)
+      for (int i = 0; i <= kSamples; ++i) {
+        evaluate(static_cast<int>(e), -1 + 2.0 * i / kSamples, bp);
+        samples_[e * (kSamples + 1) + i] = {bp.x, bp.dx_dt};
+      }
+    sampled_ = true;
+  }
+  return &samples_[k * (kSamples + 1)];
 }
 
 Vec2 DeformableBoundary::tangent_at(int k, double t) const {
@@ -146,7 +144,7 @@ std::vector<DeformableBoundary::Vertex> DeformableBoundary::vertices() const {
 std::vector<double> DeformableBoundary::segments(int k, const DeformableBoundary& master) const {
   std::vector<double> ends{-1.0, 1.0};
   BoundaryPoint bp;
-  const Sample* s = &samples_[k * (kSamples + 1)];
+  const Sample* s = samples_of(k);
   const double length = (s[kSamples].x - s[0].x).norm();
   for (const Vertex& v : master.vertices()) {
     // f(t) = (x(t) − x_v)·τ_v changes sign where the edge passes the normal through the vertex
@@ -209,7 +207,7 @@ bool DeformableBoundary::project(const Vec2& x, BoundaryPoint& foot) const {
     return !shared_vertex(k, end) && std::abs(f_end) <= 1e-10 * at.dx_dt.squaredNorm();
   };
   for (int k = 0; k < static_cast<int>(edges_.size()); ++k) {
-    const Sample* s = &samples_[k * (kSamples + 1)];
+    const Sample* s = samples_of(k);
     auto f_sample = [&](int i) { return (x - s[i].x).dot(s[i].dx_dt); };
     double ta = -1, fa = f_sample(0);
     if ((fa < 0 && shared_vertex(k, -1)) || level_with_free_end(k, -1, fa, s[0])) consider(k, -1);

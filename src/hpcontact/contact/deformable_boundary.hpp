@@ -33,9 +33,13 @@ public:
   DeformableBoundary(const mesh::Mesh& mesh, const fem::DofMap& dofs,
                      const std::vector<mesh::ElementMap>& maps, const std::vector<int>& edges);
 
-  /// The body's dofs (dof = 2·mode + component); kept by copy. The deformed boundary is sampled
-  /// here once (the points project() brackets its minima between), not at every projection.
-  void set_displacement(const Eigen::VectorXd& u) const;
+  /// The body's dofs (dof = 2·mode + component); kept by copy. The deformed boundary is then
+  /// sampled once, at the first projection or segmentation (the points they bracket between),
+  /// not at every one.
+  void set_displacement(const Eigen::VectorXd& u) const {
+    u_ = u;
+    sampled_ = false;
+  }
 
   /// The closest point of the deformed boundary to x (a local minimum of the distance with its
   /// foot inside an edge, or on a node shared by two edges); false if there is none.
@@ -82,12 +86,15 @@ private:
   const std::vector<mesh::ElementMap>& maps_;
   std::vector<Edge> edges_;
   mutable Eigen::VectorXd u_;
-  /// Per edge, the deformed position and tangent at its bracketing samples (set_displacement).
+  /// Per edge, the deformed position and tangent at its bracketing samples, for the current
+  /// displacement once sampled_.
   struct Sample {
     Vec2 x, dx_dt;
   };
   mutable std::vector<Sample> samples_;
-  void sample() const;
+  mutable bool sampled_ = false;
+  /// The samples of edge k (sampling the boundary first if the displacement changed).
+  const Sample* samples_of(int k) const;
   mutable Eigen::VectorXd N_, dxi_, deta_;  ///< scratch of evaluate()
   Vec2 tangent_at(int k, double t) const;
 };

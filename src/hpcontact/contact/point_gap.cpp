@@ -8,7 +8,7 @@
 namespace hpcontact::contact {
 
 PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const Eigen::VectorXd& u,
-                         int offset, bool second) {
+                         int offset, bool second, bool turning) {
   PointGap pg;
   const int m = static_cast<int>(cp.modes.size());
   Vec2 ux = Vec2::Zero();
@@ -33,6 +33,8 @@ PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const
     for (int a = 0; a < m; ++a)
       for (int b = 0; b < m; ++b)
         pg.d2g.block<2, 2>(2 * a, 2 * b) = cp.N(a) * cp.N(b) * dn;
+  }
+  if (second && turning) {
     // τ = Q n(x): ∂τ/∂u = Q (∂n/∂x) ∂x/∂u; dt_i = N_k τ_c
     const Mat2 Qdn = tangent_rotation() * dn;
     pg.dtau.resize(2, 2 * m);
@@ -46,7 +48,7 @@ PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const
 
 PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
                             const DeformableBoundary& master, int offset_s, int offset_m, bool second,
-                            const DeformableBoundary* own) {
+                            const DeformableBoundary* own, bool turning) {
   PointGap pg;
   const int ms = static_cast<int>(cp.modes.size());
   pg.x = cp.X;
@@ -96,7 +98,7 @@ PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
     const Eigen::MatrixXd M =
         -(Dn * H.transpose() / cc + Gt * Dn.transpose() / a + kappa * Gt * H.transpose() / (a * cc));
     pg.d2g = 0.5 * (M + M.transpose());
-    if (!own) {
+    if (turning && !own) {
       // The foot slides, δξ = H·δu / cc, and the tangent x_m' turns with it and with the other
       // body's modes: n·δx_m' = W·δu, δn = −x_m' (W·δu) / a, δτ = Q δn. dt_i = ±N_k(ξ) τ_c
       // changes with τ and, for the other body's modes, with N_k(ξ).

@@ -32,7 +32,7 @@ struct PointGap {
   /// tangential relative displacement of the point per unit dof (friction).
   Eigen::VectorXd dt;
   Eigen::MatrixXd d2g;         ///< ∂²g/∂u² at dofs (empty unless asked for)
-  /// With d2g (empty with a mean normal): how the tangent turns and the foot slides with u —
+  /// With d2g and `turning` (empty with a mean normal): how the tangent turns and the foot slides with u —
   /// ∂τ/∂u (2 × dofs) and ∂dt/∂u (dofs × dofs, row i the derivative of dt_i), the terms of
   /// friction's tangent that a curved obstacle or another body adds to a plane's.
   Eigen::MatrixXd dtau, ddt;
@@ -40,8 +40,9 @@ struct PointGap {
 
 /// Against a rigid obstacle; u holds the body's dofs (dof = 2·mode + component), `offset` the
 /// global index of its first.
+/// `second`: d2g; `turning` (with second, for friction): dtau and ddt too.
 PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const Eigen::VectorXd& u,
-                         int offset, bool second);
+                         int offset, bool second, bool turning = false);
 
 /// Against the deformed boundary of another body (its displacement set); offsets as above.
 /// With `own` (the point's body's contact boundary, its displacement set, its edges those the
@@ -53,6 +54,6 @@ PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const
 /// tangent is approximate by the angle between the normals), and ∂²g/∂u² is the one-sided one.
 PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
                             const DeformableBoundary& master, int offset_s, int offset_m, bool second,
-                            const DeformableBoundary* own = nullptr);
+                            const DeformableBoundary* own = nullptr, bool turning = false);
 
 }  // namespace hpcontact::contact

@@ -187,11 +187,11 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
     const auto& cp = points[q];
     contact::PointGap pg;
     if (pair.other < 0) {
-      pg = contact::rigid_point_gap(cp, *pair.obstacle, ua, body.dof_offset, second);
+      pg = contact::rigid_point_gap(cp, *pair.obstacle, ua, body.dof_offset, second, tangential);
     } else {
       pg = contact::two_body_point_gap(cp, ua, *pair.other_boundary, body.dof_offset,
                                        d.bodies[pair.other].dof_offset, second,
-                                       c.mean_normal ? pair.boundary.get() : nullptr);
+                                       c.mean_normal ? pair.boundary.get() : nullptr, tangential);
     }
     contact::PointState& ps = s.points[q];
     ps.x = pg.x;

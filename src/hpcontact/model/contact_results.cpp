@@ -13,6 +13,7 @@
 #include "hpcontact/core/roots.hpp"
 #include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/fem/element_values.hpp"
+#include "hpcontact/fem/finite_strain.hpp"
 #include "hpcontact/model/body_stress.hpp"
 #include "hpcontact/model/contact_forces.hpp"
 
@@ -122,13 +123,8 @@ SideValues side_values(const Body& body, const ContactPair& pair, const contact:
     n_o = normal;
     if (pair.constraints && pair.constraints->mean_normal) {
       // the direction the pair's pressure acts along: the mean of the other boundary's normal
-      // and this one's deformed normal F⁻ᵀN (F = I + ∇u in the linear theory)
-      Mat2 F = ps.F;
-      if (!body.finite_strain()) {
-        const int n = static_cast<int>(pv.N.size());
-        const auto ux = ue.head(n), uy = ue.tail(n);
-        F << 1 + ux.dot(pv.dN_dx), ux.dot(pv.dN_dy), uy.dot(pv.dN_dx), 1 + uy.dot(pv.dN_dy);
-      }
+      // and this one's deformed normal F⁻ᵀN (F = I + ∇u, in the linear theory too)
+      const Mat2 F = fem::deformation_gradient(pv, ue);
       const Vec2 mean = n_o - Vec2(F.inverse().transpose() * N).normalized();
       if (mean.norm() > 1e-8) n_o = mean.normalized();
     }
@@ -403,6 +399,8 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
     // the last step's slips, which locate the stick–slip points of a Coulomb pair
     const Eigen::VectorXd* slips =
         friction && step_slips && step_slips->size() == c.size() ? step_slips : nullptr;
+    const Eigen::VectorXd* totals =
+        friction && total_slips && total_slips->size() == c.size() ? total_slips : nullptr;
     for (int j = 0; j < c.size(); ++j) {
       const auto& cp = c.node_points[j];
       ContactResult::Node n;
@@ -410,7 +408,7 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       n.pressure = (*multipliers)(j);
       if (friction) n.tangential = (*multipliers)(c.size() + j);
       if (slips) n.step_slip = (*slips)(j);
-      if (friction && total_slips && total_slips->size() == c.size()) n.slip = (*total_slips)(j);
+      if (totals) n.slip = (*totals)(j);
       n.gap = !s.found[j]           ? std::numeric_limits<double>::infinity()
               : c.weight(j) != 0.0 ? s.G(j) / c.weight(j)
               : c.rule == ConstraintRule::collocation ? s.points[j].gap  // the node's own point

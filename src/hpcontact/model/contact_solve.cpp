@@ -139,12 +139,13 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   // The contact results at the end (converged or not).
   auto finish = [&]() {
     sol.multipliers = system.multipliers(x);
-    const std::vector<Eigen::VectorXd> slips = system.step_slips(x);
-    const std::vector<Eigen::VectorXd>& totals = system.total_slips();
+    // x is the state committed last: its step's slips and the path's were measured then
+    const auto& slips = system.step_slips();
+    const auto& totals = system.total_slips();
     for (size_t k = 0; k < pairs.size(); ++k)
-      sol.contact.push_back(evaluate_contact(
-          d, pairs[k], sol.u, sol.multipliers_of(k), slips[k].size() ? &slips[k] : nullptr,
-          k < totals.size() && totals[k].size() ? &totals[k] : nullptr));
+      sol.contact.push_back(evaluate_contact(d, pairs[k], sol.u, sol.multipliers_of(k),
+                                             slips[k].size() ? &slips[k] : nullptr,
+                                             totals[k].size() ? &totals[k] : nullptr));
   };
   Factors converged;  // the factors of the last converged step
   auto say = [&](const std::string& s) {

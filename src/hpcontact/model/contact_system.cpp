@@ -37,6 +37,8 @@ ContactSystem::ContactSystem(const Discretization& d, const std::vector<ContactP
   K_prescribed_ = op_.K * d_.prescribed;
   u_committed_ = Eigen::VectorXd::Zero(d_.n_dofs);
   u_step_start_ = u_committed_;
+  step_slips_.resize(pairs_.size());
+  total_slips_.resize(pairs_.size());
 }
 
 void ContactSystem::set_factors(const Vec2& displacements, double loads) {
@@ -83,11 +85,11 @@ void ContactSystem::commit(const Eigen::VectorXd& x) {
   for (const auto& pair : pairs_)
     if (pair.memory) commit_friction(pair, pair_forces(d_, pair, u, nullptr));
   // the slip the step just converged made at each node, added to the path's
-  const std::vector<Eigen::VectorXd> step = step_slips(x);
-  total_slips_.resize(step.size());
-  for (size_t k = 0; k < step.size(); ++k) {
-    if (total_slips_[k].size() != step[k].size()) total_slips_[k] = Eigen::VectorXd::Zero(step[k].size());
-    total_slips_[k] += step[k];
+  step_slips_ = measure_step_slips(x);
+  for (size_t k = 0; k < pairs_.size(); ++k) {
+    if (total_slips_[k].size() != step_slips_[k].size())
+      total_slips_[k] = Eigen::VectorXd::Zero(step_slips_[k].size());
+    total_slips_[k] += step_slips_[k];
   }
 }
 
@@ -101,7 +103,7 @@ FrictionInputs ContactSystem::friction_inputs(const ContactPair& pair, const Eig
   return fi;
 }
 
-std::vector<Eigen::VectorXd> ContactSystem::step_slips(const Eigen::VectorXd& x) const {
+std::vector<Eigen::VectorXd> ContactSystem::measure_step_slips(const Eigen::VectorXd& x) const {
   std::vector<Eigen::VectorXd> slips(pairs_.size());
   const Eigen::VectorXd u = full(x);
   const Vec2 factors = displacement_factors(x);

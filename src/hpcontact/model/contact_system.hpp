@@ -62,16 +62,15 @@ public:
   double loads_factor(const Eigen::VectorXd& x) const;
 
   /// After a converged load step at x: the friction histories take its anchors and slips (and
-  /// exact friction measures its slips from x).
+  /// exact friction measures its slips from x), and the step's slips are measured.
   void commit(const Eigen::VectorXd& x);
-  /// Per pair with exact friction, per multiplier node, the weighted slip of the last
-  /// committed step at x: ĝ_T,j = G_T,j / W_j (zero at a passive node), measured from the step
-  /// before the last commit (x the state committed last: the slip its step made); empty for
-  /// the other pairs. What locates the stick–slip points (ContactResult::stick_slip).
-  std::vector<Eigen::VectorXd> step_slips(const Eigen::VectorXd& x) const;
-  /// Per pair with exact friction, per multiplier node: the slips of every committed step added
-  /// up, signed along the node's tangent (the path's slip: contact.csv `slip`); empty for the
-  /// other pairs.
+  /// Per pair with exact friction, per multiplier node, the weighted slip of the last committed
+  /// step: ĝ_T,j = G_T,j / W_j (zero at a passive node), from the state before it to the one
+  /// committed; empty for the other pairs. What locates the stick–slip points
+  /// (ContactResult::stick_slip).
+  const std::vector<Eigen::VectorXd>& step_slips() const { return step_slips_; }
+  /// The same, the slips of every committed step added up, signed along the node's tangent (the
+  /// path's slip: contact.csv `slip`).
   const std::vector<Eigen::VectorXd>& total_slips() const { return total_slips_; }
   /// The load vector on the unknowns (what a unit load factor applies).
   Eigen::VectorXd load_vector() const;
@@ -175,7 +174,9 @@ private:
   FrictionInputs friction_inputs(const ContactPair& pair, const Eigen::VectorXd& lambda_t,
                                  const Eigen::VectorXd& u_from, const Vec2& factors_from,
                                  const Vec2& factors) const;
-  std::vector<Eigen::VectorXd> total_slips_;  ///< total_slips()
+  /// The slips of the step committed last at x, measured from the state before it.
+  std::vector<Eigen::VectorXd> measure_step_slips(const Eigen::VectorXd& x) const;
+  std::vector<Eigen::VectorXd> step_slips_, total_slips_;  ///< step_slips(), total_slips()
   Eigen::VectorXd u_committed_;    ///< all dofs at the last converged step (exact friction)
   Vec2 factors_committed_ = Vec2::Zero();  ///< the displacement factors there
   /// The same at the converged step before it: where the last step started (step_slips()).
