@@ -118,13 +118,17 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         }
         try {
           if (step == 0 && options.resolve_rounds > 0) {
-            const Resolution r = resolve_zones(s, options.resolve_rounds, progress);
+            const Resolution r =
+                resolve_zones(s, options.resolve_rounds, options.stick_slip, progress);
             rec.resolve_rounds = r.rounds;
             rec.resolved_towards = r.towards;
             s = r.solved;
             base = s->spec;
           }
-          ends = adapt_targets(*s, options.stick_slip);
+          // A later step may find fewer ends (a stick–slip point gone on the coarse elements
+          // next to it): the centres stay where they are.
+          ends = step == 0 ? adapt_targets(*s, options.stick_slip)
+                           : zone_ends_of(*s, options.stick_slip);
           if (step == 0)
             for (const auto& n : nearest_movable_nodes(*s, ends))
               centres.push_back({n.track.body(), n.track.node_id(), n.end.X, n.end.kind});
@@ -203,7 +207,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         return out;
       }
       // The next mesh is centred on the zone ends of the better solve.
-      const auto ends_plus = adapt_targets(*enriched, options.stick_slip);
+      const auto ends_plus = zone_ends_of(*enriched, options.stick_slip);
       for (Centre& c : centres)
         if (const ZoneEnd* nearest = nearest_end(ends_plus, c.body, c.kind, c.at)) c.at = nearest->X;
     }

@@ -54,24 +54,39 @@ bool node_near_enough(const NodeForEnd& n) {
   return move <= 0.5 * room;
 }
 
-Resolution resolve_zones(const SolvedPtr& s0, int max_rounds, const model::ProgressFn& progress) {
+Resolution resolve_zones(const SolvedPtr& s0, int max_rounds, bool stick_slip,
+                         const model::ProgressFn& progress) {
   Resolution r;
   r.solved = s0;
   for (int round = 1; round <= max_rounds; ++round) {
     const SolvedPtr s = r.solved;
-    const std::vector<ZoneEnd> ends = zone_ends_of(*s, false);
+    const std::vector<ZoneEnd> ends = zone_ends_of(*s, stick_slip);
     if (ends.empty()) break;  // no zone end (e.g. in contact to the boundary's ends): none to resolve
+    // The ends to refine towards: those whose node is too far, and the stick–slip points no node
+    // serves (the edge they lie in has no movable vertex, e.g. between two corners of the body).
+    std::vector<ZoneEnd> unserved;
     const auto nodes = nearest_movable_nodes(*s, ends);
+    for (const auto& n : nodes)
+      if (!node_near_enough(n)) unserved.push_back(n.end);
+    for (const ZoneEnd& end : ends) {
+      if (end.kind != ZoneEnd::Kind::stick_slip) continue;
+      const bool served = std::any_of(nodes.begin(), nodes.end(), [&](const NodeForEnd& n) {
+        return n.end.body == end.body && n.end.kind == end.kind && n.end.X == end.X;
+      });
+      if (!served) unserved.push_back(end);
+    }
     model::ProblemSpec spec = s->spec;
     const size_t before = r.towards.size();
     std::set<std::pair<int, int>> refined;  // (body, node): once per round
-    for (const auto& n : nodes) {
-      if (node_near_enough(n)) continue;
-      const NearVertex v = nearest_vertex(*s, n.end.body, n.end.X);
-      if (v.node_id < 0 || !refined.insert({n.end.body, v.node_id}).second) continue;
-      const double d = (v.X - n.end.X).norm();
+    for (const ZoneEnd& end : unserved) {
+      const NearVertex v = nearest_vertex(*s, end.body, end.X);
+      if (v.node_id < 0) continue;
+      const double d = (v.X - end.X).norm();
+      // A point on a vertex that cannot move (a corner of the body) is as resolved as it can be.
+      if (d <= 1e-3 * v.edge_length) continue;
+      if (!refined.insert({end.body, v.node_id}).second) continue;
       const double factor = std::clamp(d / v.edge_length, 0.15, 0.5);
-      spec = refine_towards_node(spec, n.end.body, v.node_id, factor);
+      spec = refine_towards_node(spec, end.body, v.node_id, factor);
       r.towards.push_back(v.X);
     }
     if (r.towards.size() == before) break;

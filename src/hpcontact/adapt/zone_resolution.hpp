@@ -24,8 +24,11 @@ bool node_near_enough(const NodeForEnd& n);
 /// Refines `s`'s mesh until every zone end passes node_near_enough: towards the boundary
 /// vertex of the contact edges nearest to each end that does not, with a factor that puts the
 /// new node on the end when it is 15–50 % of the edge away (15 % or 50 % otherwise), and solves
-/// again after each round (starting from the last solution). At most `max_rounds` rounds (none
-/// when the input mesh already serves every end).
-Resolution resolve_zones(const SolvedPtr& s, int max_rounds, const model::ProgressFn& progress);
+/// again after each round (starting from the last solution). With `stick_slip` the stick–slip
+/// points of exact Coulomb pairs are resolved too, also where no node can serve one (its edge
+/// runs between two corners of the body: the refinement towards a corner makes the node). At
+/// most `max_rounds` rounds (none when the input mesh already serves every end).
+Resolution resolve_zones(const SolvedPtr& s, int max_rounds, bool stick_slip,
+                         const model::ProgressFn& progress);
 
 }  // namespace hpcontact::adapt
