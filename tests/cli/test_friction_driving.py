@@ -6,6 +6,7 @@ import csv
 import json
 import os
 
+import numpy as np
 import pytest
 
 DATA = os.path.join(os.path.dirname(__file__), "data")
@@ -91,6 +92,45 @@ def test_slip_is_the_path_total(hpcontact, tmp_path):
         assert abs(float(p["tangential_traction"])) == pytest.approx(3, rel=1e-9)
         assert float(p["slip"]) == pytest.approx(0.004, rel=1e-9)
         assert float(p["tangential_gap"]) == pytest.approx(0.004 / 3, rel=1e-9)
+
+
+def undeformed_at(points, x):
+    """The undeformed X of a body's boundary where it is deformed to x, interpolated between its
+    contact.csv points (the bodies' deformation is nearly affine here)."""
+    points = sorted(points, key=lambda p: float(p["x"]))
+    return float(np.interp(x, [float(p["x"]) for p in points], [float(p["X"]) for p in points]))
+
+
+def test_the_other_bodys_rows_slip_as_the_pair_does(hpcontact, tmp_path):
+    """contact.csv's slips of an exact pair's other body (read at each point's foot between the
+    pair's nodes) against the motion itself: the shear patch block slid by 0.004 along an elastic
+    foundation (tests/cli/data/block-on-foundation-slide.yaml; the foundation ends with the block,
+    so the state is homogeneous only away from the ends: pressure 9.8-10.3). A point slid, over
+    the path, by the distance between the material points of the two bodies that now face each
+    other: slip = X_foundation - X_block (both undeformed) at a common deformed position. Both
+    bodies' rows hold this to 2e-5 (measured 2.2e-6 on the block's, 5.5e-6 on the foundation's,
+    where they were 0), the last of the three equal steps a third of it, both along t_T."""
+    run(hpcontact, os.path.join(DATA, "block-on-foundation-slide.yaml"), tmp_path)
+    points = rows(tmp_path / "contact.csv")
+    block = [p for p in points if p["body"] == "block"]
+    foundation = [p for p in points if p["body"] == "foundation"]
+    assert len(block) == 7 and len(foundation) > 50
+    assert all(p["state"] == "slip" for p in block)
+    lo = max(min(float(p["x"]) for p in side) for side in (block, foundation))
+    hi = min(max(float(p["x"]) for p in side) for side in (block, foundation))
+    checked = 0
+    for own, other, sign in ((block, foundation, 1), (foundation, block, -1)):
+        for p in own:
+            x = float(p["x"])
+            if not lo <= x <= hi:
+                continue
+            slid = sign * (undeformed_at(other, x) - float(p["X"]))
+            assert slid == pytest.approx(0.004, rel=0.05)
+            assert float(p["slip"]) == pytest.approx(slid, abs=2e-5), p
+            assert float(p["tangential_gap"]) == pytest.approx(float(p["slip"]) / 3, rel=1e-2)
+            assert float(p["tangential_gap"]) * float(p["tangential_traction"]) > 0
+            checked += 1
+    assert checked > 50
 
 
 def force_controlled(tmp_path):

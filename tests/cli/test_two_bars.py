@@ -190,3 +190,21 @@ def test_coulomb_hp_traction_without_oscillation(hpcontact, root, tmp_path):
     assert 7.6 < point[0] < 7.9, point
     assert friction["tangential_traction_integral"] == pytest.approx(300, rel=1e-4)
     assert s["adapt"]["history"][0]["resolve_rounds"] >= 1
+
+
+def test_coulomb_hp_step_that_loses_the_point_goes_on(hpcontact, root, tmp_path):
+    """coulomb-hp.yaml with degree 1 at the point (adapt.min_degree=1): on step 1's linear
+    elements every node sticks, so that step has no stick-slip point; the loop keeps its centres
+    and goes on (it stopped with "no Γ*" before), and the later steps find the point again, its
+    slip zone monotone (15 slip nodes at 4 steps, 1143 DOF)."""
+    r = hpcontact("run", os.path.join(root, "examples/two-bars/coulomb-hp.yaml"),
+                  "--out", tmp_path, "-q", "--set", "adapt.min_degree=1")
+    assert r.returncode == 0, r.stderr
+    s = json.load(open(tmp_path / "summary.json"))
+    history = s["adapt"]["history"]
+    assert s["adapt"]["stopped"] == "steps done" and len(history) == 5
+    assert any(not h["gamma_star"] for h in history[1:]), [h["gamma_star"] for h in history]
+    assert history[-1]["gamma_star"]
+    t = [float(r["tangential_traction"]) for r in slip_zone(tmp_path / "contact.csv")]
+    assert len(t) >= 10
+    assert total_variation(t) <= 1.001 * (max(t) - min(t)), t

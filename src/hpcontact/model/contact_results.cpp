@@ -455,7 +455,8 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
     }
     if (pair.other >= 0) {
       // The other body's points: their gap against this body's deformed boundary and the
-      // multipliers at their feet on it (the reaction, per unit length of this body's boundary).
+      // multipliers and slips at their feet on it (the reaction, per unit length of this body's
+      // boundary).
       // Their tangent is friction_tangent of this body's normal, opposite to the pair's: the
       // other body receives +λ_T times the pair's tangent, i.e. −λ_T τ along its own, so t_T is
       // λ_T on both sides.
@@ -476,6 +477,10 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
           ps.normal = foot.normal;
           ps.tau = contact::friction_tangent(foot.normal);
           ps.t_t = c.nodes.interpolate(foot.edge, foot.t, lambda_t);
+          // The slips are relative: the other body's along its tangent (−τ) are this body's
+          // along τ, read at the foot as the multipliers are.
+          if (slips) ps.g_t = c.nodes.interpolate(foot.edge, foot.t, *slips);
+          if (totals) ps.slip = c.nodes.interpolate(foot.edge, foot.t, *totals);
           ps.traction = ps.pressure * foot.normal - ps.t_t * ps.tau;
           const auto& edge = body.mesh.edge(pair.edges[foot.edge]);
           Vec2 N;
