@@ -132,14 +132,25 @@ void PressureComparison::check_reference_force(double force) const {
               "pressure.csv of hpcontact before force per unit length along the obstacle)");
 }
 
-PressureComparison::ClosedForms PressureComparison::closed_forms(
+const PressureComparison::ClosedForms& PressureComparison::closed_forms(
     const model::ContactPair& pair, const model::ContactResult& result) const {
   const double F = comparison_force(in_, pair, result);
+  if (closed_forms_ && closed_forms_->force == F) return *closed_forms_;
   if (!in_.force) check_reference_force(F);
+  shtayerman_at_.clear();
   if (in_.axisymmetric)
-    return {F, analytic::Hertz::spheres(in_.effective_radius, F, in_.effective_modulus), std::nullopt};
-  return {F, analytic::Hertz::pair(in_.effective_radius, F, in_.effective_modulus),
-          analytic::Shtayerman::two_circles(in_.radius, in_.other_radius, F, in_.effective_modulus)};
+    closed_forms_.emplace(ClosedForms{
+        F, analytic::Hertz::spheres(in_.effective_radius, F, in_.effective_modulus), std::nullopt});
+  else
+    closed_forms_.emplace(ClosedForms{
+        F, analytic::Hertz::pair(in_.effective_radius, F, in_.effective_modulus),
+        analytic::Shtayerman::two_circles(in_.radius, in_.other_radius, F, in_.effective_modulus)});
+  return *closed_forms_;
+}
+
+double PressureComparison::shtayerman_pressure(double x) const {
+  if (const auto it = shtayerman_at_.find(x); it != shtayerman_at_.end()) return it->second;
+  return shtayerman_at_[x] = closed_forms_->shtayerman->pressure(x);
 }
 
 nlohmann::json PressureComparison::measure(const model::Discretization& d,
@@ -147,7 +158,7 @@ nlohmann::json PressureComparison::measure(const model::Discretization& d,
                                            const model::ContactResult& result,
                                            const Eigen::VectorXd& u, const std::string& csv_path,
                                            const Eigen::VectorXd* multipliers) const {
-  const ClosedForms cf = closed_forms(pair, result);
+  const ClosedForms& cf = closed_forms(pair, result);
   const auto& hertz = cf.hertz;
   const auto& shtayerman = cf.shtayerman;
   // Hertz and the reference are integrated on the same points: locate each point only once.
@@ -160,7 +171,7 @@ nlohmann::json PressureComparison::measure(const model::Discretization& d,
   };
   const double b = hertz.half_width(), p0 = hertz.peak_pressure();
   const std::function<double(double)> hertz_p = [&](double x) { return hertz.pressure(x); };
-  const std::function<double(double)> shtayerman_p = [&](double x) { return shtayerman->pressure(x); };
+  const std::function<double(double)> shtayerman_p = [&](double x) { return shtayerman_pressure(x); };
   // The errors of one FE pressure (from the stresses or the method's), keys of summary.json.
   auto errors = [&](const std::function<double(double)>& fe) {
     nlohmann::json e;
@@ -224,7 +235,7 @@ PressureCurve PressureComparison::curve(const model::Discretization& d,
                                         const model::ContactResult& result,
                                         const Eigen::VectorXd& u,
                                         const Eigen::VectorXd* multipliers) const {
-  const ClosedForms cf = closed_forms(pair, result);
+  const ClosedForms& cf = closed_forms(pair, result);
   const model::BoundaryPressureProbe probe(d, pair, u, multipliers);
   const double b = cf.hertz.half_width();
   PressureCurve c;
@@ -240,7 +251,7 @@ PressureCurve PressureComparison::curve(const model::Discretization& d,
     c.traction.push_back(bp ? bp->traction : 0.0);
     c.minus_sigma_nn.push_back(bp ? bp->minus_sigma_nn : 0.0);
     c.hertz.push_back(cf.hertz.pressure(x));
-    c.shtayerman.push_back(cf.shtayerman ? cf.shtayerman->pressure(x)
+    c.shtayerman.push_back(cf.shtayerman ? shtayerman_pressure(x)
                                          : std::numeric_limits<double>::quiet_NaN());
     if (reference_) c.reference.push_back((*reference_)(x));
   }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <optional>
+#include <unordered_map>
 #include <string>
 #include <vector>
 
@@ -92,12 +93,21 @@ private:
     /// Shtayerman's exact circle: plane models only (none for spheres).
     std::optional<analytic::Shtayerman> shtayerman;
   };
-  ClosedForms closed_forms(const model::ContactPair& pair, const model::ContactResult& result) const;
+  /// The closed forms for the pair's force, built once per force (an adaptive loop under force
+  /// control compares every step at the same F).
+  const ClosedForms& closed_forms(const model::ContactPair& pair,
+                                  const model::ContactResult& result) const;
+  /// Shtayerman's pressure at x (a quadrature per point), kept for the force of closed_forms():
+  /// the error integrals of every step evaluate it at the same points.
+  double shtayerman_pressure(double x) const;
   void check_reference_force(double force) const;
 
   HertzInputs in_;
   std::optional<ReferenceCurve> reference_;
   std::string reference_name_;
+  // Caches of closed_forms() and shtayerman_pressure(): a comparison is used by one thread.
+  mutable std::optional<ClosedForms> closed_forms_;
+  mutable std::unordered_map<double, double> shtayerman_at_;
 };
 
 /// Per pair of the problem, its comparison (nullopt without a compare section), every
