@@ -64,26 +64,55 @@ def read_nodes(folder, body):
         rows = [r for r in csv.DictReader(f) if r["pair"] == "0" and r["body"] == body]
     rows.sort(key=lambda r: float(r["s"]))
     col = lambda k: np.array([float(r[k]) for r in rows])  # noqa: E731
-    return {"s": col("s"), "x": col("x"), "y": col("y"), "pressure": col("pressure"), "traction": col("traction"),
+    return {"s": col("s"), "X": np.column_stack([col("X"), col("Y")]), "x": col("x"), "y": col("y"),
+            "pressure": col("pressure"), "traction": col("traction"),
             "t_t": col("tangential_traction"), "state": np.array([r["state"] for r in rows])}
 
 
-def edge_weights(s, degree):
-    """Quadrature weights of the nodes along s: the contact edges' Gauss–Lobatto nodes come in
-    blocks of degree + 1 sharing their ends (len(s) = k degree + 1), and each block's weights
-    integrate the polynomial through its nodes in s exactly."""
-    n = len(s) - 1
+def block_starts(n, degree, vertex_rows=None):
+    """The first node of each contact edge's block of Gauss–Lobatto nodes, and the end: blocks of
+    degree + 1 nodes sharing their ends, or, on an adapted mesh whose edges have degrees of
+    their own, blocks between the rows that are the edges' vertices."""
+    if vertex_rows is not None:
+        return sorted(set(vertex_rows) | {0, n})
     if n % degree:
         raise SystemExit(f"{n + 1} contact nodes are not blocks of p + 1 = {degree + 1} sharing their ends")
+    return list(range(0, n + 1, degree))
+
+
+def edge_weights(s, degree, vertex_rows=None):
+    """Quadrature weights of the nodes along s: the contact edges' Gauss–Lobatto nodes come in
+    blocks sharing their ends (block_starts), and each block's weights integrate the
+    polynomial through its nodes in s exactly."""
+    starts = block_starts(len(s) - 1, degree, vertex_rows)
     w = np.zeros_like(s)
-    for k in range(0, n, degree):
-        x = s[k:k + degree + 1]
+    for k0, k1 in zip(starts, starts[1:]):
+        x = s[k0:k1 + 1]
         m, h = 0.5 * (x[0] + x[-1]), 0.5 * (x[-1] - x[0])
         t = (x - m) / h
-        V = np.vander(t, degree + 1, increasing=True).T   # V[j, i] = t_i^j
-        moments = np.array([(1 - (-1) ** (j + 1)) / (j + 1) for j in range(degree + 1)]) * h
-        w[k:k + degree + 1] += np.linalg.solve(V, moments)
+        V = np.vander(t, len(x), increasing=True).T   # V[j, i] = t_i^j
+        moments = np.array([(1 - (-1) ** (j + 1)) / (j + 1) for j in range(len(x))]) * h
+        w[k0:k1 + 1] += np.linalg.solve(V, moments)
     return w
+
+
+def vertex_rows(folder, body, X):
+    """The rows (of the body's nodes sorted along s, undeformed positions X) that are vertices of
+    its contact edges on the adapted mesh of an rp or hp run (its mesh.yaml); None without one."""
+    path = os.path.join(folder, "mesh.yaml")
+    if not os.path.exists(path):
+        return None
+    mesh = yaml.safe_load(open(path))[body]
+    vertices = {n for edge in mesh["edge_sets"]["contact"] for n in edge}
+    scale = max(1.0, float(np.max(np.abs(X))))
+    rows = []
+    for v in vertices:
+        d = np.hypot(X[:, 0] - mesh["nodes"][v][0], X[:, 1] - mesh["nodes"][v][1])
+        k = int(np.argmin(d))
+        if d[k] > 1e-9 * scale:
+            raise SystemExit(f"{path}: contact vertex {v} of '{body}' is not a node of contact.csv")
+        rows.append(k)
+    return rows
 
 
 def total_variation(v):
@@ -104,7 +133,7 @@ def measure(folder):
     # taken positive in the direction of its resultant (the multiplier's sign follows the
     # tangent's orientation)
     q = np.sign(np.sum(n["t_t"])) * n["t_t"] * ratio
-    w = edge_weights(s, degree)
+    w = edge_weights(s, degree, vertex_rows(folder, body, n["X"]))
     rel = lambda fe, ex: float(np.sqrt(np.sum(w * (fe - ex) ** 2) / np.sum(w * ex ** 2)))  # noqa: E731
     out = {"P": P, "Q": Q, "mu": mu, "R_star": R_star, "E_star": E_star, "a": a, "c": c,
            "c_over_a": c / a, "b_over_R": a / (2 * R_star), "dofs": summary["dofs"],

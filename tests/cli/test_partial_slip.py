@@ -8,6 +8,7 @@ gives 9 % and moves the stick zone by a node."""
 import json
 import os
 
+import numpy as np
 import pytest
 import yaml
 
@@ -88,3 +89,36 @@ def test_stick_slip_points_located_between_their_nodes(run):
     feet = sorted(friction["stick_slip_points_other"])
     for p, f in zip(points, feet):
         assert abs(p[0] - f[0]) < 1e-2 * m["a"]
+
+
+def gauss_lobatto(p, a, b):
+    """The p + 1 Gauss-Lobatto points of [a, b] (the ends and the roots of P_p')."""
+    inner = np.polynomial.legendre.Legendre.basis(p).deriv().roots()
+    t = np.concatenate([[-1.0], np.sort(inner.real), [1.0]])
+    return a + 0.5 * (t + 1) * (b - a)
+
+
+def test_node_weights_on_edges_of_different_degrees():
+    """partial_slip_compare's quadrature on an adapted mesh (hp: every contact edge its own
+    degree): blocks between the edges' vertex rows, each integrating the polynomial through its
+    nodes exactly. Three edges of degrees 2, 5 and 3: x^k for k up to 2 over the whole line
+    (exact on every block), and a degree-5 bump on the degree-5 edge, zero on the others (wrong
+    with uniform blocks of 3); uniform blocks of p + 1 = 4 refuse the same nodes."""
+    edges = [(-1.0, -0.2, 2), (-0.2, 0.3, 5), (0.3, 1.0, 3)]
+    s, vertices = [], [0]
+    for a, b, p in edges:
+        pts = gauss_lobatto(p, a, b)
+        s.extend(pts if not s else pts[1:])   # neighbouring edges share their vertex
+        vertices.append(len(s) - 1)
+    s = np.array(s)
+    assert vertices == [0, 2, 7, 10] and s[7] == pytest.approx(0.3)
+    w = compare.edge_weights(s, 2, vertices)
+    for k in range(3):
+        assert np.sum(w * s ** k) == pytest.approx((1 - (-1) ** (k + 1)) / (k + 1), abs=1e-12)
+    # a degree-5 bump on the middle edge, zero on the others: exact only with the right blocks
+    bump = np.where((s >= -0.2) & (s <= 0.3), (s + 0.2) * (s - 0.3) * s ** 3, 0.0)
+    exact = np.polynomial.Polynomial([0, 0, 0, -0.06, -0.1, 1]).integ()
+    assert np.sum(w * bump) == pytest.approx(exact(0.3) - exact(-0.2), rel=1e-12)
+    assert np.sum(compare.edge_weights(s, 2) * bump) != pytest.approx(exact(0.3) - exact(-0.2), rel=1e-3)
+    with pytest.raises(SystemExit):
+        compare.edge_weights(s, 3)
