@@ -7,6 +7,7 @@ import math
 import os
 
 import pytest
+import yaml
 
 HERTZ = "examples/hertz"
 
@@ -105,6 +106,24 @@ def test_zones_far_smaller_than_the_start_mesh_reach_the_tolerance(hpcontact, ro
     assert a["history"][0]["resolve_rounds"] >= 1
     db, dp, e = against_hertz(f"F/{scale}", s)
     assert abs(db) < 1e-3 and abs(dp) < 5e-3 and e < 0.5
+
+
+def test_far_elements_get_the_outermost_layers_degree(hpcontact, root, tmp_path):
+    """Rising degree: min_degree at Γ*, one more per refinement layer, and every element beyond
+    the layers min_degree + step + 1 (docs/input.md, adapt.degree). With the load divided by
+    10000 the zone resolution leaves rings of elements around Γ* before the grading starts;
+    counted as layers they rose to degree 8 at step 4 (1276 DOF); now at most 6, and the same
+    accuracy with 1053 DOF."""
+    out = tmp_path / "small"
+    run(hpcontact, root, out, "adapt.tolerance=1e-3", "solver.target_resultant.value=3.5",
+        "contact[0].compare={radius: 10}", "output.vtu=false")
+    s = summary(out)
+    step = s["adapt"]["result_step"]
+    mesh = yaml.safe_load((out / "mesh.yaml").read_text())
+    degrees = [p for body in mesh.values() for p, _ in body["degrees"].values()]
+    assert s["adapt"]["history"][0]["resolve_rounds"] >= 1 and step >= 2
+    assert max(degrees) == 1 + step + 1, sorted(set(degrees))
+    assert min(degrees) == 1
 
 
 def test_the_full_load_needs_no_zone_resolution(to_1e4):

@@ -1,6 +1,7 @@
 // The hp loop: solve -> Γ* -> centre node at Γ* -> k geometric layers with rising degree -> solve.
 #include "hpcontact/adapt/hp.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -37,8 +38,10 @@ model::ProblemSpec build_mesh(const model::ProblemSpec& input, const std::vector
       for (const Centre& c : centres)
         if (c.body == static_cast<int>(b)) nodes.push_back(c.node);
       if (nodes.empty()) continue;
+      // One more per layer of the refinement; the input's elements beyond them (a mesh with
+      // many rings of elements around Γ*) all get the degree of the outermost layer.
       for (const auto& [id, layer] : element_layers(spec.bodies[b], nodes)) {
-        const int p = options.min_degree + std::max(layer, 0);
+        const int p = options.min_degree + std::clamp(layer, 0, steps + 1);
         spec.bodies[b].element_degrees[id] = {p, p};
       }
     }
