@@ -561,6 +561,15 @@ ContactResult evaluate_contact(const Discretization& d, const ContactPair& pair,
   return contact_result(d, pair, u, multipliers, step_slips, total_slips);
 }
 
+std::vector<double> BoundaryPressureProbe::edge_ends() const {
+  std::vector<double> ends;
+  for (const auto& c : coord_) {
+    ends.push_back(c.front());
+    ends.push_back(c.back());
+  }
+  return ends;
+}
+
 BoundaryPressureProbe::BoundaryPressureProbe(const Discretization& d, const ContactPair& pair,
                                              const Eigen::VectorXd& u,
                                              const Eigen::VectorXd* multipliers)

@@ -130,6 +130,8 @@ public:
   /// λ_h or eps_N <-g_N>, per unit undeformed length; x, X (may be null) the point deformed and
   /// undeformed.
   double traction(int k, double t, Vec2* x = nullptr, Vec2* X = nullptr) const;
+  /// The coordinates s of the contact edges' ends, where the pressures are not smooth.
+  std::vector<double> edge_ends() const;
 
 private:
   static constexpr int kSamples = 32;  ///< sub-intervals per edge

@@ -1,6 +1,7 @@
 // Composite Gauss quadrature of the pressure error integrals.
 #include "hpcontact/post/pressure_error.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "hpcontact/basis/quadrature.hpp"
@@ -8,11 +9,13 @@
 namespace hpcontact::post {
 
 PressureErrors pressure_errors(const std::function<double(double)>& p,
-                               const std::function<double(double)>& p_ref, double b_ref, double p0) {
-  const auto& rule = basis::gauss_legendre(20);
+                               const std::function<double(double)>& p_ref, double b_ref, double p0,
+                               const std::vector<double>& breaks, int points) {
+  const auto& rule = basis::gauss_legendre(points);
+  std::vector<double> cuts(breaks);
+  std::sort(cuts.begin(), cuts.end());
   double diff2 = 0, ref2 = 0, ref1 = 0;
-  // [0, b_ref] in 200 pieces graded towards b_ref (the square-root end), [b_ref, 1.5 b_ref] in 50.
-  auto integrate = [&](double a, double b) {
+  auto gauss = [&](double a, double b) {
     for (int i = 0; i < rule.size(); ++i) {
       const double x = 0.5 * (a + b) + 0.5 * (b - a) * rule.points[i];
       const double w = 0.5 * (b - a) * rule.weights[i];
@@ -22,6 +25,16 @@ PressureErrors pressure_errors(const std::function<double(double)>& p,
       ref1 += w * pr;
     }
   };
+  // one piece [a, b], split at the cuts strictly inside it
+  auto integrate = [&](double a, double b) {
+    double from = a;
+    for (auto it = std::upper_bound(cuts.begin(), cuts.end(), a); it != cuts.end() && *it < b; ++it) {
+      gauss(from, *it);
+      from = *it;
+    }
+    gauss(from, b);
+  };
+  // [0, b_ref] in 200 pieces graded towards b_ref (the square-root end), [b_ref, 1.5 b_ref] in 50.
   const int n1 = 200, n2 = 50;
   for (int k = 0; k < n1; ++k) {
     // x = b (1 - (1 - s)²): pieces shrink quadratically towards b
