@@ -174,16 +174,16 @@ nlohmann::json PressureComparison::measure(const model::Discretization& d,
   const std::function<double(double)> shtayerman_p = [&](double x) { return shtayerman_pressure(x); };
   // The errors of one FE pressure (from the stresses or the method's), keys of summary.json.
   // The integrals' pieces end where the functions are not smooth: at the contact edges' ends
-  // (the FE pressure's kinks) and, against the reference, at its samples too; smooth pieces
-  // need few points.
+  // (the FE pressure's kinks) and at the reference's samples; smooth pieces need few points.
+  // Hertz's integrals take the reference's breaks too, so that both stay on the same points.
   std::vector<double> fe_breaks;
   for (const double s : probe.edge_ends()) fe_breaks.push_back(in_.side * s);
-  std::vector<double> reference_breaks = fe_breaks;
-  if (reference_) reference_breaks.insert(reference_breaks.end(), reference_->x.begin(), reference_->x.end());
+  std::vector<double> breaks = fe_breaks;
+  if (reference_) breaks.insert(breaks.end(), reference_->x.begin(), reference_->x.end());
   constexpr int kPoints = 8;
   auto errors = [&](const std::function<double(double)>& fe) {
     nlohmann::json e;
-    const auto eh = post::pressure_errors(fe, hertz_p, b, p0, fe_breaks, kPoints);
+    const auto eh = post::pressure_errors(fe, hertz_p, b, p0, breaks, kPoints);
     if (shtayerman) {
       const auto es = post::pressure_errors(fe, shtayerman_p, shtayerman->half_width(), p0,
                                             fe_breaks, kPoints);
@@ -193,7 +193,7 @@ nlohmann::json PressureComparison::measure(const model::Discretization& d,
     e["e_L2_hertz_percent"] = eh.e_L2;
     e["e_seed_hertz_percent"] = eh.e_seed;
     if (reference_) {
-      const auto er = post::pressure_errors(fe, *reference_, b, p0, reference_breaks, kPoints);
+      const auto er = post::pressure_errors(fe, *reference_, b, p0, breaks, kPoints);
       e["e_L2_reference_percent"] = er.e_L2;
       e["e_seed_reference_percent"] = er.e_seed;
     }

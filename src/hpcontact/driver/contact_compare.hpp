@@ -98,7 +98,8 @@ private:
   const ClosedForms& closed_forms(const model::ContactPair& pair,
                                   const model::ContactResult& result) const;
   /// Shtayerman's pressure at x (a quadrature per point), kept for the force of closed_forms():
-  /// the error integrals of every step evaluate it at the same points.
+  /// the error integrals of the steps share most of their points (those of the pieces no
+  /// contact edge's end splits).
   double shtayerman_pressure(double x) const;
   void check_reference_force(double force) const;
 
