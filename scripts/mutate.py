@@ -72,7 +72,7 @@ MUTATIONS = [
              ["Hierarchic1D.DerivativeMatchesFiniteDifference", "HierarchicQuad.GradientsMatchFiniteDifferences",
               "PatchTest.DirichletConstantStressOnDistortedMesh"]),
     Mutation("edge-orientation-sign", "basis", S + "basis/quad_modes.cpp",
-             "return (edge_reversed[e] && k % 2 == 1) ? -1.0 : 1.0;",
+             "return (h.edge_reversed[e] && k % 2 == 1) ? -1.0 : 1.0;",
              "return 1.0;",
              "odd edge modes of a reversed edge keep their sign",
              ["DofNumbering.MinimumRuleKeepsConformity", "HpMesh.RefinementIsConformingAndContinuous",

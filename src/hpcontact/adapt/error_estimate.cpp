@@ -2,13 +2,16 @@
 // are the same in both solves, so the tractions are compared point by point.
 #include "hpcontact/adapt/error_estimate.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
 #include "hpcontact/basis/quadrature.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/edge_load.hpp"
+#include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/model/contact_results.hpp"
+#include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/post/fields.hpp"
 
 namespace hpcontact::adapt {
@@ -63,6 +66,77 @@ ErrorEstimate estimate_error(const Solved& coarse, const Solved& enriched) {
   est.dofs = enriched.discretization.n_free;
   est.newton_iterations = b.newton_iterations;
   return est;
+}
+
+namespace {
+
+/// ∂J/∂λ of J(λ) = ∫ (t⁺ − t) λ ds for the multipliers of `enriched`, per pair: W_j (t⁺ − t) at
+/// each of its multiplier nodes (tangential multipliers: 0).
+std::vector<Eigen::VectorXd> traction_error_gradient(const Solved& coarse, const Solved& enriched) {
+  const auto& a = coarse.solution;
+  const auto& b = enriched.solution;
+  std::vector<Eigen::VectorXd> g(b.pairs.size());
+  for (size_t k = 0; k < b.pairs.size(); ++k) {
+    const auto& c = b.pairs[k].constraints;
+    if (!c) continue;
+    const model::BoundaryPressureProbe pa(coarse.discretization, a.pairs[k], a.u, a.multipliers_of(k));
+    const model::BoundaryPressureProbe pb(enriched.discretization, b.pairs[k], b.u, b.multipliers_of(k));
+    g[k] = Eigen::VectorXd::Zero(c->size() * (c->has_friction() ? 2 : 1));
+    for (int j = 0; j < c->size(); ++j) {
+      const auto& node = c->nodes.nodes[j];
+      g[k](j) = node.weight * (pb.traction(node.edge, node.t) - pa.traction(node.edge, node.t));
+    }
+  }
+  return g;
+}
+
+}  // namespace
+
+std::vector<std::vector<double>> surplus_energies(const model::Discretization& coarse,
+                                                  const model::Discretization& enriched,
+                                                  const Eigen::VectorXd& field) {
+  std::vector<std::vector<double>> out(enriched.bodies.size());
+  for (size_t b = 0; b < enriched.bodies.size(); ++b) {
+    const model::Body& body = enriched.bodies[b];
+    out[b].assign(body.mesh.n_quads(), 0.0);
+    for (int q = 0; q < body.mesh.n_quads(); ++q) {
+      const auto& fine = body.dofs.element(q);
+      const auto& mine = coarse.bodies[b].dofs.element(q);
+      HPC_REQUIRE(!fine.is_lagrange && !mine.is_lagrange, AdaptError,
+                  "surplus_energies: the h-version's Lagrange elements have no hierarchy of modes");
+      const auto kept = mine.hierarchic.mode_indices();
+      const auto all = fine.hierarchic.mode_indices();
+      Eigen::VectorXd ue = body.element_coefficients(q, field);
+      const int n = fine.n_modes();
+      for (int a = 0; a < n; ++a)
+        if (std::find(kept.begin(), kept.end(), all[a]) != kept.end()) ue(a) = ue(a + n) = 0;
+      const auto ev = fem::element_values(fine, body.maps[q], body.n_gauss[q], body.mesh, q);
+      out[b][q] = post::element_strain_energy(body, q, ev, ue);
+    }
+  }
+  return out;
+}
+
+std::vector<std::vector<double>> traction_error_indicators(const Solved& coarse,
+                                                           const Solved& enriched,
+                                                           const model::ProgressFn& progress) {
+  auto eta = surplus_energies(coarse.discretization, enriched.discretization, enriched.solution.u);
+  bool exact = false;
+  for (const auto& pair : enriched.solution.pairs) exact = exact || pair.constraints;
+  if (!exact) return eta;
+  std::vector<std::vector<double>> weight;
+  try {
+    weight = post::element_strain_energies(
+        enriched.discretization,
+        model::multiplier_adjoint(enriched.spec, enriched.discretization, enriched.solution,
+                                  traction_error_gradient(coarse, enriched)));
+  } catch (const NumericalError& e) {
+    if (progress) progress(std::string("goal-oriented weights left out: ") + e.what());
+    return eta;
+  }
+  for (size_t b = 0; b < eta.size(); ++b)
+    for (size_t q = 0; q < eta[b].size(); ++q) eta[b][q] = std::sqrt(eta[b][q] * weight[b][q]);
+  return eta;
 }
 
 ErrorEstimate estimate_by_enrichment(const Solved& coarse, const model::ProgressFn& progress,

@@ -3,6 +3,9 @@
 #pragma once
 
 #include <limits>
+#include <vector>
+
+#include <Eigen/Dense>
 
 #include "hpcontact/adapt/solved.hpp"
 #include "hpcontact/model/problem_spec.hpp"
@@ -28,6 +31,24 @@ model::ProblemSpec with_degrees_raised(const model::ProblemSpec& spec);
 
 /// The estimate of `coarse` from `enriched`, a solve of the same mesh with higher degrees.
 ErrorEstimate estimate_error(const Solved& coarse, const Solved& enriched);
+
+/// Per body, per element: the strain energy of the part of `field` (over `enriched`'s dofs) that
+/// the modes `coarse`'s element lacks carry — on one mesh whose degrees `enriched` raised, what
+/// the element's own degree leaves out (the hierarchic surplus), not what its neighbours do.
+std::vector<std::vector<double>> surplus_energies(const model::Discretization& coarse,
+                                                  const model::Discretization& enriched,
+                                                  const Eigen::VectorXd& field);
+
+/// Where `coarse`'s error in the contact traction comes from, element by element (goal-oriented,
+/// dual-weighted): per body, per element K, η_K = √(S_K(u⁺) · E_K(z⁺)), with S_K(u⁺) the surplus
+/// energy of the solve one degree higher (surplus_energies: what K's own degree leaves out) and
+/// E_K(z⁺) the strain energy on K of its adjoint (model::multiplier_adjoint) for
+/// J(λ) = ∫ (t⁺ − t) λ ds over the exactly enforced pairs' contact edges, the traction's error
+/// as the weight: by Cauchy–Schwarz, how much an error of K's size moves J. Without exact pairs
+/// (no multipliers), or when the adjoint cannot be solved (said through `progress`), S_K alone.
+std::vector<std::vector<double>> traction_error_indicators(const Solved& coarse,
+                                                           const Solved& enriched,
+                                                           const model::ProgressFn& progress = {});
 
 /// Solves `coarse`'s problem one degree higher (starting from its solution) and estimates the
 /// error of `coarse` from it; the solve is returned in `enriched` when not null.

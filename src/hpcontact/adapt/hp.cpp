@@ -22,9 +22,10 @@ struct Centre {
 };
 
 /// The input mesh with the centres moved to their points and refined `steps` times around them,
-/// degrees set by layer.
+/// degrees set by layer (and corrected, with goal-oriented degrees).
 model::ProblemSpec build_mesh(const model::ProblemSpec& input, const std::vector<Centre>& centres,
-                              int steps, const HpOptions& options) {
+                              int steps, const HpOptions& options,
+                              const DegreeCorrections& corrections) {
   model::ProblemSpec spec = input;
   for (const Centre& c : centres) {
     const BoundaryTrack track(spec, c.body, c.node);
@@ -32,7 +33,7 @@ model::ProblemSpec build_mesh(const model::ProblemSpec& input, const std::vector
   }
   for (int k = 0; k < steps; ++k)
     for (const Centre& c : centres) spec = refine_towards_node(spec, c.body, c.node, options.factor);
-  if (options.rising_degree) {
+  if (options.degree != model::HpDegree::constant) {
     for (size_t b = 0; b < spec.bodies.size(); ++b) {
       std::vector<int> nodes;
       for (const Centre& c : centres)
@@ -46,6 +47,7 @@ model::ProblemSpec build_mesh(const model::ProblemSpec& input, const std::vector
       }
     }
   }
+  if (options.degree == model::HpDegree::goal) corrections.apply(spec, options.min_degree);
   return spec;
 }
 
@@ -77,7 +79,7 @@ HpOptions hp_options(const model::AdaptSpec& adapt) {
   HpOptions o;
   o.factor = adapt.factor;
   o.steps = adapt.steps;
-  o.rising_degree = adapt.rising_degree;
+  o.degree = adapt.degree;
   o.min_degree = adapt.min_degree;
   o.tolerance = adapt.method == model::AdaptMethod::hp && adapt.tolerance_given ? adapt.tolerance : 0;
   o.max_dofs = adapt.max_dofs;
@@ -100,6 +102,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
   };
   std::vector<Centre> centres;
   model::ProblemSpec base = spec;  // the input, refined where a zone is narrow (step 0)
+  DegreeCorrections corrections;
   try {
     for (int step = 0; step <= options.steps; ++step) {
       const auto t0 = Clock::now();
@@ -109,7 +112,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       std::vector<ZoneEnd> ends;
       for (;; ++rec.recentred) {
         try {
-          s = solve(step == 0 ? spec : build_mesh(base, centres, step, options), progress,
+          s = solve(step == 0 ? spec : build_mesh(base, centres, step, options, corrections), progress,
                     s ? s.get() : out.last.get());
         } catch (const InputError& e) {
           // The input was good at step 0: what the refined mesh refuses is the refinement's.
@@ -196,6 +199,15 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         os << "hp step " << step << ": estimated error " << rec.estimate.pressure
            << " (pressure, relative L2), " << rec.estimate.energy << " (energy)";
         say(os.str());
+      }
+      // Goal-oriented degrees learn from the steps on the refined meshes (the input mesh's
+      // degrees are not the rule's).
+      if (options.degree == model::HpDegree::goal && step > 0 &&
+          !(rec.estimate.pressure <= options.tolerance)) {
+        const auto [raised, lowered] = corrections.learn(*s, *enriched, progress);
+        rec.degrees_learnt = true;
+        rec.degrees_raised = raised;
+        rec.degrees_lowered = lowered;
       }
       out.history.push_back(rec);
       // The best estimated step so far (an estimate that is not a number is never the best; one

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "hpcontact/adapt/error_estimate.hpp"
+#include "hpcontact/adapt/goal_degrees.hpp"
 #include "hpcontact/adapt/solved.hpp"
 
 namespace hpcontact::adapt {
@@ -14,8 +15,10 @@ namespace hpcontact::adapt {
 struct HpOptions {
   double factor = 0.5;      ///< size of the corner square per step (seed: 0.5, option 0.17)
   int steps = 8;            ///< refinement steps
-  bool rising_degree = true;  ///< degree min_degree + layer; false: the input's degrees
-  int min_degree = 1;       ///< degree of the elements at Γ* (rising_degree)
+  /// rising: min_degree + layer; constant: the input's degrees; goal: rising, corrected after
+  /// each step by the estimate's goal-oriented indicators (goal_degrees.hpp; with a tolerance).
+  model::HpDegree degree = model::HpDegree::rising;
+  int min_degree = 1;       ///< degree of the elements at Γ* (rising and goal)
   int max_recentre = 3;     ///< re-refinements of one step when Γ* leaves the smallest elements
   /// Rounds of zone resolution on the input mesh before the first move (resolve_zones).
   int resolve_rounds = 12;
@@ -40,6 +43,10 @@ struct HpIteration {
   /// Step 0: rounds of zone resolution taken, and the boundary nodes refined towards.
   int resolve_rounds = 0;
   std::vector<Vec2> resolved_towards;
+  /// Goal-oriented degrees: whether this step's indicators corrected the degrees of the later
+  /// steps, and how many elements they gave one degree more and one less.
+  bool degrees_learnt = false;
+  int degrees_raised = 0, degrees_lowered = 0;
 };
 
 using HpObserver = std::function<void(const HpIteration&, const Solved&)>;

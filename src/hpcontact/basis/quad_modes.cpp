@@ -9,6 +9,34 @@
 
 namespace hpcontact::basis {
 
+namespace {
+
+/// Calls put(i, j, sign) for every mode of h in mode order: the mode is sign · a_i(xi) b_j(eta)
+/// with the 1D hierarchic functions a, b (index 0: (1 − t)/2, 1: (1 + t)/2, k ≥ 2: phi_k).
+template <class Put>
+void each_mode(const HierarchicQuad& h, Put&& put) {
+  // Vertex modes (eq. 2.67): (1/4)(1 + xi_i xi)(1 + eta_i eta), V1..V4 counter-clockwise.
+  put(0, 0, 1.0);
+  put(1, 0, 1.0);
+  put(1, 1, 1.0);
+  put(0, 1, 1.0);
+
+  // Edge modes (eq. 2.68–2.71); with a reversed edge, phi_k(-t) = (-1)^k phi_k(t) flips odd k.
+  auto sign = [&h](int e, int k) { return (h.edge_reversed[e] && k % 2 == 1) ? -1.0 : 1.0; };
+  for (int k = 2; k <= h.edge_degree[0]; ++k) put(k, 0, sign(0, k));  // E1: phi_k(xi)(1 - eta)/2
+  for (int k = 2; k <= h.edge_degree[1]; ++k) put(1, k, sign(1, k));  // E2: (1 + xi)/2 phi_k(eta)
+  for (int k = 2; k <= h.edge_degree[2]; ++k) put(k, 1, sign(2, k));  // E3: phi_k(xi)(1 + eta)/2
+  for (int k = 2; k <= h.edge_degree[3]; ++k) put(0, k, sign(3, k));  // E4: (1 - xi)/2 phi_k(eta)
+
+  // Internal modes (eq. 2.72): phi_i(xi) phi_j(eta); the trunk space keeps i + j <= p_max.
+  const bool trunk = h.space == Space::trunk;
+  const int p_max = std::max(h.p_xi, h.p_eta);
+  for (int i = 2; i <= h.p_xi; ++i)
+    for (int j = 2; j <= h.p_eta && !(trunk && i + j > p_max); ++j) put(i, j, 1.0);
+}
+
+}  // namespace
+
 int HierarchicQuad::n_internal_modes() const {
   if (space == Space::tensor_product) return (p_xi - 1) * (p_eta - 1);
   // Trunk space: phi_i(xi) phi_j(eta) with 2 <= i <= p_xi, 2 <= j <= p_eta, i + j <= p.
@@ -22,6 +50,13 @@ int HierarchicQuad::n_modes() const {
   int n = 4 + n_internal_modes();
   for (int e = 0; e < 4; ++e) n += n_edge_modes(e);
   return n;
+}
+
+std::vector<std::array<int, 2>> HierarchicQuad::mode_indices() const {
+  std::vector<std::array<int, 2>> ij;
+  ij.reserve(n_modes());
+  each_mode(*this, [&](int i, int j, double) { ij.push_back({i, j}); });
+  return ij;
 }
 
 void HierarchicQuad::evaluate(double xi, double eta, double* N, double* dN_dxi,
@@ -57,30 +92,12 @@ void HierarchicQuad::evaluate(double xi, double eta, double* N, double* dN_dxi,
   hierarchic_1d(p_eta, eta, b, db);
 
   int m = 0;
-  auto put = [&](int i, int j, double sign) {
+  each_mode(*this, [&](int i, int j, double sign) {
     N[m] = sign * a[i] * b[j];
     if (dN_dxi) dN_dxi[m] = sign * da[i] * b[j];
     if (dN_deta) dN_deta[m] = sign * a[i] * db[j];
     ++m;
-  };
-
-  // Vertex modes (eq. 2.67): (1/4)(1 + xi_i xi)(1 + eta_i eta), V1..V4 counter-clockwise.
-  put(0, 0, 1.0);
-  put(1, 0, 1.0);
-  put(1, 1, 1.0);
-  put(0, 1, 1.0);
-
-  // Edge modes (eq. 2.68–2.71); with a reversed edge, phi_k(-t) = (-1)^k phi_k(t) flips odd k.
-  auto sign = [this](int e, int k) { return (edge_reversed[e] && k % 2 == 1) ? -1.0 : 1.0; };
-  for (int k = 2; k <= edge_degree[0]; ++k) put(k, 0, sign(0, k));  // E1: phi_k(xi)(1 - eta)/2
-  for (int k = 2; k <= edge_degree[1]; ++k) put(1, k, sign(1, k));  // E2: (1 + xi)/2 phi_k(eta)
-  for (int k = 2; k <= edge_degree[2]; ++k) put(k, 1, sign(2, k));  // E3: phi_k(xi)(1 + eta)/2
-  for (int k = 2; k <= edge_degree[3]; ++k) put(0, k, sign(3, k));  // E4: (1 - xi)/2 phi_k(eta)
-
-  // Internal modes (eq. 2.72): phi_i(xi) phi_j(eta); the trunk space keeps i + j <= p_max.
-  const bool trunk = space == Space::trunk;
-  for (int i = 2; i <= p_xi; ++i)
-    for (int j = 2; j <= p_eta && !(trunk && i + j > p_max); ++j) put(i, j, 1.0);
+  });
 
   HPC_ASSERT(m == n_modes(), "HierarchicQuad: wrote ", m, " modes, expected ", n_modes());
 }

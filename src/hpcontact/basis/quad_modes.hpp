@@ -42,6 +42,9 @@ struct HierarchicQuad {
   int n_internal_modes() const;
   int n_modes() const;
 
+  /// Per mode, in mode order, the indices (i, j) of its 1D factors a_i(xi) b_j(eta) (0: (1 − t)/2,
+  /// 1: (1 + t)/2, k ≥ 2: phi_k): what names a mode across spaces of other degrees on one mesh.
+  std::vector<std::array<int, 2>> mode_indices() const;
   /// Values and reference gradients of all modes at (xi, eta); each array has n_modes() entries.
   /// dN_dxi, dN_deta may be null.
   void evaluate(double xi, double eta, double* N, double* dN_dxi, double* dN_deta) const;

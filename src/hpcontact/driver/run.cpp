@@ -432,6 +432,7 @@ nlohmann::json hp_iteration_json(const adapt::HpIteration& it) {
   j["recentred"] = it.recentred;
   j["gamma_star_inside"] = it.inside;
   if (it.estimate.dofs > 0) j["estimated_error"] = estimate_json(it.estimate);
+  if (it.degrees_learnt) j["degrees"] = {{"raised", it.degrees_raised}, {"lowered", it.degrees_lowered}};
   if (it.step == 0) {
     j["resolve_rounds"] = it.resolve_rounds;
     j["resolved_towards"] = points_json(it.resolved_towards);
@@ -542,8 +543,10 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       }
       aj["factor"] = spec.adapt.factor;
       aj["steps"] = spec.adapt.steps;
-      aj["degree"] = spec.adapt.rising_degree ? "rising" : "constant";
-      if (spec.adapt.rising_degree) aj["min_degree"] = spec.adapt.min_degree;
+      aj["degree"] = spec.adapt.degree == model::HpDegree::goal       ? "goal"
+                     : spec.adapt.degree == model::HpDegree::constant ? "constant"
+                                                                       : "rising";
+      if (spec.adapt.degree != model::HpDegree::constant) aj["min_degree"] = spec.adapt.min_degree;
     }
     HPC_REQUIRE(last, AdaptError, message);
     if (kept < 0) kept = static_cast<int>(history.size()) - 1;

@@ -213,8 +213,11 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "discretization.degree", .type = T::degree, .default_yaml = "4",
        .doc = "Polynomial degree of the p-version, p or [p_xi, p_eta].", .lower = at_least(1),
        .upper = at_most(max_degree)},
-      {.path = "discretization.space", .type = T::choice, .default_yaml = "tensor",
-       .doc = "p-version shape space: full tensor product or trunk (serendipity).",
+      {.path = "discretization.space", .type = T::choice,
+       .doc = "p-version shape space: full tensor product or trunk (serendipity). Absent: trunk "
+              "for hp with goal-oriented degrees (adapt.degree goal, the default with "
+              "adapt.tolerance: fewer dofs for an accuracy, examples/hertz/CONVERGENCE.md) "
+              "without axisymmetric bodies, else tensor.",
        .choices = {"tensor", "trunk"}},
       {.path = "discretization.element", .type = T::choice, .default_yaml = "Q8",
        .doc = "h-version element (ignored by the p-version).", .choices = {"Q4", "Q8", "Q9"}},
@@ -524,10 +527,15 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "hp: refinement steps (absent: 8), with adapt.tolerance the most it may take "
               "(absent: 12); with adapt.factor, factor^steps at least 1e-11 (see Limits).",
        .lower = at_least(1), .upper = at_most(40)},
-      {.path = "adapt.degree", .type = T::choice, .default_yaml = "rising",
+      {.path = "adapt.degree", .type = T::choice,
        .doc = "hp: rising: min_degree at Γ* and one more per layer away from it (elements far "
-              "from Γ* get min_degree + steps + 1); constant: discretization.degree everywhere.",
-       .choices = {"rising", "constant"}},
+              "from Γ* get min_degree + steps + 1); constant: discretization.degree everywhere; "
+              "goal (needs adapt.tolerance): rising, and after each step an element whose "
+              "goal-oriented indicator of the contact traction's error per dof of one degree "
+              "more is above 3 times the mean gets one degree more in every later step, one "
+              "below 0.1 times the mean one less (docs/theory.md, Goal-oriented degrees). "
+              "Absent: goal with adapt.tolerance, else rising.",
+       .choices = {"rising", "constant", "goal"}},
       {.path = "adapt.min_degree", .type = T::integer, .default_yaml = "1",
        .doc = "hp: degree of the elements at Γ* (rising degree).", .lower = at_least(1),
        .upper = at_most(max_degree)},

@@ -3,6 +3,8 @@
 // resultant.
 #include "hpcontact/model/contact_solve.hpp"
 
+#include <Eigen/SparseLU>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -448,11 +450,9 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
 
 namespace {
 
-solve::SparseMatrix tangent_at(const ProblemSpec& spec, const Discretization& d,
-                               const NonlinearSolution& sol, ContactSystem::Tangent kind,
-                               Eigen::VectorXd* residual) {
-  // With friction, the histories the last load step started from: the tangent its Newton
-  // iterations converged with (the committed slips would put slipping points on the cone).
+/// With friction, the pairs with the histories the last load step started from: what its Newton
+/// iterations converged with (the committed slips would put slipping points on the cone).
+std::vector<ContactPair> pairs_of_last_step(const NonlinearSolution& sol) {
   std::vector<ContactPair> pairs = sol.pairs;
   for (auto& pair : pairs)
     if (pair.memory) {
@@ -461,6 +461,13 @@ solve::SparseMatrix tangent_at(const ProblemSpec& spec, const Discretization& d,
       before->other_points = before->other_points_before;
       pair.memory = before;
     }
+  return pairs;
+}
+
+solve::SparseMatrix tangent_at(const ProblemSpec& spec, const Discretization& d,
+                               const NonlinearSolution& sol, ContactSystem::Tangent kind,
+                               Eigen::VectorXd* residual) {
+  const std::vector<ContactPair> pairs = pairs_of_last_step(sol);  // the system keeps a reference
   ContactSystem system(d, pairs, spec.discretization.condense, kind);
   system.set_factors(sol.displacement_factors, sol.loads_factor);
   const Eigen::VectorXd x = system.unknowns(sol.u, sol.multipliers);
@@ -480,6 +487,32 @@ solve::SparseMatrix contact_tangent(const ProblemSpec& spec, const Discretizatio
                     finite_difference ? ContactSystem::Tangent::seed_difference
                                       : ContactSystem::Tangent::analytic,
                     residual);
+}
+
+Eigen::VectorXd multiplier_adjoint(const ProblemSpec& spec, const Discretization& d,
+                                   const NonlinearSolution& sol,
+                                   const std::vector<Eigen::VectorXd>& gradient) {
+  const std::vector<ContactPair> pairs = pairs_of_last_step(sol);  // the system keeps a reference
+  ContactSystem system(d, pairs, spec.discretization.condense);
+  system.set_factors(sol.displacement_factors, sol.loads_factor);
+  // Force control held the first pair's resultant: the functional's change at a fixed force.
+  const auto& tr = spec.solver.target_resultant;
+  const bool bordered = spec.solver.stages.empty() && tr && !sol.pairs.empty() &&
+                        sol.pairs.front().constraints;
+  if (bordered) system.set_force_target(std::make_pair(tr->component, tr->value));
+  const Eigen::VectorXd x = system.unknowns(sol.u, sol.multipliers);
+  Eigen::VectorXd r;
+  solve::SparseMatrix A;
+  system.evaluate(x, r, &A);
+  Eigen::VectorXd g = system.unknowns(Eigen::VectorXd::Zero(sol.u.size()), gradient);
+  if (bordered) g(g.size() - 1) = 0;
+  const solve::SparseMatrix At = A.transpose();
+  Eigen::SparseLU<solve::SparseMatrix> lu;
+  lu.compute(At);
+  HPC_REQUIRE(lu.info() == Eigen::Success, NumericalError,
+              "the adjoint of the contact problem: its tangent is singular");
+  const Eigen::VectorXd z = lu.solve(g);
+  return system.homogeneous_field(z);
 }
 
 solve::SparseMatrix residual_jacobian_by_differences(const ProblemSpec& spec, const Discretization& d,

@@ -81,6 +81,16 @@ solve::SparseMatrix contact_tangent(const ProblemSpec& spec, const Discretizatio
                                     const NonlinearSolution& sol, bool finite_difference,
                                     Eigen::VectorXd* residual = nullptr);
 
+/// The adjoint of a converged solve for a linear functional of its contact multipliers,
+/// J = Σ_k gradient[k] · λ_k (per pair its multipliers, normal then tangential; an empty entry:
+/// none of that pair): z with Aᵀ z = ∂J/∂x, A the Newton tangent at the solution on its
+/// unknowns, force control bordered as the solve had it (the total force held). Returns z's
+/// displacement part over all dofs (homogeneous: zero where displacements are prescribed).
+/// It weighs where an error of the displacements changes J (goal-oriented error indicators).
+Eigen::VectorXd multiplier_adjoint(const ProblemSpec& spec, const Discretization& d,
+                                   const NonlinearSolution& sol,
+                                   const std::vector<Eigen::VectorXd>& gradient);
+
 /// The Jacobian of the residual at a solution by plain central differences, every normal and
 /// every finite-strain term re-evaluated (not the seed's frozen-normal variant, not
 /// symmetrised): what the analytic tangent must equal, to O(h²). For tests.

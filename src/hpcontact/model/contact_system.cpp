@@ -165,6 +165,12 @@ Eigen::VectorXd ContactSystem::solution(const Eigen::VectorXd& x) const {
   return u;
 }
 
+Eigen::VectorXd ContactSystem::homogeneous_field(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd u = op_.expand(d_, x.head(n_u_), 0.0);
+  op_.recover_internal(d_, u, 0.0);
+  return u;
+}
+
 double ContactSystem::force_scale(const Eigen::VectorXd& x) const {
   const Eigen::VectorXd f = op_.K * prescribed(displacement_factors(x));
   const Eigen::VectorXd u = full(x);

@@ -96,6 +96,10 @@ public:
   Eigen::VectorXd full(const Eigen::VectorXd& x) const;
   /// All dofs, the condensed internal modes recovered.
   Eigen::VectorXd solution(const Eigen::VectorXd& x) const;
+  /// The displacement part of x as a field over all dofs with no load and nothing prescribed
+  /// (zero on prescribed dofs, condensed internal modes from x alone): what a correction or an
+  /// adjoint solution is.
+  Eigen::VectorXd homogeneous_field(const Eigen::VectorXd& x) const;
 
   /// Scale of the residual: the norm of the forces the current load produces, and of the
   /// internal forces at the state x (a load step that starts from a loaded state, e.g. a

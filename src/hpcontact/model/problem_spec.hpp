@@ -263,6 +263,11 @@ struct OutputSpec {
 
 enum class AdaptMethod { none, rp, hp };
 
+/// hp's degrees: rising, min_degree at Γ* and one more per layer away from it; constant, the
+/// input's; goal, rising and corrected step by step where goal-oriented indicators of the contact
+/// traction's error show too few or too many (with a tolerance, whose estimate supplies them).
+enum class HpDegree { rising, constant, goal };
+
 /// Adaptive mesh changes around the ends of the contact zone (seed §4.7–4.8).
 struct AdaptSpec {
   AdaptMethod method = AdaptMethod::none;
@@ -275,7 +280,7 @@ struct AdaptSpec {
   bool secant = true;        ///< rp: secant steps (false: the seed's plain move onto Γ*)
   double factor = 0.5;       ///< hp: size of the corner square per refinement step
   int steps = 8;             ///< hp: refinement steps
-  bool rising_degree = true; ///< hp: degree min_degree + layer (false: discretization.degree)
+  HpDegree degree = HpDegree::rising;  ///< hp (goal by default with a tolerance)
   int min_degree = 1;        ///< hp: degree of the elements at Γ*
   /// rp and hp: adapt to the stick–slip points of exact Coulomb pairs as to the zone ends.
   bool stick_slip = true;

@@ -55,29 +55,13 @@ double strain_energy(const model::Discretization& d, const Eigen::VectorXd& u) {
   double U = 0;
   for (const auto& body : d.bodies) {
     for (int q = 0; q < body.mesh.n_quads(); ++q) {
-      const auto D = body.material_of(q).D();
       const auto ev = fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q],
                                           body.mesh, q);
       if (body.finite_strain()) {
         U += model::finite_strain_element(body, q, ev, body.element_coefficients(q, u), false).energy;
         continue;
       }
-      const Eigen::VectorXd ue = body.element_coefficients(q, u);
-      const Eigen::Matrix3Xd eps = fem::strains(ev, ue);
-      if (body.axisymmetric()) {
-        // ½ εᵀ D₄ ε with the hoop strain u_r / r, over 2π r dA
-        const Eigen::VectorXd ur = ev.N.transpose() * ue.head(ev.n_modes());
-        const auto& m = body.material_of(q);
-        for (int k = 0; k < ev.n_points(); ++k) {
-          double hoop = 0;
-          const Eigen::Vector3d s = m.axisymmetric_stress(eps.col(k), ur(k) / ev.x[k].x(), &hoop);
-          U += 0.5 * body.out_of_plane().at(ev.x[k]) * ev.JxW(k) *
-               (eps.col(k).dot(s) + hoop * ur(k) / ev.x[k].x());
-        }
-        continue;
-      }
-      for (int k = 0; k < ev.n_points(); ++k)
-        U += 0.5 * body.thickness * ev.JxW(k) * eps.col(k).dot(D * eps.col(k));
+      U += element_strain_energy(body, q, ev, body.element_coefficients(q, u));
     }
   }
   return U;
@@ -114,6 +98,43 @@ double energy_error_squared(const model::Discretization& d, const Eigen::VectorX
     }
   }
   return E2;
+}
+
+double element_strain_energy(const model::Body& body, int q, const fem::ElementValues& ev,
+                             const Eigen::VectorXd& ue) {
+  const auto& m = body.material_of(q);
+  const Eigen::Matrix3Xd eps = fem::strains(ev, ue);
+  double U = 0;
+  if (body.axisymmetric()) {
+    // the hoop strain u_r / r, over 2π r dA
+    const Eigen::VectorXd ur = ev.N.transpose() * ue.head(ev.n_modes());
+    for (int k = 0; k < ev.n_points(); ++k) {
+      const double hoop = ur(k) / ev.x[k].x();
+      double s_hoop = 0;
+      const Eigen::Vector3d s = m.axisymmetric_stress(eps.col(k), hoop, &s_hoop);
+      U += 0.5 * body.out_of_plane().at(ev.x[k]) * ev.JxW(k) * (eps.col(k).dot(s) + s_hoop * hoop);
+    }
+    return U;
+  }
+  const auto D = m.D();
+  for (int k = 0; k < ev.n_points(); ++k)
+    U += 0.5 * body.thickness * ev.JxW(k) * eps.col(k).dot(D * eps.col(k));
+  return U;
+}
+
+std::vector<std::vector<double>> element_strain_energies(const model::Discretization& d,
+                                                         const Eigen::VectorXd& u) {
+  std::vector<std::vector<double>> out(d.bodies.size());
+  for (size_t b = 0; b < d.bodies.size(); ++b) {
+    const auto& body = d.bodies[b];
+    out[b].assign(body.mesh.n_quads(), 0.0);
+    for (int q = 0; q < body.mesh.n_quads(); ++q) {
+      const auto ev = fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q],
+                                          body.mesh, q);
+      out[b][q] = element_strain_energy(body, q, ev, body.element_coefficients(q, u));
+    }
+  }
+  return out;
 }
 
 }  // namespace hpcontact::post

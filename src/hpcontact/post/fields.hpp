@@ -3,9 +3,11 @@
 
 #include <array>
 #include <functional>
+#include <vector>
 
 #include <Eigen/Dense>
 
+#include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/model/discretization.hpp"
 
 namespace hpcontact::post {
@@ -49,5 +51,14 @@ struct ExactStrain {
 /// direction than the solve used.
 double energy_error_squared(const model::Discretization& d, const Eigen::VectorXd& u,
                             const ExactStrain& exact, int extra_points = 4);
+
+/// ½ ∫ εᵀ D ε dV of the local coefficients ue (component-blocked) of element q of a linear
+/// elastic body, at the points of ev (the element's values, of any rule).
+double element_strain_energy(const model::Body& body, int q, const fem::ElementValues& ev,
+                             const Eigen::VectorXd& ue);
+
+/// Per body, per element: ½ ∫ εᵀ D ε dV of the field u (all dofs) of linear elastic bodies.
+std::vector<std::vector<double>> element_strain_energies(const model::Discretization& d,
+                                                         const Eigen::VectorXd& u);
 
 }  // namespace hpcontact::post

@@ -428,3 +428,26 @@ TEST(Lagrange, ReproducesItsPolynomialSpace) {
     u += std::pow(nodes[i][0] * nodes[i][1], 2) * v.N[i];
   EXPECT_GT(std::abs(u - 0.0625), 1e-3);
 }
+
+// mode_indices() names each mode by its 1D factors: at any point the mode is ± a_i(xi) b_j(eta)
+// (the sign of a reversed edge's odd mode), for tensor and trunk spaces, reduced edge degrees
+// and reversed edges alike; no two modes share a name.
+TEST(HierarchicQuad, ModeIndicesNameTheFactorsOfEachMode) {
+  hb::HierarchicQuad trunk = anisotropic();
+  trunk.space = hb::Space::trunk;
+  for (const auto& quad : {isotropic(6, hb::Space::tensor_product), isotropic(6, hb::Space::trunk),
+                           anisotropic(), trunk}) {
+    const auto ij = quad.mode_indices();
+    ASSERT_EQ(static_cast<int>(ij.size()), quad.n_modes());
+    const std::set<std::array<int, 2>> distinct(ij.begin(), ij.end());
+    EXPECT_EQ(distinct.size(), ij.size());
+    std::vector<double> a(quad.p_xi + 1), b(quad.p_eta + 1);
+    for (const auto& [xi, eta] : random_points(20)) {
+      hb::hierarchic_1d(quad.p_xi, xi, a.data(), nullptr);
+      hb::hierarchic_1d(quad.p_eta, eta, b.data(), nullptr);
+      const Values v = evaluate(quad, xi, eta);
+      for (int m = 0; m < quad.n_modes(); ++m)
+        EXPECT_NEAR(std::abs(v.N[m]), std::abs(a[ij[m][0]] * b[ij[m][1]]), 1e-14) << m;
+    }
+  }
+}

@@ -1,0 +1,120 @@
+// The pieces of goal-oriented degrees (adapt/goal_degrees.hpp): the adjoint of a contact solve
+// against finite differences of the functional it weighs, and the surplus energies against the
+// modes a coarser space lacks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "hpcontact/adapt/error_estimate.hpp"
+#include "hpcontact/adapt/solved.hpp"
+#include "hpcontact/io/problem_reader.hpp"
+#include "hpcontact/model/contact_solve.hpp"
+#include "hpcontact/model/discretization.hpp"
+#include "hpcontact/post/fields.hpp"
+
+using namespace hpcontact;
+
+namespace {
+
+/// examples/hertz/p8.yaml (quarter cylinder on a rigid flat, exact contact, force control to
+/// F/2) at degree p.
+model::ProblemSpec hertz(int p) {
+  return io::read_problem(std::string(HPC_SOURCE_DIR) + "/examples/hertz/p8.yaml",
+                          {"discretization.degree=" + std::to_string(p), "output.vtu=false"});
+}
+
+/// J(λ) = Σ_j W_j X_j² λ_j: the second moment of the pressure about the symmetry line, which
+/// changes with the pressure's shape even where the total force is held.
+std::vector<Eigen::VectorXd> second_moment_gradient(const adapt::Solved& s) {
+  std::vector<Eigen::VectorXd> g(s.solution.pairs.size());
+  const auto& c = *s.solution.pairs[0].constraints;
+  g[0] = Eigen::VectorXd::Zero(c.size());
+  for (int j = 0; j < c.size(); ++j)
+    g[0](j) = c.nodes.nodes[j].weight * c.nodes.nodes[j].X.x() * c.nodes.nodes[j].X.x();
+  return g;
+}
+
+double second_moment(const adapt::Solved& s) {
+  return second_moment_gradient(s)[0].dot(s.solution.multipliers[0]);
+}
+
+/// The spec with a body force b per volume (on top of what it has).
+model::ProblemSpec with_body_force(model::ProblemSpec spec, const Vec2& b) {
+  spec.bodies[0].body_force = {b.x(), b.y()};
+  return spec;
+}
+
+/// dJ/dε of a body force ε b against the adjoint's prediction α zᵀ f_b (α the factor the solve
+/// put on the loads: 1, or the force control's factor, which scales loads and displacements).
+void expect_adjoint_predicts(const model::ProblemSpec& spec) {
+  const Vec2 b(30.0, -200.0);
+  const auto s = adapt::solve(spec);
+  const Eigen::VectorXd z = model::multiplier_adjoint(s->spec, s->discretization, s->solution,
+                                                      second_moment_gradient(*s));
+  const Eigen::VectorXd f_b = model::discretize(with_body_force(spec, b)).load;
+  const double predicted = s->solution.loads_factor * z.dot(f_b);
+  // central differences, Richardson-extrapolated (under force control J is not linear in ε:
+  // the factor scales the body force too, and it moves with ε)
+  auto central = [&](double eps) {
+    const auto plus = adapt::solve(with_body_force(spec, eps * b));
+    const auto minus = adapt::solve(with_body_force(spec, -eps * b));
+    EXPECT_EQ(plus->solution.multipliers[0].size(), s->solution.multipliers[0].size());
+    return (second_moment(*plus) - second_moment(*minus)) / (2 * eps);
+  };
+  const double differences = (4 * central(5e-4) - central(1e-3)) / 3;
+  // both are far from zero: the body force moves the pressure's shape
+  EXPECT_GT(std::abs(differences), 1e-3 * std::abs(second_moment(*s)) / (b.norm() * 1e-2));
+  EXPECT_NEAR(predicted, differences, 1e-8 * std::abs(differences));  // measured 1e-11
+}
+
+}  // namespace
+
+// Under force control (the factor an unknown held by the target force): the adjoint's load
+// term predicts how the pressure's second moment moves with a body force (measured to 1e-11).
+TEST(MultiplierAdjoint, PredictsTheFunctionalUnderForceControl) {
+  model::ProblemSpec spec = hertz(4);
+  ASSERT_TRUE(spec.solver.target_resultant);
+  expect_adjoint_predicts(spec);
+}
+
+// Under displacement control (the centre's displacement prescribed, the force free).
+TEST(MultiplierAdjoint, PredictsTheFunctionalUnderDisplacementControl) {
+  model::ProblemSpec spec = hertz(4);
+  spec.solver.target_resultant.reset();
+  for (auto& c : spec.bodies[0].constraints)
+    if (c.uy) c.uy = "-0.45";
+  expect_adjoint_predicts(spec);
+}
+
+// The surplus of a field is the energy of the modes the coarser element lacks: none for a vertex
+// mode (every space has it), all of it for an edge mode of the new degree, in both elements that
+// share the edge.
+TEST(SurplusEnergies, AreTheEnergyOfTheModesTheCoarserSpaceLacks) {
+  const model::Discretization coarse = model::discretize(hertz(3));
+  const model::Discretization fine = model::discretize(hertz(4));
+  const auto& body = fine.bodies[0];
+  // a vertex mode: the middle node (5, user id), shared by all four elements
+  Eigen::VectorXd vertex = Eigen::VectorXd::Zero(fine.n_dofs);
+  vertex(body.dof_offset + 2 * body.dofs.vertex_mode(body.mesh.node_index(5))) = 1e-3;
+  const auto none = adapt::surplus_energies(coarse, fine, vertex);
+  const auto all = post::element_strain_energies(fine, vertex);
+  for (int q = 0; q < body.mesh.n_quads(); ++q) {
+    EXPECT_GT(all[0][q], 0.0);
+    EXPECT_EQ(none[0][q], 0.0);
+  }
+  // the degree-4 mode of the edge between nodes 2 and 5 (elements 1 and 2)
+  const int e = body.mesh.find_edge(body.mesh.node_index(2), body.mesh.node_index(5));
+  ASSERT_GE(e, 0);
+  Eigen::VectorXd edge = Eigen::VectorXd::Zero(fine.n_dofs);
+  edge(body.dof_offset + 2 * body.dofs.edge_mode(e, 4) + 1) = 1e-3;
+  const auto surplus = adapt::surplus_energies(coarse, fine, edge);
+  const auto energy = post::element_strain_energies(fine, edge);
+  int touched = 0;
+  for (int q = 0; q < body.mesh.n_quads(); ++q) {
+    EXPECT_NEAR(surplus[0][q], energy[0][q], 1e-14 * energy[0][q]);
+    touched += energy[0][q] > 0;
+  }
+  EXPECT_EQ(touched, 2);
+}
