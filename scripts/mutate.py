@@ -28,8 +28,8 @@ mutation (then "other tests failed" lists every failing test). --only runs some 
 --list prints them. A run of all 45 takes about 39 min on 2 cores (--full: about 80 min). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
-Left out on purpose: model/contact_solve.cpp and contact/penalty.cpp, two_body.cpp (being
-rewritten), and mutations that cannot change a result (e.g. the predictor's length in the
+Left out on purpose: model/contact_solve.cpp (but for its adjoint) and contact/penalty.cpp,
+two_body.cpp (being rewritten), and mutations that cannot change a result (e.g. the predictor's length in the
 arc-length method, which the corrector's constraint overrides).
 """
 import argparse
@@ -369,6 +369,41 @@ MUTATIONS = [
              "a zone narrow against its elements is not resolved before hp grades",
              ["cli:tests/cli/test_hp_tolerance.py::test_zones_far_smaller_than_the_start_mesh_reach_the_tolerance[100]",
               "cli:tests/cli/test_hp_tolerance.py::test_zones_far_smaller_than_the_start_mesh_reach_the_tolerance[10000]"]),
+    # adapt (goal-oriented degrees and the estimate's start)
+    Mutation("goal-unweighted", "adapt", S + "adapt/error_estimate.cpp",
+             "for (size_t q = 0; q < eta[b].size(); ++q) eta[b][q] = std::sqrt(eta[b][q] * weight[b][q]);",
+             "for (size_t q = 0; q < eta[b].size(); ++q) eta[b][q] = std::sqrt(eta[b][q]);",
+             "goal-oriented indicators without the adjoint's weight (the energy surplus alone)",
+             ["cli:tests/cli/test_hp_tolerance.py::test_a_tolerance_of_1e4_is_reached_and_said",
+              "cli:tests/cli/test_hp_tolerance.py::test_a_tolerance_of_1e3",
+              "cli:tests/cli/test_hp_tolerance.py::test_goal_oriented_degrees_need_half_the_dofs_of_the_rising_degree"]),
+    Mutation("goal-not-per-dof", "adapt", S + "adapt/goal_degrees.cpp",
+             "score[b][q] /= 2 * coarse.discretization.bodies[b].dofs.element(static_cast<int>(q)).max_degree() + 3;",
+             "score[b][q] /= 1;",
+             "degrees bought by the indicator alone, not by what a degree more costs",
+             ["cli:tests/cli/test_hp_tolerance.py::test_a_tolerance_of_1e4_is_reached_and_said",
+              "cli:tests/cli/test_hp_tolerance.py::test_a_tolerance_of_1e3",
+              "cli:tests/cli/test_hp_tolerance.py::test_goal_oriented_degrees_need_half_the_dofs_of_the_rising_degree"]),
+    Mutation("surplus-all-modes", "adapt", S + "adapt/error_estimate.cpp",
+             "if (std::find(kept.begin(), kept.end(), all[a]) != kept.end()) ue(a) = ue(a + n) = 0;",
+             "if (false) ue(a) = ue(a + n) = 0;",
+             "the surplus energy counts the modes the coarser space has too",
+             ["SurplusEnergies.AreTheEnergyOfTheModesTheCoarserSpaceLacks"]),
+    Mutation("adjoint-unbordered", "model", S + "model/contact_solve.cpp",
+             "if (bordered) system.set_force_target(std::make_pair(tr->component, tr->value));",
+             "if (false) system.set_force_target(std::make_pair(tr->component, tr->value));",
+             "the adjoint of a force-controlled solve without the force held",
+             ["MultiplierAdjoint.PredictsTheFunctionalUnderForceControl"]),
+    Mutation("carry-over-nested-skipped", "adapt", S + "adapt/transfer.cpp",
+             "if (nested(from_d, to)) {",
+             "if (false) {",
+             "the estimate's solve starts from the vertex values only",
+             ["CarryOver.OneDegreeMoreOnTheSameMeshIsTheSameSolution"]),
+    Mutation("recentre-with-tolerance", "adapt", S + "adapt/hp.cpp",
+             "if (rec.inside || rec.recentred >= options.max_recentre || options.tolerance > 0) break;",
+             "if (rec.inside || rec.recentred >= options.max_recentre) break;",
+             "a step to a tolerance is solved again around each Γ* outside its smallest elements",
+             ["cli:tests/cli/test_hp_tolerance.py::test_a_tolerance_of_1e4_is_reached_and_said"]),
     Mutation("reference-linear", "driver", S + "driver/contact_compare.cpp",
              "if (a >= 0 && b >= 0 && (a > 0 || b > 0)) return std::sqrt((1 - w) * a * a + w * b * b);",
              "if (false) return 0;",

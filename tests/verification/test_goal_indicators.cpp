@@ -1,14 +1,16 @@
 // The pieces of goal-oriented degrees (adapt/goal_degrees.hpp): the adjoint of a contact solve
-// against finite differences of the functional it weighs, and the surplus energies against the
-// modes a coarser space lacks.
+// against finite differences of the functional it weighs, the surplus energies against the
+// modes a coarser space lacks, and the estimate's solve started from the step's solution.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "hpcontact/adapt/error_estimate.hpp"
 #include "hpcontact/adapt/solved.hpp"
+#include "hpcontact/adapt/transfer.hpp"
 #include "hpcontact/io/problem_reader.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/discretization.hpp"
@@ -117,4 +119,40 @@ TEST(SurplusEnergies, AreTheEnergyOfTheModesTheCoarserSpaceLacks) {
     touched += energy[0][q] > 0;
   }
   EXPECT_EQ(touched, 2);
+}
+
+// The error estimate's solve starts from the step's solution: on the same mesh one degree higher
+// the field is the same to round-off at every point (each mode's coefficient where the higher
+// space has the same mode), and each pair's pressure is the same polynomial along every edge.
+TEST(CarryOver, OneDegreeMoreOnTheSameMeshIsTheSameSolution) {
+  const auto s = adapt::solve(hertz(4));
+  const model::ProblemSpec higher = adapt::with_degrees_raised(s->spec);
+  const model::Discretization d = model::discretize(higher);
+  const auto pairs = model::make_contact_pairs(higher, d);
+  const model::StartState start = adapt::carry_over(s->discretization, s->solution, d, pairs);
+  const auto& lo = s->discretization.bodies[0];
+  const auto& hi = d.bodies[0];
+  double largest = 0;
+  for (int q = 0; q < lo.mesh.n_quads(); ++q)
+    for (double xi : {-0.9, -0.3, 0.4, 1.0})
+      for (double eta : {-1.0, 0.1, 0.7}) {
+        const auto a = post::evaluate(lo, q, xi, eta, s->solution.u);
+        const auto b = post::evaluate(hi, q, xi, eta, start.u);
+        EXPECT_LT((a.u - b.u).norm(), 1e-12 * (1 + a.u.norm())) << q;
+        EXPECT_LT((a.stress - b.stress).norm(), 1e-8 * (1 + a.stress.norm())) << q;
+        largest = std::max(largest, a.u.norm());
+      }
+  EXPECT_GT(largest, 0.1);  // the centre moved by ~0.5 mm: a real field, not zeros
+  // the same field's energy, integrated with one Gauss point more per direction (the arcs'
+  // blending maps are not polynomial: measured 3e-7 apart)
+  EXPECT_NEAR(post::strain_energy(d, start.u), post::strain_energy(s->discretization, s->solution.u),
+              1e-6 * post::strain_energy(s->discretization, s->solution.u));
+  const auto& old_nodes = s->solution.pairs[0].constraints->nodes;
+  const auto& new_nodes = pairs[0].constraints->nodes;
+  ASSERT_EQ(start.multipliers[0].size(), new_nodes.size());
+  ASSERT_GT(new_nodes.size(), old_nodes.size());
+  for (int k = 0; k < static_cast<int>(new_nodes.edge_nodes.size()); ++k)
+    for (double t : {-0.95, -0.2, 0.5, 0.99})
+      EXPECT_NEAR(new_nodes.interpolate(k, t, start.multipliers[0]),
+                  old_nodes.interpolate(k, t, s->solution.multipliers[0]), 1e-9 * 3e4);
 }

@@ -162,7 +162,9 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
             c.at = nearest->X;
           }
         }
-        if (rec.inside || rec.recentred >= options.max_recentre) break;
+        // With a tolerance the step's estimate measures what a Γ* outside the smallest elements
+        // costs, and the next step is centred on the better solve's zone ends: no solve again.
+        if (rec.inside || rec.recentred >= options.max_recentre || options.tolerance > 0) break;
         centres = std::move(recentred);
         say("hp step " + std::to_string(step) + ": Γ* left the smallest elements; refining again "
             "around it");

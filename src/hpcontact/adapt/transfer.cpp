@@ -25,6 +25,48 @@ bool same_numbering(const model::Discretization& a, const model::Discretization&
   return true;
 }
 
+/// Whether `to` has the meshes of `from` and element spaces that contain its spaces (the hierarchic
+/// modes of each element of `from` among those of `to`: the estimate's solve one degree higher).
+bool nested(const model::Discretization& from, const model::Discretization& to) {
+  if (from.bodies.size() != to.bodies.size()) return false;
+  for (size_t k = 0; k < from.bodies.size(); ++k) {
+    const auto &a = from.bodies[k], &b = to.bodies[k];
+    if (a.mesh.n_nodes() != b.mesh.n_nodes() || a.mesh.n_quads() != b.mesh.n_quads()) return false;
+    for (int v = 0; v < a.mesh.n_nodes(); ++v)
+      if (a.mesh.node(v) != b.mesh.node(v)) return false;
+    for (int q = 0; q < a.mesh.n_quads(); ++q) {
+      const auto &sa = a.dofs.element(q), &sb = b.dofs.element(q);
+      if (a.mesh.quad(q) != b.mesh.quad(q) || sa.is_lagrange || sb.is_lagrange ||
+          sa.hierarchic.space != sb.hierarchic.space)
+        return false;
+      const auto in_b = sb.hierarchic.mode_indices();
+      for (const auto& ij : sa.hierarchic.mode_indices())
+        if (std::find(in_b.begin(), in_b.end(), ij) == in_b.end()) return false;
+    }
+  }
+  return true;
+}
+
+/// u of `from` as the same field over the dofs of `to` (nested(from, to)): each mode's
+/// coefficients where `to` has the same mode, the modes `to` adds zero.
+Eigen::VectorXd embed(const model::Discretization& from, const Eigen::VectorXd& u,
+                      const model::Discretization& to) {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(to.n_dofs);
+  for (size_t k = 0; k < from.bodies.size(); ++k) {
+    const auto &a = from.bodies[k], &b = to.bodies[k];
+    for (int q = 0; q < a.mesh.n_quads(); ++q) {
+      const auto ia = a.dofs.element(q).hierarchic.mode_indices();
+      const auto ib = b.dofs.element(q).hierarchic.mode_indices();
+      const int na = static_cast<int>(ia.size()), nb = static_cast<int>(ib.size());
+      for (int m = 0; m < na; ++m) {
+        const int n = static_cast<int>(std::find(ib.begin(), ib.end(), ia[m]) - ib.begin());
+        for (int c = 0; c < 2; ++c) out(b.global_dof(q, n + c * nb)) = u(a.global_dof(q, m + c * na));
+      }
+    }
+  }
+  return out;
+}
+
 /// The displacement of a solution at an undeformed point of body `body`, zero outside it.
 Vec2 displacement_at(const model::Discretization& d, const post::PointLocator& locate,
                      const Eigen::VectorXd& u, int body, const Vec2& X) {
@@ -73,6 +115,23 @@ model::StartState carry_over(const model::Discretization& from_d,
   if (same_numbering(from_d, to)) {
     start.u = from.u;
     start.multipliers = from.multipliers;
+    return start;
+  }
+  if (nested(from_d, to)) {
+    // The same meshes with higher degrees: the same field, and each exact pair's multiplier
+    // (a polynomial on each contact edge) at the new nodes of the same edges.
+    start.u = embed(from_d, from.u, to);
+    start.multipliers.resize(to_pairs.size());
+    for (size_t k = 0; k < to_pairs.size() && k < from.pairs.size(); ++k) {
+      const auto& c = to_pairs[k].constraints;
+      const auto* lambda = from.multipliers_of(k);
+      if (!c || c->has_friction() || !lambda || !from.pairs[k].constraints) continue;
+      const auto& old_nodes = from.pairs[k].constraints->nodes;
+      Eigen::VectorXd l(c->size());
+      for (int j = 0; j < c->size(); ++j)
+        l(j) = old_nodes.interpolate(c->nodes.nodes[j].edge, c->nodes.nodes[j].t, *lambda);
+      start.multipliers[k] = l;
+    }
     return start;
   }
   const post::PointLocator locate(from_d);
