@@ -219,3 +219,15 @@ def test_two_bodies_from_gmsh_meshes_reach_the_tolerance(hpcontact, root, tmp_pa
         1 / ((1 - 0.3 ** 2) / 210000 + (1 - 0.33 ** 2) / 70000))
     db, dp, e = against_hertz("roller on block", s)
     assert abs(db) < 1e-2 and abs(dp) < 1e-2 and e < 2
+
+
+def test_a_small_factor_takes_as_many_steps_as_the_geometry_resolves(hpcontact, root, tmp_path):
+    """With a tolerance the loop chooses the most steps (12) unless adapt.steps is given; at
+    factor 0.1 twelve steps would make elements of 1e-12 of the first ones, below what the
+    geometry resolves, and the loop takes at most 11 instead of refusing the input (adapt.steps
+    given explicitly is still refused, test_messages.py)."""
+    out = tmp_path / "f01"
+    run(hpcontact, root, out, "adapt.tolerance=1e-3", "adapt.factor=0.1", "output.vtu=false")
+    s = summary(out)
+    assert s["adapt"]["steps"] == 11 and s["adapt"]["stopped"] == "tolerance reached"
+    assert true_error(s["contact"]) <= 1.05e-3

@@ -525,7 +525,8 @@ const std::vector<KeySpec>& input_schema() {
        .lower = greater_than(0), .upper = less_than(1)},
       {.path = "adapt.steps", .type = T::integer,
        .doc = "hp: refinement steps (absent: 8), with adapt.tolerance the most it may take "
-              "(absent: 12); with adapt.factor, factor^steps at least 1e-11 (see Limits).",
+              "(absent: 12, or fewer where adapt.factor^12 < 1e-11); with adapt.factor, "
+              "factor^steps at least 1e-11 (see Limits).",
        .lower = at_least(1), .upper = at_most(40)},
       {.path = "adapt.degree", .type = T::choice,
        .doc = "hp: rising: min_degree at Γ* and one more per layer away from it (elements far "

@@ -521,6 +521,9 @@ class SpecBuilder {
     const bool to_tolerance = a.method == AdaptMethod::hp && node["tolerance"];
     a.factor = node["factor"] ? number(node["factor"]) : to_tolerance ? 0.15 : 0.5;
     a.steps = node["steps"] ? integer(node["steps"]) : to_tolerance ? 12 : 8;
+    // As many as the geometry resolves at this factor, when the loop chose the number.
+    if (to_tolerance && !node["steps"])
+      while (a.steps > 1 && std::pow(a.factor, a.steps) < kMinHpScale) --a.steps;
     // With a tolerance the estimate's solve is there to weigh each element's share of the
     // error: the degrees follow it (examples/hertz/CONVERGENCE.md).
     const std::string rule = node["degree"] ? node["degree"].Scalar() : to_tolerance ? "goal" : "rising";
