@@ -5,6 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include <string>
+#include <vector>
 
 #include "hpcontact/adapt/hp.hpp"
 #include "hpcontact/adapt/rp.hpp"
@@ -61,17 +62,21 @@ void BM_HpLoop(benchmark::State& state) {
 BENCHMARK(BM_HpLoop)->ArgName("factor_percent")->Arg(17)->Arg(50)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // range(0) = k of the tolerance 10^-k: examples/hertz/hp-tolerance.yaml's loop (the defaults
-// with a tolerance: factor 0.15, the error of each step estimated by a solve one degree higher).
+// with a tolerance: factor 0.15, the error of each step estimated by a solve one degree higher,
+// goal-oriented degrees in the trunk space; range(1) = 1: the rising degree in the tensor space).
 adapt::HpOutcome hp_to_tolerance(const model::ProblemSpec& spec) {
   return adapt::refine_towards_zone_ends(spec, adapt::hp_options(spec.adapt));
 }
 
-model::ProblemSpec tolerance_case(int k) {
-  return io::read_problem(example("hp-tolerance"), {"adapt.tolerance=1e-" + std::to_string(k)});
+/// range(1) = 1: the rising degree in the tensor space (the defaults before goal-oriented degrees).
+model::ProblemSpec tolerance_case(int k, bool rising = false) {
+  std::vector<std::string> sets = {"adapt.tolerance=1e-" + std::to_string(k)};
+  if (rising) sets.insert(sets.end(), {"adapt.degree=rising", "discretization.space=tensor"});
+  return io::read_problem(example("hp-tolerance"), sets);
 }
 
 void BM_HpToTolerance(benchmark::State& state) {
-  const auto spec = tolerance_case(static_cast<int>(state.range(0)));
+  const auto spec = tolerance_case(static_cast<int>(state.range(0)), state.range(1) == 1);
   adapt::HpOutcome out;
   for (auto _ : state) {
     out = hp_to_tolerance(spec);
@@ -86,7 +91,7 @@ void BM_HpToTolerance(benchmark::State& state) {
   state.counters["newton_iterations"] = newton;
   state.counters["estimate"] = out.estimate.pressure;
 }
-BENCHMARK(BM_HpToTolerance)->ArgName("tol_exp")->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_HpToTolerance)->ArgNames({"tol_exp", "rising"})->ArgsProduct({{3, 4}, {0, 1}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // One linear elastic solve of the final mesh of that loop (its prescribed displacement, no
 // contact): the unit of "the loop costs N linear solves".
