@@ -79,6 +79,7 @@ def test_ball_on_a_flat_is_3d_hertz(ball):
     assert c["hertz_half_width"] == pytest.approx(a, rel=1e-12)
     assert c["hertz_peak_pressure"] == pytest.approx(p0, rel=1e-12)
     assert s["adapt"]["stopped"] == "tolerance reached"
+    assert s["shape_space"] == "tensor"  # goal-oriented degrees keep the tensor space in axisymmetry
     print(f"ball a/R = 0.02: a {c['half_width']:.6g} (Hertz {a:.6g}), p_max {c['pressure_max']:.6g} "
           f"(Hertz {p0:.6g}), L2 {c['multiplier']['e_L2_hertz_percent']:.3g} %, {s['dofs']} DOF")
     assert abs(c["half_width"] / a - 1) < 1e-3

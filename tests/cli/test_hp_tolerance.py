@@ -71,6 +71,7 @@ def test_a_tolerance_of_1e4_is_reached_and_said(to_1e4):
     s, a = to_1e4, to_1e4["adapt"]
     assert s["converged"] and a["converged"] and a["stopped"] == "tolerance reached"
     assert a["tolerance"] == 1e-4 and a["factor"] == 0.15 and a["degree"] == "goal"
+    assert s["shape_space"] == "trunk"  # the default with goal-oriented degrees (plane bodies)
     assert a["estimated_error"]["pressure_rel_L2"] <= 1e-4
     assert a["estimated_error"] == a["history"][-1]["estimated_error"]
     assert all(h["estimated_error"]["pressure_rel_L2"] > 1e-4 for h in a["history"][:-1])

@@ -284,6 +284,10 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
               "value of the input is too large for double precision");
   s.error = exact_error(spec, disc, st.u, s.strain_energy);
   s.extra["units"] = units_note(spec);
+  // The p-version's shape space: its default depends on the adaptivity (docs/input.md).
+  if (spec.discretization.method == model::Method::p)
+    s.extra["shape_space"] =
+        spec.discretization.space == model::ShapeSpace::trunk ? "trunk" : "tensor";
   if (!st.contact.empty()) {
     // Every pair; "contact" is the first (as before several pairs were reported).
     s.extra["contact_pairs"] = contact_pairs_json(st, comparisons);
