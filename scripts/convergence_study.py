@@ -475,10 +475,12 @@ def point_rows(pt, c, control, out):
         k = h.get("step", 0)
         if k < 1:
             continue
-        pk = pmin + k + 1 if rising else degree        # the highest degree of step k's mesh
+        # the lowest and highest degree of step k's mesh (recorded since goal-oriented degrees;
+        # older summaries: the rising rule's)
+        lo, pk = h.get("degree_range") or ((pmin, pmin + k + 1) if rising else (degree, degree))
         row = dict(base, status=status, p=pk, adapt_step=k, elements=h.get("elements"),
                    mesh=f"hp step {k} ({h.get('elements')} el., p = "
-                        + (f"{pmin}…{pk})" if rising else f"{pk})"),
+                        + (f"{lo}…{pk})" if lo != pk else f"{pk})"),
                    dofs=h.get("dofs"), strain_energy=h.get("strain_energy"),
                    wall_time_s=solve_time, run_wall_time_s=s.get("wall_time_s"), v=v,
                    newton_iterations=h.get("newton_iterations"),

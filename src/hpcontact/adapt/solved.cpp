@@ -74,7 +74,14 @@ const ZoneEnd* nearest_end(const std::vector<ZoneEnd>& ends, int body, ZoneEnd::
 SolveFigures figures_of(const Solved& s, const std::vector<ZoneEnd>& ends, double seconds) {
   SolveFigures f;
   f.dofs = s.discretization.n_free;
-  for (const auto& b : s.discretization.bodies) f.elements += b.mesh.n_quads();
+  for (const auto& b : s.discretization.bodies) {
+    f.elements += b.mesh.n_quads();
+    for (int q = 0; q < b.mesh.n_quads(); ++q) {
+      const int p = b.dofs.element(q).max_degree();
+      f.min_degree = f.min_degree == 0 ? p : std::min(f.min_degree, p);
+      f.max_degree = std::max(f.max_degree, p);
+    }
+  }
   f.strain_energy = post::strain_energy(s.discretization, s.solution.u);
   f.newton_iterations = s.solution.newton_iterations;
   f.seconds = seconds;

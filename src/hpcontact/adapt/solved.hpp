@@ -74,6 +74,7 @@ std::vector<NodeForEnd> nearest_movable_nodes(const Solved& s, const std::vector
 /// The figures of one solve of an adaptive loop, as its history records them.
 struct SolveFigures {
   int dofs = 0, elements = 0;
+  int min_degree = 0, max_degree = 0;  ///< over every element of every body
   double strain_energy = 0;
   int newton_iterations = 0;
   double seconds = 0;            ///< the solve(s) behind this record

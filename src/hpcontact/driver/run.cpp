@@ -397,6 +397,7 @@ std::string mesh_yaml(const model::ProblemSpec& spec) {
 nlohmann::json solve_json(const adapt::SolveFigures& f) {
   return {{"dofs", f.dofs},
           {"elements", f.elements},
+          {"degree_range", {f.min_degree, f.max_degree}},
           {"strain_energy", f.strain_energy},
           {"newton_iterations", f.newton_iterations},
           {"gamma_star", points_json(f.gamma_star)},
