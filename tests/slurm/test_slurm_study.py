@@ -120,11 +120,13 @@ def wait_unlocked(run_dir, seconds=60):
 
 def test_cancelled_task_is_a_failed_row_and_resubmission_completes(exe, cluster, tmp_path):
     """scancel of one running task: that row fails with its label and log, the others are
-    collected; submitting again runs only that row, and the study is complete."""
+    collected; submitting again runs only that row, and the study is complete. The slow row
+    takes ~5 s alone (degree 30, 60 Gauss points a direction): at ~2 s it sometimes finished
+    before Slurm reported it running under a loaded machine, and was never cancelled."""
     study = write_study(str(tmp_path), "cancel", f"""study: cancel-one
 runs:
   - {{label: fast-a, case: {P5}, set: [discretization.degree=3]}}
-  - {{label: slow, case: {P15}, set: [discretization.degree=30]}}
+  - {{label: slow, case: {P15}, set: [discretization.degree=30, discretization.quadrature_extra=30]}}
   - {{label: fast-b, case: {P5}, set: [discretization.degree=4]}}
 """)
     out = tmp_path / "out"
