@@ -311,3 +311,17 @@ TEST(ExactContactHertz, AnswerDoesNotDependOnTheAugmentation) {
     for (int i = 0; i < 4; ++i)
       EXPECT_LT(std::abs(f[i] - figures[0][i]), 1e-8 * std::abs(figures[0][i])) << i;
 }
+
+// The cylinder is held by its constraints and its strain is small: Newton's tangents share the
+// displacement block K, which the solve shall factorise once (the load steps' solves each once)
+// however many iterations the contact's active set takes — with the answer of the test above.
+TEST(ExactContactHertz, HeldBodyFactorisesItsStiffnessOncePerLoadStep) {
+  const auto spec = io::read_problem(example("hertz", "p8.yaml"));
+  const auto d = model::discretize(spec);
+  const auto sol = model::solve_contact(spec, d);
+  ASSERT_TRUE(sol.converged) << sol.message;
+  std::printf("p8.yaml: %d Newton iterations, %d factorisations, %d load steps\n",
+              sol.newton_iterations, sol.factorizations, sol.load_steps);
+  EXPECT_GT(sol.newton_iterations, sol.load_steps);
+  EXPECT_EQ(sol.factorizations, sol.load_steps);
+}

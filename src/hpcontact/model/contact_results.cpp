@@ -615,7 +615,8 @@ std::optional<BoundaryPressure> BoundaryPressureProbe::operator()(double s) cons
       const auto& edge = body.mesh.edge(pair_.edges[k]);
       const int q = edge.quads[0], le = edge.local_edge[0];
       BoundaryPressure bp;
-      bp.traction = traction(static_cast<int>(k), t, &bp.x, &bp.X);
+      bp.traction = traction(static_cast<int>(k), t);
+      bp.X = fem::edge_geometry(body.maps[q], le, t, nullptr, nullptr);
       const SideValues sv = side_values(body, pair_, *pair_.obstacle, q, le, t, u_);
       bp.pressure = bp.traction * sv.length_ratio;
       bp.pressure_from_stress = sv.pressure_from_stress;

@@ -103,8 +103,7 @@ struct ContactResult {
 
 /// Pressures at one point of a contact boundary.
 struct BoundaryPressure {
-  Vec2 X;                  ///< undeformed position
-  Vec2 x;                  ///< deformed position
+  Vec2 X;  ///< undeformed position
   /// The contact pressure: normal force per unit length along the obstacle (traction · dS/ds).
   double pressure = 0;
   /// The same from the stresses: −n_o·(P N) dS/ds.

@@ -210,6 +210,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       if (force) no.reference_norm = std::max(no.reference_norm, next * force->second);
       const auto rep = solve::newton(system, trial, no, newton_progress());
       sol.newton_iterations += rep.iterations;
+      sol.factorizations += rep.factorizations;
       if (force) {
         fn = Factors::proportional(system.displacement_factor(trial));
         system.set_force_target(std::nullopt);
@@ -357,6 +358,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       no.reference_norm = std::max(system.force_scale(x), tr.value);
       const auto rep = solve::newton(system, x, no, newton_progress());
       sol.newton_iterations += rep.iterations;
+      sol.factorizations += rep.factorizations;
       const double alpha = system.displacement_factor(x);
       system.set_force_target(std::nullopt);
       x.conservativeResize(system.size());

@@ -22,6 +22,9 @@ struct NonlinearSolution {
   bool converged = false;
   std::string message;  ///< why it stopped, when not converged
   int newton_iterations = 0, load_steps = 0;
+  /// Numeric factorisations of Newton's tangents (fewer than its iterations where the tangent's
+  /// displacement block does not change: bodies held by their constraints at small strain).
+  int factorizations = 0;
   double load_factor = 1;   ///< factor on the prescribed displacements reached (y's, see below)
   /// The factors on the prescribed displacements' x and y components reached (equal unless
   /// the stages give them per direction).

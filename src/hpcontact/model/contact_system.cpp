@@ -2,6 +2,7 @@
 // penalty forces and the multiplier constraints of every pair, on the unknowns of the solve.
 #include "hpcontact/model/contact_system.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -26,7 +27,13 @@ ContactSystem::ContactSystem(const Discretization& d, const std::vector<ContactP
     if (pair.constraints) n_z_ += pair.constraints->size() * (pair.constraints->has_friction() ? 2 : 1);
   }
   gamma_ = Eigen::VectorXd::Zero(n_z_);
-  for (size_t k = 0; k < pairs_.size(); ++k)
+  // The augmentation keeps the displacement block definite where only the contact holds a body
+  // or the finite-strain tangent is indefinite. Bodies held by their constraints at small strain
+  // need none: the Newton step is the same, and the block is K at every iteration (one
+  // factorisation per solve, SaddlePointSolver).
+  const bool held = std::all_of(d_.bodies.begin(), d_.bodies.end(),
+                                [](const Body& b) { return b.free_rigid_motions.empty(); });
+  for (size_t k = 0; k < pairs_.size() && !(held && !d_.finite_strain()); ++k)
     if (const auto& c = pairs_[k].constraints) {
       // the rows κ_j ∇G_j augment the tangent by (κ_j² / γ_j) ∇G_j ∇G_jᵀ = ε_j W_j ∇ĝ_j ∇ĝ_jᵀ
       const Eigen::VectorXd k2w = c->scale.cwiseProduct(c->scale).cwiseProduct(c->weight);

@@ -143,6 +143,18 @@ struct LinearSolver::Impl {
   std::vector<SparseMatrix::StorageIndex> outer, inner;
   bool analysed = false;
 
+  /// Whether A (compressed) is the matrix factorised last, with the same values: then the
+  /// factors in hand are its factors.
+  bool is_factorised(const SparseMatrix& A) const {
+    if (!analysed || A.rows() != matrix.rows() || A.cols() != matrix.cols() ||
+        A.nonZeros() != matrix.nonZeros())
+      return false;
+    const auto n = A.cols(), nnz = A.nonZeros();
+    return std::equal(A.outerIndexPtr(), A.outerIndexPtr() + n + 1, matrix.outerIndexPtr()) &&
+           std::equal(A.innerIndexPtr(), A.innerIndexPtr() + nnz, matrix.innerIndexPtr()) &&
+           std::equal(A.valuePtr(), A.valuePtr() + nnz, matrix.valuePtr());
+  }
+
   /// Whether A has the pattern analysed last; if not, it becomes the pattern to analyse.
   bool same_pattern(const SparseMatrix& A) {
     const auto n = A.cols(), nnz = A.nonZeros();
@@ -178,10 +190,14 @@ LinearSolver& LinearSolver::operator=(LinearSolver&&) noexcept = default;
 void LinearSolver::factorize(const SparseMatrix& A_in) {
   bool ok;
   SmallestPivot smallest;
-  // A copy in compressed storage (the pattern comparison needs it, and LU's solve reads A).
-  impl_->matrix = A_in;
-  impl_->matrix.makeCompressed();
+  // A copy in compressed storage (the comparisons need it, and LU's solve reads A).
+  SparseMatrix copy = A_in;
+  copy.makeCompressed();
+  kept_factors_ = impl_->is_factorised(copy);
+  if (kept_factors_) return;
+  impl_->matrix = std::move(copy);
   const SparseMatrix& A = impl_->matrix;
+  ++factorizations_;
   const bool analyse = !impl_->same_pattern(A);
   impl_->analysed = false;  // until this factorisation has succeeded
   if (analyse) ++analyses_;

@@ -34,6 +34,10 @@ public:
   /// Symmetric matrices are also refused when a pivot is below 1e-11 of its diagonal entry (a
   /// singular matrix whose zero pivot comes out as positive round-off).
   void factorize(const SparseMatrix& A);
+  /// Whether the last factorize() kept the factors of the matrix before it (an equal matrix).
+  bool kept_factors() const { return kept_factors_; }
+  /// Numeric factorisations done so far (those kept not counted), for tests and benchmarks.
+  int factorizations() const { return factorizations_; }
   /// After factorize() refused a matrix: the row of A whose pivot vanished or was negative; -1
   /// after a success, or when the solver names no row (LU).
   int last_singular_row() const { return last_singular_row_; }
@@ -51,6 +55,8 @@ private:
   bool lu_when_indefinite_ = false;
   int last_singular_row_ = -1;
   int analyses_ = 0;
+  int factorizations_ = 0;
+  bool kept_factors_ = false;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -1,4 +1,5 @@
-// Plain Newton–Raphson with a full tangent refactorised every iteration.
+// Plain Newton–Raphson with a full tangent refactorised every iteration (one equal to the last
+// keeps its factors: LinearSolver).
 #include "hpcontact/solve/newton.hpp"
 
 #include <cmath>
@@ -56,7 +57,9 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
     }
     try {
       system.factorize(solver, K);
+      report.factorizations = solver.factorizations();
     } catch (const NumericalError& e) {
+      report.factorizations = solver.factorizations();
       report.status = SolveStatus::singular;
       report.message = e.what();
       report.singular_row = solver.last_singular_row();

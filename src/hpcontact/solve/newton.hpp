@@ -59,6 +59,9 @@ struct SolveReport {
   SolveStatus status = SolveStatus::max_iterations;
   std::string message;
   int iterations = 0;
+  /// Numeric factorisations of the tangent (LinearSolver::factorizations: a tangent equal to
+  /// the last keeps its factors and is not counted).
+  int factorizations = 0;
   int backtracks = 0;  ///< corrections halved because the residual was not finite there
   int line_searches = 0;  ///< corrections shortened by the line search
   int damped_steps = 0;   ///< corrections shortened to what the system admits

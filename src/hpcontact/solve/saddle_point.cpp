@@ -91,7 +91,10 @@ void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, i
   t.reserve(K.nonZeros());
   for (int c = 0; c < K.outerSize(); ++c)
     for (SparseMatrix::InnerIterator it(K, c); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
-  for (int k = 0; k < m_; ++k) {
+  // Without augmentation A is K itself: no pattern of G added, so that it keeps its factors
+  // from one tangent to the next while K does not change (LinearSolver::kept_factors).
+  const bool augmented = (gamma.array() > 0).any();
+  for (int k = 0; k < m_ && augmented; ++k) {
     double w = 0;
     if (!dependent[k] && gamma(k) > 0) {
       w = 1 / gamma(k);
@@ -119,9 +122,11 @@ void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, i
         E_hat.row(it.col()) += inv_gamma_(f) * it.value() * H_tilde_.row(f);
   if (nf == 0) {
     Y_.resize(n_, 0);
+    E_hat_.resize(n_, 0);
+    z_of_column_.clear();
     return;
   }
-  Y_ = sparse.solve_columns(E_hat);
+  solve_columns(sparse, E_hat);
   const Eigen::MatrixXd S = H_tilde_ - G_F * Y_;
   // Equilibrated, D⁻¹ S D⁻¹ with D² = |diag S|: the rows of multipliers whose boundary share is
   // small (near the axis of an axisymmetric body, ∝ r) are as well conditioned as the others,
@@ -138,6 +143,39 @@ void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, i
           "constraint carries";
     throw NumericalError(os.str());
   }
+}
+
+void SaddlePointSolver::solve_columns(const LinearSolver& sparse, Eigen::MatrixXd& E_hat) {
+  // A column of the last tangent's Y is A⁻¹ of its Ê column: it still is when A kept its
+  // factors and the column (of the same multiplier) is unchanged — the gradient of a
+  // constraint that is linear in u, the load factor's column.
+  const int nf = static_cast<int>(free_.size());
+  std::vector<int> column_of_z(m_, -1);
+  // (kept_factors says A is the matrix of the solver's last factorisation; the count, that
+  // the solver has not factorised another since Y was solved.)
+  if (sparse.kept_factors() && &sparse == columns_solver_ &&
+      sparse.factorizations() == columns_factorization_)
+    for (size_t c = 0; c < z_of_column_.size(); ++c)
+      if (z_of_column_[c] < m_) column_of_z[z_of_column_[c]] = static_cast<int>(c);
+  Eigen::MatrixXd Y(n_, nf);
+  std::vector<int> fresh;
+  for (int f = 0; f < nf; ++f) {
+    const int c = column_of_z[free_[f]];
+    if (c >= 0 && E_hat_.col(c) == E_hat.col(f)) Y.col(f) = Y_.col(c);
+    else fresh.push_back(f);
+  }
+  if (!fresh.empty()) {
+    Eigen::MatrixXd B(n_, static_cast<Eigen::Index>(fresh.size()));
+    for (size_t i = 0; i < fresh.size(); ++i) B.col(i) = E_hat.col(fresh[i]);
+    const Eigen::MatrixXd X = sparse.solve_columns(B);
+    for (size_t i = 0; i < fresh.size(); ++i) Y.col(fresh[i]) = X.col(i);
+  }
+  columns_solved_ = static_cast<int>(fresh.size());
+  columns_solver_ = &sparse;
+  columns_factorization_ = sparse.factorizations();
+  z_of_column_ = free_;
+  E_hat_.swap(E_hat);
+  Y_.swap(Y);
 }
 
 Eigen::VectorXd SaddlePointSolver::solve(const LinearSolver& sparse, const Eigen::VectorXd& b) const {

@@ -44,6 +44,9 @@ public:
   /// Multipliers fixed by their own row, and those solved in the Schur complement.
   int n_eliminated() const { return static_cast<int>(dependent_.size()); }
   int n_schur() const { return static_cast<int>(free_.size()); }
+  /// Columns of A⁻¹ Ê the last factorize() solved for (the others kept from the tangent
+  /// before), for tests and benchmarks.
+  int columns_solved() const { return columns_solved_; }
 
 private:
   int n_ = 0, m_ = 0;
@@ -57,6 +60,13 @@ private:
   SparseMatrix G_F_;                   ///< the free rows of G
   Eigen::MatrixXd H_tilde_;            ///< H_FF − H_FD H_DD⁻¹ H_DF
   Eigen::MatrixXd Y_;                  ///< A⁻¹ Ê
+  Eigen::MatrixXd E_hat_;              ///< Ê of the last tangent
+  std::vector<int> z_of_column_;       ///< the multiplier of each column of Ê and Y
+  const LinearSolver* columns_solver_ = nullptr;  ///< whose factors Y was solved with
+  int columns_factorization_ = -1;  ///< its factorizations() then
+  int columns_solved_ = 0;
+  /// Y = A⁻¹ Ê, keeping the columns of the last tangent that are still A⁻¹ Ê; Ê is consumed.
+  void solve_columns(const LinearSolver& sparse, Eigen::MatrixXd& E_hat);
   Eigen::PartialPivLU<Eigen::MatrixXd> S_;  ///< of the equilibrated D⁻¹ S D⁻¹
   Eigen::VectorXd s_scale_;                 ///< D
 };

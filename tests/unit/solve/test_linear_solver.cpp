@@ -232,3 +232,33 @@ TEST(LinearSolver, SamePatternKeepsTheSymbolicAnalysis) {
     EXPECT_EQ(s.analyses(), 2);
   }
 }
+
+// A matrix equal to the one factorised last (pattern and values) shall keep its factors; one
+// that differs in a single value, in place, shall be factorised anew and solved as accurately.
+TEST(LinearSolver, EqualMatrixKeepsItsFactors) {
+  for (auto kind : {LinearSolverKind::cholmod, LinearSolverKind::ldlt, LinearSolverKind::lu}) {
+    LinearSolver s(kind);
+    SparseMatrix A = laplacian_2d(8);
+    const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(A.rows(), -1, 2);
+    s.factorize(A);
+    EXPECT_FALSE(s.kept_factors());
+    s.factorize(SparseMatrix(A));  // an equal copy
+    EXPECT_TRUE(s.kept_factors());
+    EXPECT_EQ(s.factorizations(), 1);
+    EXPECT_LE((s.solve(A * x) - x).norm(), 1e-12 * x.norm());
+    A.coeffRef(7, 7) *= 1 + 1e-9;  // one value, barely
+    s.factorize(A);
+    EXPECT_FALSE(s.kept_factors());
+    EXPECT_EQ(s.factorizations(), 2);
+    EXPECT_LE((s.solve(A * x) - x).norm(), 1e-12 * x.norm());
+  }
+}
+
+// A matrix refused is not kept: the same matrix again is factorised (and refused) again.
+TEST(LinearSolver, RefusedMatrixIsNotKept) {
+  LinearSolver s;
+  const SparseMatrix A = from_triplets(2, {{0, 0, 1.0}, {1, 1, -1.0}});
+  EXPECT_THROW(s.factorize(A), NumericalError);
+  EXPECT_THROW(s.factorize(A), NumericalError);
+  EXPECT_FALSE(s.kept_factors());
+}

@@ -152,3 +152,40 @@ TEST(SaddlePoint, ActiveSetChangeKeepsThePattern) {
   }
   EXPECT_EQ(sparse.analyses(), 1);
 }
+
+// Newton's tangents of a held body at small strain share K and the gradients of constraints
+// linear in u: a second tangent shall solve only the columns of Ê that changed (here the one of
+// a constraint whose gradient moved, and of one that became active), keep the others, and still
+// give J⁻¹ b to round-off.
+TEST(SaddlePoint, UnchangedColumnsAreKeptFromTheLastTangent) {
+  LinearSolver sparse;
+  SaddlePointSolver s;
+  auto tangent = [](double moved, bool third_active) {
+    Blocks b(40, 4, true);
+    b.constraint(0, {{3, 1.0}, {4, -1.0}}, 1.0, 0.0);
+    b.constraint(1, {{13, 1.0}, {14, moved}}, 1.0, 0.0);
+    b.constraint(2, {{23, 1.0}}, 2.0, 0.0);
+    if (third_active) b.constraint(3, {{33, 1.0}, {34, 1.0}}, 1.0, 0.0);
+    else b.fixed(3, {{33, 1.0}, {34, 1.0}}, 1.0);
+    return b;
+  };
+  const Eigen::VectorXd rhs = random_vector(44, 9);
+  auto check = [&](const Blocks& b) {
+    s.factorize(sparse, b.J(), b.n, b.gamma);
+    const Eigen::VectorXd x = s.solve(sparse, rhs);
+    const Eigen::VectorXd x_dense = Eigen::MatrixXd(b.J()).fullPivLu().solve(rhs);
+    EXPECT_LT((x - x_dense).norm(), 1e-12 * x_dense.norm());
+  };
+  check(tangent(-1.0, false));
+  EXPECT_EQ(s.columns_solved(), 3);
+  check(tangent(-1.0, false));  // the same tangent
+  EXPECT_TRUE(sparse.kept_factors());
+  EXPECT_EQ(s.columns_solved(), 0);
+  check(tangent(-0.5, true));  // multiplier 1's gradient moved, multiplier 3 active
+  EXPECT_EQ(s.columns_solved(), 2);
+  EXPECT_EQ(sparse.factorizations(), 1);
+  // Another solver's factors: nothing is kept from a tangent solved with the first.
+  LinearSolver other;
+  s.factorize(other, tangent(-0.5, true).J(), 40, Eigen::VectorXd::Zero(4));
+  EXPECT_EQ(s.columns_solved(), 4);
+}
