@@ -115,8 +115,13 @@ SideValues side_values(const Body& body, const ContactPair& pair, const contact:
   const Vec2 PN = body.finite_strain()
                       ? Vec2(ps.F.determinant() * (sigma * (ps.F.inverse().transpose() * N)))
                       : Vec2(sigma * N);
-  Vec2 x;
-  gap_at(body, contact::RigidPlane(Vec2::Zero(), Vec2(0, 1)), q, le, t, u, &x);
+  // the deformed point, from the shape functions at hand
+  Vec2 x = X;
+  const auto& es = body.dofs.element(q);
+  for (int a = 0; a < es.n_modes(); ++a) {
+    const int dof = body.dof_offset + 2 * es.modes[a];
+    x += pv.N(a) * Vec2(u(dof), u(dof + 1));
+  }
   Vec2 n_o = -N;
   Vec2 normal = Vec2::Zero();
   if (std::isfinite(obstacle.gap(x, &normal, nullptr)) && normal.norm() > 0) {
@@ -579,9 +584,13 @@ BoundaryPressureProbe::BoundaryPressureProbe(const Discretization& d, const Cont
     pair.boundary->set_displacement(u.segment(a.dof_offset, a.dofs.n_dofs()));
     pair.other_boundary->set_displacement(u.segment(b.dof_offset, b.dofs.n_dofs()));
   }
-  for (size_t k = 0; k < pair.edges.size(); ++k)
+  range_.resize(pair.edges.size());
+  for (size_t k = 0; k < pair.edges.size(); ++k) {
     for (int i = 0; i <= kSamples; ++i)
       coord_[k][i] = coordinate(static_cast<int>(k), -1 + 2.0 * i / kSamples);
+    const auto [lo, hi] = std::minmax_element(coord_[k].begin(), coord_[k].end());
+    range_[k] = {*lo, *hi};
+  }
 }
 
 double BoundaryPressureProbe::traction(int k, double t, Vec2* x, Vec2* X) const {
@@ -605,6 +614,7 @@ std::optional<BoundaryPressure> BoundaryPressureProbe::operator()(double s) cons
   const Body& body = d_.bodies[pair_.body];
   const double tol = 1e-12 * (1 + std::abs(s));  // s on a node: round-off must not hide it
   for (size_t k = 0; k < coord_.size(); ++k) {
+    if (s < range_[k].first - tol || s > range_[k].second + tol) continue;
     for (int i = 0; i < kSamples; ++i) {
       double fa = coord_[k][i] - s, fb = coord_[k][i + 1] - s;
       if (std::abs(fa) <= tol) fa = 0;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <utility>
 #include <optional>
 #include <vector>
 
@@ -139,6 +140,7 @@ private:
   const Eigen::VectorXd& u_;
   const Eigen::VectorXd* multipliers_;
   std::vector<std::array<double, kSamples + 1>> coord_;  ///< per edge, at t = -1 + 2i/kSamples
+  std::vector<std::pair<double, double>> range_;        ///< per edge, the least and largest of them
   double coordinate(int edge_index, double t) const;
 };
 
