@@ -3,7 +3,6 @@
 // resultant.
 #include "hpcontact/model/contact_solve.hpp"
 
-#include <Eigen/SparseLU>
 
 #include <algorithm>
 #include <chrono>
@@ -508,12 +507,18 @@ Eigen::VectorXd multiplier_adjoint(const ProblemSpec& spec, const Discretization
   system.evaluate(x, r, &A);
   Eigen::VectorXd g = system.unknowns(Eigen::VectorXd::Zero(sol.u.size()), gradient);
   if (bordered) g(g.size() - 1) = 0;
+  // Aᵀ has the blocks of a tangent (Kᵀ, Gᵀ, Eᵀ, Hᵀ): the system's saddle-point solver takes it
+  // as it takes A (a sparse factorisation of the displacement block, a dense Schur complement).
   const solve::SparseMatrix At = A.transpose();
-  Eigen::SparseLU<solve::SparseMatrix> lu;
-  lu.compute(At);
-  HPC_REQUIRE(lu.info() == Eigen::Success, NumericalError,
-              "the adjoint of the contact problem: its tangent is singular");
-  const Eigen::VectorXd z = lu.solve(g);
+  solve::LinearSolver sparse(system.has_friction() || d.finite_strain()
+                                 ? solve::LinearSolverKind::lu
+                                 : solve::LinearSolverKind::cholmod_else_lu);
+  try {
+    system.factorize(sparse, At);
+  } catch (const NumericalError& e) {
+    throw NumericalError(std::string("the adjoint of the contact problem: ") + e.what());
+  }
+  const Eigen::VectorXd z = system.solve(sparse, g);
   return system.homogeneous_field(z);
 }
 

@@ -85,28 +85,31 @@ void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, i
     }
   }
 
-  // A = K + G_Fᵀ Γ⁻¹ G_F, with the pattern of every stored row of G kept.
+  // A = K + G_Fᵀ Γ⁻¹ G_F, with the pattern of every stored row of G kept. Without augmentation
+  // A is K itself, no pattern of G added: it keeps its factors from one tangent to the next
+  // while K does not change (LinearSolver::kept_factors).
   inv_gamma_ = Eigen::VectorXd::Zero(nf);
-  std::vector<Eigen::Triplet<double>> t;
-  t.reserve(K.nonZeros());
-  for (int c = 0; c < K.outerSize(); ++c)
-    for (SparseMatrix::InnerIterator it(K, c); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
-  // Without augmentation A is K itself: no pattern of G added, so that it keeps its factors
-  // from one tangent to the next while K does not change (LinearSolver::kept_factors).
-  const bool augmented = (gamma.array() > 0).any();
-  for (int k = 0; k < m_ && augmented; ++k) {
-    double w = 0;
-    if (!dependent[k] && gamma(k) > 0) {
-      w = 1 / gamma(k);
-      inv_gamma_(position_[k]) = w;
+  if ((gamma.array() > 0).any()) {
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(K.nonZeros());
+    for (int c = 0; c < K.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(K, c); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
+    for (int k = 0; k < m_; ++k) {
+      double w = 0;
+      if (!dependent[k] && gamma(k) > 0) {
+        w = 1 / gamma(k);
+        inv_gamma_(position_[k]) = w;
+      }
+      for (RowMajor::InnerIterator a(G_rows, k); a; ++a)
+        for (RowMajor::InnerIterator b(G_rows, k); b; ++b)
+          t.emplace_back(a.col(), b.col(), w * a.value() * b.value());
     }
-    for (RowMajor::InnerIterator a(G_rows, k); a; ++a)
-      for (RowMajor::InnerIterator b(G_rows, k); b; ++b)
-        t.emplace_back(a.col(), b.col(), w * a.value() * b.value());
+    SparseMatrix A(n_, n_);
+    A.setFromTriplets(t.begin(), t.end());
+    sparse.factorize(A);
+  } else {
+    sparse.factorize(K);
   }
-  SparseMatrix A(n_, n_);
-  A.setFromTriplets(t.begin(), t.end());
-  sparse.factorize(A);
 
   RowMajor G_F(nf, n_);
   {
