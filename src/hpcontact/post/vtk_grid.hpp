@@ -37,6 +37,10 @@ private:
 
   OutputFile file_;
   std::ostream& out_;
+  int precision_;
+  /// v as text (significant digits: precision_), a point or vector as "x y 0\n".
+  void number(double v);
+  void vector(const Vec2& v);
   std::size_t n_points_ = 0, n_cells_ = 0;
 };
 
