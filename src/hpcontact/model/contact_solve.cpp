@@ -101,6 +101,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
               "and forth along the load path, which friction remembers");
 
   NonlinearSolution sol;
+  sol.elastic = system.elastic();
   Eigen::VectorXd x = Eigen::VectorXd::Zero(system.size());
   // The monitored node's displacement dofs, if any.
   int monitor_dof = -1;
@@ -494,7 +495,10 @@ Eigen::VectorXd multiplier_adjoint(const ProblemSpec& spec, const Discretization
                                    const NonlinearSolution& sol,
                                    const std::vector<Eigen::VectorXd>& gradient) {
   const std::vector<ContactPair> pairs = pairs_of_last_step(sol);  // the system keeps a reference
-  ContactSystem system(d, pairs, spec.discretization.condense);
+  // the solve's own elastic operator when it was of this discretisation (not assembled again)
+  const bool same = sol.elastic && sol.elastic->K.rows() == d.n_dofs;
+  ContactSystem system(d, pairs, spec.discretization.condense, ContactSystem::Tangent::analytic,
+                       same ? sol.elastic : nullptr);
   system.set_factors(sol.displacement_factors, sol.loads_factor);
   // Force control held the first pair's resultant: the functional's change at a fixed force.
   const auto& tr = spec.solver.target_resultant;

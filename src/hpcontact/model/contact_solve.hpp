@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,8 @@
 #include "hpcontact/solve/newton.hpp"
 
 namespace hpcontact::model {
+
+struct ElasticOperator;
 
 struct NonlinearSolution {
   /// All dofs; when not converged, those of the last converged load step (at load_factor, 0
@@ -31,6 +34,9 @@ struct NonlinearSolution {
   Vec2 displacement_factors = Vec2(1, 1);
   double loads_factor = 1;  ///< factor on the loads reached (= load_factor without stages)
   std::vector<ContactPair> pairs;     ///< the contact pairs solved, for post-processing
+  /// The bodies' elastic operator the solve assembled (for another system on the same
+  /// discretisation: multiplier_adjoint).
+  std::shared_ptr<const ElasticOperator> elastic;
   /// The load path, a point per converged step: load factors, the monitored node's
   /// displacement (if solver.monitor), the first pair's contact resultant, iterations.
   struct PathPoint {

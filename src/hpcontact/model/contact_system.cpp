@@ -13,14 +13,17 @@
 namespace hpcontact::model {
 
 ContactSystem::ContactSystem(const Discretization& d, const std::vector<ContactPair>& pairs,
-                             bool condense, Tangent tangent)
+                             bool condense, Tangent tangent,
+                             std::shared_ptr<const ElasticOperator> elastic)
     : d_(d),
       pairs_(pairs),
-      op_(assemble_elastic(d, condense && !d.finite_strain())),
-      K_uu_(op_.unknown_block(d)),
+      op_(elastic ? std::move(elastic)
+                  : std::make_shared<const ElasticOperator>(
+                        assemble_elastic(d, condense && !d.finite_strain()))),
+      K_uu_(op_->unknown_block(d)),
       finite_(d),
       tangent_(tangent),
-      n_u_(op_.n_unknowns) {
+      n_u_(op_->n_unknowns) {
   // per exact pair: its normal multipliers, then (with friction) its tangential ones
   for (const auto& pair : pairs_) {
     z_offset_.push_back(pair.constraints ? n_z_ : -1);
@@ -41,7 +44,7 @@ ContactSystem::ContactSystem(const Discretization& d, const std::vector<ContactP
       if (c->has_friction())
         gamma_.segment(z_offset_[k] + c->size(), c->size()) = k2w.cwiseQuotient(c->tangential_augmentation);
     }
-  K_prescribed_ = op_.K * d_.prescribed;
+  K_prescribed_ = op_->K * d_.prescribed;
   u_committed_ = Eigen::VectorXd::Zero(d_.n_dofs);
   u_step_start_ = u_committed_;
   step_slips_.resize(pairs_.size());
@@ -131,7 +134,7 @@ std::vector<Eigen::VectorXd> ContactSystem::measure_step_slips(const Eigen::Vect
   return slips;
 }
 
-Eigen::VectorXd ContactSystem::load_vector() const { return op_.restrict(d_, op_.load); }
+Eigen::VectorXd ContactSystem::load_vector() const { return op_->restrict(d_, op_->load); }
 
 bool ContactSystem::has_friction() const {
   for (const auto& pair : pairs_)
@@ -142,7 +145,7 @@ bool ContactSystem::has_friction() const {
 Eigen::VectorXd ContactSystem::unknowns(const Eigen::VectorXd& u,
                                         const std::vector<Eigen::VectorXd>& multipliers) const {
   Eigen::VectorXd x = Eigen::VectorXd::Zero(size());
-  x.head(n_u_) = op_.restrict(d_, u);
+  x.head(n_u_) = op_->restrict(d_, u);
   for (size_t k = 0; k < pairs_.size() && k < multipliers.size(); ++k)
     if (z_offset_[k] >= 0 && multipliers[k].size() == n_multipliers(k))
       x.segment(n_u_ + z_offset_[k], multipliers[k].size()) = multipliers[k];
@@ -162,29 +165,29 @@ std::vector<Eigen::VectorXd> ContactSystem::multipliers(const Eigen::VectorXd& x
 
 Eigen::VectorXd ContactSystem::full(const Eigen::VectorXd& x) const {
   const Vec2 f = displacement_factors(x);
-  if (f.x() == f.y()) return op_.expand(d_, x.head(n_u_), f.x());
-  return op_.expand(d_, x.head(n_u_), 0.0) + prescribed(f);
+  if (f.x() == f.y()) return op_->expand(d_, x.head(n_u_), f.x());
+  return op_->expand(d_, x.head(n_u_), 0.0) + prescribed(f);
 }
 
 Eigen::VectorXd ContactSystem::solution(const Eigen::VectorXd& x) const {
   Eigen::VectorXd u = full(x);
-  op_.recover_internal(d_, u, loads_factor(x));
+  op_->recover_internal(d_, u, loads_factor(x));
   return u;
 }
 
 Eigen::VectorXd ContactSystem::homogeneous_field(const Eigen::VectorXd& x) const {
-  Eigen::VectorXd u = op_.expand(d_, x.head(n_u_), 0.0);
-  op_.recover_internal(d_, u, 0.0);
+  Eigen::VectorXd u = op_->expand(d_, x.head(n_u_), 0.0);
+  op_->recover_internal(d_, u, 0.0);
   return u;
 }
 
 double ContactSystem::force_scale(const Eigen::VectorXd& x) const {
-  const Eigen::VectorXd f = op_.K * prescribed(displacement_factors(x));
+  const Eigen::VectorXd f = op_->K * prescribed(displacement_factors(x));
   const Eigen::VectorXd u = full(x);
-  Eigen::VectorXd g = op_.K * u;
+  Eigen::VectorXd g = op_->K * u;
   if (!finite_.empty()) finite_.add(u, g, nullptr, nullptr);
-  return op_.restrict(d_, f).norm() + std::abs(loads_factor(x)) * op_.restrict(d_, op_.load).norm() +
-         op_.restrict(d_, g).norm();
+  return op_->restrict(d_, f).norm() + std::abs(loads_factor(x)) * op_->restrict(d_, op_->load).norm() +
+         op_->restrict(d_, g).norm();
 }
 
 void ContactSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve::SparseMatrix* K) {
@@ -265,7 +268,7 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
     for (const auto& pair : pairs_)
       if (pair.moving) pair.moving->set_load_factors(factors);
   const Eigen::VectorXd u = full(x);
-  Eigen::VectorXd R = op_.K * u - loads_factor(x) * op_.load;
+  Eigen::VectorXd R = op_->K * u - loads_factor(x) * op_->load;
   // The tangent's triplets on all dofs (finite strain, penalty contact, curvature of the
   // multiplier constraints), mapped onto the unknowns below.
   Triplets t_all;
@@ -319,7 +322,7 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
       for (const auto& [dof, v] : s.dG[j]) {
         // force column ∂r_u/∂λ_j = −∂G_j/∂u, and the row's u-part (zeros when inactive, so that
         // the pattern stays)
-        const int i = op_.unknown(d_, dof);
+        const int i = op_->unknown(d_, dof);
         if (i >= 0) {
           T->emplace_back(i, o + j, -v);
           T->emplace_back(o + j, i, active ? c.scale(j) * v : 0.0);
@@ -356,10 +359,10 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
       }
     }
   }
-  r.head(n_u_) = op_.restrict(d_, R);
+  r.head(n_u_) = op_->restrict(d_, R);
   if (!T) return;
   for (const auto& e : t_all) {
-    const int i = op_.unknown(d_, e.row()), j = op_.unknown(d_, e.col());
+    const int i = op_->unknown(d_, e.row()), j = op_->unknown(d_, e.col());
     if (i >= 0 && j >= 0) T->emplace_back(i, j, e.value());
   }
   if (target_) {
@@ -367,10 +370,10 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
     // finite-strain and contact parts from their triplets) less the loads, and of the active
     // constraint rows.
     const int col = size() - 1;
-    Eigen::VectorXd column = K_prescribed_ - op_.load;
+    Eigen::VectorXd column = K_prescribed_ - op_->load;
     for (const auto& e : t_all)
       if (const double up = d_.prescribed(e.col()); up != 0.0) column(e.row()) += e.value() * up;
-    const Eigen::VectorXd cu = op_.restrict(d_, column);
+    const Eigen::VectorXd cu = op_->restrict(d_, column);
     for (int i = 0; i < n_u_; ++i)
       if (cu(i) != 0.0) T->emplace_back(i, col, cu(i));
     for (const auto& e : z_rows)
@@ -397,7 +400,7 @@ void ContactSystem::tangential_rows(const PairConstraints& c, const ConstraintSt
         double free = 0, all = 0;  // |∂G_T/∂u| over the unknowns and over all dofs
         for (const auto& [dof, v] : s.dGT[j]) {
           all += std::abs(v);
-          if (op_.unknown(d_, dof) >= 0) free += std::abs(v);
+          if (op_->unknown(d_, dof) >= 0) free += std::abs(v);
         }
         held = free <= 1e-10 * all;  // round-off of a normal that is the held direction's
       } else {
@@ -431,9 +434,9 @@ void ContactSystem::tangential_rows(const PairConstraints& c, const ConstraintSt
     if (!T) continue;
     // force column ∂r_u/∂λ_T = +dT_j (the body receives −λ_T τ), and the row's u-part cT ∂G_T/∂u
     for (const auto& [dof, v] : s.dT[j])
-      if (const int i = op_.unknown(d_, dof); i >= 0) T->emplace_back(i, row, v);
+      if (const int i = op_->unknown(d_, dof); i >= 0) T->emplace_back(i, row, v);
     for (const auto& [dof, v] : s.dGT[j]) {
-      const int i = op_.unknown(d_, dof);
+      const int i = op_->unknown(d_, dof);
       if (i >= 0) {
         T->emplace_back(row, i, state == State::stick ? cT * v : 0.0);
       } else if (z_rows && state == State::stick) {

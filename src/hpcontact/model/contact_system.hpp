@@ -3,6 +3,7 @@
 // contact multipliers of exactly enforced pairs and, under force control, the load factor.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,8 +37,14 @@ public:
   /// exact Jacobian to O(h²), for checking the analytic one).
   enum class Tangent { analytic, seed_difference, central_difference };
 
+  /// `elastic`: the bodies' elastic operator of d (assemble_elastic with this `condense`) when
+  /// the caller has it from another system on d (NonlinearSolution::elastic), else assembled.
   ContactSystem(const Discretization& d, const std::vector<ContactPair>& pairs, bool condense,
-                Tangent tangent = Tangent::analytic);
+                Tangent tangent = Tangent::analytic,
+                std::shared_ptr<const ElasticOperator> elastic = nullptr);
+
+  /// The bodies' elastic operator, shared with whoever keeps it.
+  const std::shared_ptr<const ElasticOperator>& elastic() const { return op_; }
 
   /// Why the last evaluation failed (an inverted element), empty if it did not.
   const std::string& failure() const { return failure_; }
@@ -147,7 +154,7 @@ private:
   const Discretization& d_;
   const std::vector<ContactPair>& pairs_;
   mutable int points_in_contact_ = 0;
-  ElasticOperator op_;
+  std::shared_ptr<const ElasticOperator> op_;
   solve::SparseMatrix K_uu_;  ///< the linear bodies' tangent on the unknowns, constant
   FiniteStrainForces finite_;
   mutable std::string failure_;
