@@ -417,7 +417,7 @@ MUTATIONS = [
              ["LinearSolver.EqualMatrixKeepsItsFactors",
               "ExactContactHertz.HeldBodyFactorisesItsStiffnessOncePerLoadStep"]),
     Mutation("schur-columns-unchecked", "solve", S + "solve/saddle_point.cpp",
-             "if (c >= 0 && E_hat_.col(c) == E_hat.col(f)) Y.col(f) = Y_.col(c);",
+             "if (c >= 0 && Eigen::VectorXd(E_hat_.col(c)) == E_hat.col(f)) Y.col(f) = Y_.col(c);",
              "if (c >= 0) Y.col(f) = Y_.col(c);",
              "a multiplier's column of A⁻¹Ê kept from the last tangent though its Ê column changed",
              ["SaddlePoint.UnchangedColumnsAreKeptFromTheLastTangent"]),

@@ -125,7 +125,7 @@ void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, i
         E_hat.row(it.col()) += inv_gamma_(f) * it.value() * H_tilde_.row(f);
   if (nf == 0) {
     Y_.resize(n_, 0);
-    E_hat_.resize(n_, 0);
+    E_hat_ = SparseMatrix(n_, 0);
     z_of_column_.clear();
     return;
   }
@@ -148,7 +148,7 @@ void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, i
   }
 }
 
-void SaddlePointSolver::solve_columns(const LinearSolver& sparse, Eigen::MatrixXd& E_hat) {
+void SaddlePointSolver::solve_columns(const LinearSolver& sparse, const Eigen::MatrixXd& E_hat) {
   // A column of the last tangent's Y is A⁻¹ of its Ê column: it still is when A kept its
   // factors and the column (of the same multiplier) is unchanged — the gradient of a
   // constraint that is linear in u, the load factor's column.
@@ -164,7 +164,7 @@ void SaddlePointSolver::solve_columns(const LinearSolver& sparse, Eigen::MatrixX
   std::vector<int> fresh;
   for (int f = 0; f < nf; ++f) {
     const int c = column_of_z[free_[f]];
-    if (c >= 0 && E_hat_.col(c) == E_hat.col(f)) Y.col(f) = Y_.col(c);
+    if (c >= 0 && Eigen::VectorXd(E_hat_.col(c)) == E_hat.col(f)) Y.col(f) = Y_.col(c);
     else fresh.push_back(f);
   }
   if (!fresh.empty()) {
@@ -177,7 +177,7 @@ void SaddlePointSolver::solve_columns(const LinearSolver& sparse, Eigen::MatrixX
   columns_solver_ = &sparse;
   columns_factorization_ = sparse.factorizations();
   z_of_column_ = free_;
-  E_hat_.swap(E_hat);
+  E_hat_ = E_hat.sparseView(0.0, 0.0);  // every nonzero, exactly: Ê's columns are sparse
   Y_.swap(Y);
 }
 

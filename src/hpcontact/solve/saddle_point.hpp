@@ -60,13 +60,13 @@ private:
   SparseMatrix G_F_;                   ///< the free rows of G
   Eigen::MatrixXd H_tilde_;            ///< H_FF − H_FD H_DD⁻¹ H_DF
   Eigen::MatrixXd Y_;                  ///< A⁻¹ Ê
-  Eigen::MatrixXd E_hat_;              ///< Ê of the last tangent
+  SparseMatrix E_hat_;                 ///< Ê of the last tangent (its columns are sparse)
   std::vector<int> z_of_column_;       ///< the multiplier of each column of Ê and Y
   const LinearSolver* columns_solver_ = nullptr;  ///< whose factors Y was solved with
   int columns_factorization_ = -1;  ///< its factorizations() then
   int columns_solved_ = 0;
-  /// Y = A⁻¹ Ê, keeping the columns of the last tangent that are still A⁻¹ Ê; Ê is consumed.
-  void solve_columns(const LinearSolver& sparse, Eigen::MatrixXd& E_hat);
+  /// Y = A⁻¹ Ê, keeping the columns of the last tangent that are still A⁻¹ Ê.
+  void solve_columns(const LinearSolver& sparse, const Eigen::MatrixXd& E_hat);
   Eigen::PartialPivLU<Eigen::MatrixXd> S_;  ///< of the equilibrated D⁻¹ S D⁻¹
   Eigen::VectorXd s_scale_;                 ///< D
 };
