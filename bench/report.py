@@ -238,7 +238,7 @@ def contact_section(runs):
             "As `hpcontact run` does them: read the YAML, discretise, solve (force control), post-process",
             "and write every file (summary.json, contact.csv, pressure.csv, solution.vtu, input.yaml) into a",
             "temporary folder. The time a user waits, less process start-up.", "",
-            "| example | dofs | Newton iterations | time | CPU | spread |", "|---|---:|---:|---:|---:|---:|"]
+            "| example | dofs | Newton iterations (all solves) | time | CPU | spread |", "|---|---:|---:|---:|---:|---:|"]
     examples = ["examples/hertz/p15.yaml", "examples/hertz/bilateral.yaml",
                 "examples/curve-obstacle/crowned-rail.yaml (rp loop)",
                 "examples/hertz/hp-tolerance.yaml (hp loop to 1e-4, its comparisons at every step)",

@@ -43,22 +43,30 @@ Vec2 contact_resultant(const Discretization& d, const ContactPair& pair, const E
 
 namespace {
 
+/// The point X of element q displaced by u: X + Σ_a N_a u_a, N the element's shape functions
+/// there.
+Vec2 displaced(const Body& body, int q, const Eigen::VectorXd& N, const Vec2& X,
+               const Eigen::VectorXd& u) {
+  const auto& es = body.dofs.element(q);
+  Vec2 x = X;
+  for (int a = 0; a < es.n_modes(); ++a) {
+    const int dof = body.dof_offset + 2 * es.modes[a];
+    x += N(a) * Vec2(u(dof), u(dof + 1));
+  }
+  return x;
+}
+
 /// Gap of the deformed boundary at local edge parameter t of element q; the deformed point in
 /// x_out, the undeformed one in X_out.
 double gap_at(const Body& body, const contact::Obstacle& obstacle, int q, int le, double t,
               const Eigen::VectorXd& u, Vec2* x_out, Vec2* X_out = nullptr) {
   const auto& es = body.dofs.element(q);
-  const int n = es.n_modes();
-  Eigen::VectorXd N(n);
+  Eigen::VectorXd N(es.n_modes());
   const auto r = fem::edge_reference_point(le, t);
   es.evaluate(r[0], r[1], N.data(), nullptr, nullptr);
   const Vec2 X = fem::edge_geometry(body.maps[q], le, t, nullptr, nullptr);
   if (X_out) *X_out = X;
-  Vec2 x = X;
-  for (int a = 0; a < n; ++a) {
-    const int dof = body.dof_offset + 2 * es.modes[a];
-    x += N(a) * Vec2(u(dof), u(dof + 1));
-  }
+  const Vec2 x = displaced(body, q, N, X, u);
   if (x_out) *x_out = x;
   return obstacle.gap(x, nullptr, nullptr);
 }
@@ -82,6 +90,7 @@ std::pair<Vec2, Vec2> zone_end(const Body& body, const contact::Obstacle& obstac
 /// What the stresses say at local edge parameter t of element q of a contact boundary, and the
 /// boundary's position and length per unit length along the obstacle.
 struct SideValues {
+  Vec2 X;                     ///< the undeformed point
   double s = 0;               ///< position along the obstacle (of the undeformed point)
   double length_ratio = 1;    ///< dS/ds: undeformed boundary length per unit length along the obstacle
   double minus_sigma_nn = 0;  ///< −n·σ·n, n the outward normal (under finite strain the deformed one)
@@ -109,19 +118,14 @@ SideValues side_values(const Body& body, const ContactPair& pair, const contact:
   Mat2 sigma;
   sigma << ps.stress(0), ps.stress(2), ps.stress(2), ps.stress(1);
   SideValues v;
+  v.X = X;
   v.s = pair.coordinate(X);
   const Vec2 n = body.finite_strain() ? Vec2(ps.F.inverse().transpose() * N).normalized() : N;
   v.minus_sigma_nn = -n.dot(sigma * n);
   const Vec2 PN = body.finite_strain()
                       ? Vec2(ps.F.determinant() * (sigma * (ps.F.inverse().transpose() * N)))
                       : Vec2(sigma * N);
-  // the deformed point, from the shape functions at hand
-  Vec2 x = X;
-  const auto& es = body.dofs.element(q);
-  for (int a = 0; a < es.n_modes(); ++a) {
-    const int dof = body.dof_offset + 2 * es.modes[a];
-    x += pv.N(a) * Vec2(u(dof), u(dof + 1));
-  }
+  const Vec2 x = displaced(body, q, pv.N, X, u);  // from the shape functions at hand
   Vec2 n_o = -N;
   Vec2 normal = Vec2::Zero();
   if (std::isfinite(obstacle.gap(x, &normal, nullptr)) && normal.norm() > 0) {
@@ -626,8 +630,8 @@ std::optional<BoundaryPressure> BoundaryPressureProbe::operator()(double s) cons
       const int q = edge.quads[0], le = edge.local_edge[0];
       BoundaryPressure bp;
       bp.traction = traction(static_cast<int>(k), t);
-      bp.X = fem::edge_geometry(body.maps[q], le, t, nullptr, nullptr);
       const SideValues sv = side_values(body, pair_, *pair_.obstacle, q, le, t, u_);
+      bp.X = sv.X;
       bp.pressure = bp.traction * sv.length_ratio;
       bp.pressure_from_stress = sv.pressure_from_stress;
       bp.minus_sigma_nn = sv.minus_sigma_nn;

@@ -50,6 +50,20 @@ std::string no_force_to_scale(const SolverSpec& ss, const Discretization& d,
   return os.str();
 }
 
+/// The sparse solver of the tangent's displacement block: the input's (solver.linear), with
+/// CHOLMOD giving way to LU when a tangent is not positive definite (the contact's curvature
+/// terms — −p_N M between two bodies, a curve obstacle's — at a deep trial penetration: not a
+/// missing constraint), and LU outright where the block may be unsymmetric or indefinite: the
+/// seed's difference tangent (a column straddling a point's contact switch), finite strain (a
+/// body unstable under compression on its way to a stable state), friction in slip.
+solve::LinearSolverKind tangent_solver(const SolverSpec& ss, const Discretization& d,
+                                       const ContactSystem& system) {
+  const auto kind = solve::linear_solver_kind(ss.linear, ss.where.str() + ".linear");
+  if (ss.tangent == "finite-difference" || d.finite_strain() || system.has_friction())
+    return solve::LinearSolverKind::lu;
+  return kind == solve::LinearSolverKind::cholmod ? solve::LinearSolverKind::cholmod_else_lu : kind;
+}
+
 }  // namespace
 
 NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d,
@@ -67,22 +81,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   solve::NewtonOptions no;
   no.max_iterations = ss.max_iterations;
   no.tolerance = ss.tolerance;
-  no.linear_solver = solve::linear_solver_kind(ss.linear, ss.where.str() + ".linear");
-  // The contact tangent's curvature terms (−p_N M between two bodies, a curve obstacle's
-  // curvature) can make it indefinite away from the solution (a deep trial penetration): it
-  // is not a missing constraint, so CHOLMOD gives way to LU for the rest of the solve.
-  if (no.linear_solver == solve::LinearSolverKind::cholmod)
-    no.linear_solver = solve::LinearSolverKind::cholmod_else_lu;
-  // A finite-difference column that straddles a point's contact switch is inconsistent with
-  // its neighbours: the symmetric part can be indefinite, so it is solved by LU.
-  if (ss.tangent == "finite-difference") no.linear_solver = solve::LinearSolverKind::lu;
-  // The finite-strain tangent is indefinite wherever the body is unstable under compression
-  // (and may be on the way to a stable state): solved by LU.
-  if (d.finite_strain()) no.linear_solver = solve::LinearSolverKind::lu;
-
-  // The unsymmetric tangent of friction in slip: LU. Stick/slip switches make Newton cycle
-  // with a large tangential penalty: the line search is on with friction unless switched off.
-  if (system.has_friction()) no.linear_solver = solve::LinearSolverKind::lu;
+  no.linear_solver = tangent_solver(ss, d, system);
   // Auto: on with friction (stick/slip switches make plain Newton cycle) and between two bodies
   // (a large trial correction projects points onto far parts of the other boundary: the
   // bilateral Hertz example takes 200 iterations without it, 49 with it, same solution).
@@ -495,10 +494,9 @@ Eigen::VectorXd multiplier_adjoint(const ProblemSpec& spec, const Discretization
                                    const NonlinearSolution& sol,
                                    const std::vector<Eigen::VectorXd>& gradient) {
   const std::vector<ContactPair> pairs = pairs_of_last_step(sol);  // the system keeps a reference
-  // the solve's own elastic operator when it was of this discretisation (not assembled again)
-  const bool same = sol.elastic && sol.elastic->K.rows() == d.n_dofs;
+  // the solve's own elastic operator (of d), not assembled again
   ContactSystem system(d, pairs, spec.discretization.condense, ContactSystem::Tangent::analytic,
-                       same ? sol.elastic : nullptr);
+                       sol.elastic);
   system.set_factors(sol.displacement_factors, sol.loads_factor);
   // Force control held the first pair's resultant: the functional's change at a fixed force.
   const auto& tr = spec.solver.target_resultant;
@@ -514,9 +512,7 @@ Eigen::VectorXd multiplier_adjoint(const ProblemSpec& spec, const Discretization
   // Aᵀ has the blocks of a tangent (Kᵀ, Gᵀ, Eᵀ, Hᵀ): the system's saddle-point solver takes it
   // as it takes A (a sparse factorisation of the displacement block, a dense Schur complement).
   const solve::SparseMatrix At = A.transpose();
-  solve::LinearSolver sparse(system.has_friction() || d.finite_strain()
-                                 ? solve::LinearSolverKind::lu
-                                 : solve::LinearSolverKind::cholmod_else_lu);
+  solve::LinearSolver sparse(tangent_solver(spec.solver, d, system));
   try {
     system.factorize(sparse, At);
   } catch (const NumericalError& e) {

@@ -24,6 +24,7 @@ ContactSystem::ContactSystem(const Discretization& d, const std::vector<ContactP
       finite_(d),
       tangent_(tangent),
       n_u_(op_->n_unknowns) {
+  HPC_ASSERT(op_->K.rows() == d.n_dofs, "the elastic operator given is of another discretisation");
   // per exact pair: its normal multipliers, then (with friction) its tangential ones
   for (const auto& pair : pairs_) {
     z_offset_.push_back(pair.constraints ? n_z_ : -1);
@@ -36,7 +37,8 @@ ContactSystem::ContactSystem(const Discretization& d, const std::vector<ContactP
   // factorisation per solve, SaddlePointSolver).
   const bool held = std::all_of(d_.bodies.begin(), d_.bodies.end(),
                                 [](const Body& b) { return b.free_rigid_motions.empty(); });
-  for (size_t k = 0; k < pairs_.size() && !(held && !d_.finite_strain()); ++k)
+  const bool augmented = !held || d_.finite_strain();
+  for (size_t k = 0; augmented && k < pairs_.size(); ++k)
     if (const auto& c = pairs_[k].constraints) {
       // the rows κ_j ∇G_j augment the tangent by (κ_j² / γ_j) ∇G_j ∇G_jᵀ = ε_j W_j ∇ĝ_j ∇ĝ_jᵀ
       const Eigen::VectorXd k2w = c->scale.cwiseProduct(c->scale).cwiseProduct(c->weight);

@@ -2,7 +2,6 @@
 #include "hpcontact/post/vtk_grid.hpp"
 
 #include <charconv>
-#include <iomanip>
 
 namespace hpcontact::post {
 
@@ -10,7 +9,6 @@ VtkGrid::VtkGrid(const std::string& path, const std::vector<Vec2>& points,
                  const std::vector<std::vector<int>>& cells, int vtk_cell_type, int precision)
     : file_(path), out_(file_.stream()), precision_(precision), n_points_(points.size()),
       n_cells_(cells.size()) {
-  out_ << std::setprecision(precision);
   out_ << "<?xml version=\"1.0\"?>\n"
        << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
        << "<UnstructuredGrid>\n"

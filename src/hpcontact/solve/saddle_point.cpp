@@ -154,10 +154,8 @@ void SaddlePointSolver::solve_columns(const LinearSolver& sparse, const Eigen::M
   // constraint that is linear in u, the load factor's column.
   const int nf = static_cast<int>(free_.size());
   std::vector<int> column_of_z(m_, -1);
-  // (kept_factors says A is the matrix of the solver's last factorisation; the count, that
-  // the solver has not factorised another since Y was solved.)
-  if (sparse.kept_factors() && &sparse == columns_solver_ &&
-      sparse.factorizations() == columns_factorization_)
+  // (the same solver, and no factorisation since Y was solved: its factors are still A's)
+  if (&sparse == columns_solver_ && sparse.factorizations() == columns_factorization_)
     for (size_t c = 0; c < z_of_column_.size(); ++c)
       if (z_of_column_[c] < m_) column_of_z[z_of_column_[c]] = static_cast<int>(c);
   Eigen::MatrixXd Y(n_, nf);
