@@ -123,6 +123,80 @@ def half_disc(radius, bottom_x, left_y):
     return all_nodes, all_quads, r(contact), r(arcs), r(cut)
 
 
+def polar_half_disc(radius, first, ratio, sectors, outer):
+    """Nodes, counter-clockwise quads, contact-arc edges, other arc edges and cut edges of the
+    lower half of the disc about (0, R), meshed in rings about the contact point (the origin):
+    ring radii first · ratio^k up to `outer` · R, each ring cut into `sectors` (even) elements
+    between its two points on the arc; a core of three elements inside the first ring, and
+    one layer from the last ring to the cut (the cut in `sectors` equal parts). Elements keep
+    their shape (no slivers) from the contact zone to the cut, unlike the structured grid.
+    Every boundary edge on the circle is an exact arc; the contact edges are the core's two and
+    the first ring's two. Each element's first edge is its edge on the circle, if it has one,
+    in +x; the circle's nodes are numbered first, in x, as in half_disc."""
+    R = radius
+    radii = [first]
+    while radii[-1] * ratio <= outer * R:
+        radii.append(radii[-1] * ratio)
+
+    def ring(r):
+        y = r * r / (2 * R)           # where the ring meets the circle x² + (y - R)² = R²
+        tb = math.atan2(y, math.sqrt(r * r - y * y))
+        return [(r * math.cos(f), r * math.sin(f))
+                for f in (math.pi - tb - (math.pi - 2 * tb) * j / sectors for j in range(sectors + 1))]
+
+    pts = [ring(r) for r in radii]
+    K, m = len(radii) - 1, sectors
+    # the circle's nodes in x: left ring ends outwards-in, the origin, right ring ends
+    on_circle = [pts[k][0] for k in range(K, -1, -1)] + [(0.0, 0.0)] + [pts[k][m] for k in range(K + 1)]
+    nodes, ids = {}, {}
+
+    def nid(key, xy):
+        if key not in ids:
+            ids[key] = len(nodes) + 1
+            nodes[ids[key]] = xy
+        return ids[key]
+
+    for i, xy in enumerate(on_circle):
+        key = ("O",) if i == K + 1 else (("P", K - i, 0) if i <= K else ("P", i - K - 2, m))
+        nid(key, xy)
+    P = lambda k, j: nid(("P", k, j), pts[k][j])  # noqa: E731
+    O = nid(("O",), (0.0, 0.0))
+    C = nid(("C",), (0.0, first / 2))
+    Q = lambda j: nid(("Q", j), (-R + 2 * R * j / m if 2 * j != m else 0.0, R))  # noqa: E731
+    quads = {}
+
+    def quad(*v):
+        quads[len(quads) + 1] = v
+
+    # the core: the two elements on the circle, [P0, O, C, P1] and [O, Pm, Pm-1, C], and the
+    # polygon C, Pm-1, ..., P1 left between them cut into quads [C, Pj+2, Pj+1, Pj] (m even)
+    quad(P(0, 0), O, C, P(0, 1))
+    quad(O, P(0, m), P(0, m - 1), C)
+    for j in range(m - 3, 0, -2):
+        quad(C, P(0, j + 2), P(0, j + 1), P(0, j))
+    for k in range(K):
+        for j in range(m):
+            if j == 0:
+                quad(P(k + 1, 0), P(k, 0), P(k, 1), P(k + 1, 1))
+            elif j == m - 1:
+                quad(P(k, m), P(k + 1, m), P(k + 1, m - 1), P(k, m - 1))
+            else:
+                quad(P(k, j), P(k, j + 1), P(k + 1, j + 1), P(k + 1, j))
+    for j in range(m):
+        if j == 0:
+            quad(Q(0), P(K, 0), P(K, 1), Q(1))
+        elif j == m - 1:
+            quad(P(K, m), Q(m), Q(m - 1), P(K, m - 1))
+        else:
+            quad(P(K, j), P(K, j + 1), Q(j + 1), Q(j))
+    circle = [ids[("P", k, 0)] for k in range(K, -1, -1)] + [O] + [ids[("P", k, m)] for k in range(K + 1)]
+    edges = list(zip(circle, circle[1:]))
+    contact = edges[K - 1:K + 3] if K >= 1 else edges
+    arcs = [e for e in edges if e not in contact] + [(Q(0), circle[0]), (circle[-1], Q(m))]
+    cut = [(Q(j), Q(j + 1)) for j in range(m)]
+    return nodes, quads, contact, arcs, cut
+
+
 def body_lines(name, radius, E, nu, nodes, quads, contact_edges, arcs, cut, sign, constraints,
                loads, shift=0.0):
     """The body's YAML lines; sign = +1 for the upper body (as meshed), -1 for its mirror image
@@ -176,6 +250,19 @@ def main():
     ap.add_argument("--degree", type=int, default=4, help="p-version degree (default %(default)s)")
     ap.add_argument("--steps", type=int, default=2, help="load steps of the shearing stage (default %(default)s)")
     ap.add_argument("--case", default="partial-slip", help="the file's case name (default %(default)s)")
+    ap.add_argument("--mesh", choices=["structured", "polar"], default="structured",
+                    help="structured: the Coons grid graded along the arc (--grade-at, --factor, "
+                         "--layers); polar: rings about the contact point (--ring-ratio, --sectors), "
+                         "a start for hp (default %(default)s)")
+    ap.add_argument("--ring-ratio", type=float, default=3.0,
+                    help="polar: ratio of consecutive ring radii, the first at a (default %(default)s)")
+    ap.add_argument("--sectors", type=int, default=4,
+                    help="polar: elements per ring, even, at least 4 (default %(default)s)")
+    ap.add_argument("--hp-tolerance", type=float,
+                    help="add adapt: {method: hp, tolerance: T}: hp to this relative L2 error of the "
+                         "contact traction (pressure and shear)")
+    ap.add_argument("--hp-steps", type=int,
+                    help="add adapt: {method: hp, steps: N}: N hp steps (with --hp-tolerance the most)")
     args = ap.parse_args()
     if not (args.radius > 0 and args.E > 0 and -1 < args.nu < 0.5 and args.force > 0
             and args.mu > 0 and 0 < args.ratio < 1 and 0 < args.factor < 1 and args.layers >= 0):
@@ -191,17 +278,25 @@ def main():
     if args.overlap is None:
         args.overlap = delta / 20
     Q = args.ratio * args.mu * args.force
-    targets = sorted({"a": a, "c": c}[g] for g in set(args.grade_at))
-    bottom_x = graded_points(targets, args.factor, args.layers, xc)
-    left_y = depth_points(min(targets), args.factor, args.layers, R)
-    nodes, quads, contact, arcs, cut = half_disc(R, bottom_x, left_y)
-    contact = [e for e in contact if max(abs(nodes[e[0]][0]), abs(nodes[e[1]][0])) <= 2 * a + 1e-12]
+    if args.mesh == "polar":
+        if not (args.ring_ratio > 1 and args.sectors >= 4 and args.sectors % 2 == 0):
+            ap.error("--ring-ratio must be > 1 and --sectors even and at least 4")
+        nodes, quads, contact, arcs, cut = polar_half_disc(R, a, args.ring_ratio, args.sectors, 0.5)
+        grading = f"rings about the contact point from a, ratio {hertz_mesh.num(args.ring_ratio)}, {args.sectors} sectors"
+    else:
+        targets = sorted({"a": a, "c": c}[g] for g in set(args.grade_at))
+        bottom_x = graded_points(targets, args.factor, args.layers, xc)
+        left_y = depth_points(min(targets), args.factor, args.layers, R)
+        nodes, quads, contact, arcs, cut = half_disc(R, bottom_x, left_y)
+        contact = [e for e in contact if max(abs(nodes[e[0]][0]), abs(nodes[e[1]][0])) <= 2 * a + 1e-12]
+        grading = f"graded towards {', '.join(args.grade_at)}"
+
     centre = next(n for n, (x, y) in nodes.items() if x == 0.0 and y == R)
     num = hertz_mesh.num
     shear = lambda s: f"      - {{edges: [cut], traction: [{s}, 0], resultant: {num(Q)}}}"  # noqa: E731
     out = [f"# Generated by scripts/partial_slip_mesh.py {' '.join(sys.argv[1:])}",
            f"# Hertz a = {a:.6g} (b/R = {a / R:.3g}), stick zone c = {c:.6g} for Q = {num(Q)} "
-           f"= {num(args.ratio)} mu P at P = {num(args.force)}; graded towards {', '.join(args.grade_at)}.",
+           f"= {num(args.ratio)} mu P at P = {num(args.force)}; {grading}.",
            f"case: {args.case}",
            f"description: Partial slip of two equal cylinders R = {num(R)} mm, P = {num(args.force)} N/mm "
            f"then Q = {num(Q)} N/mm, mu = {num(args.mu)}, p = {args.degree}.",
@@ -218,6 +313,16 @@ def main():
             "discretization:", "  method: p", f"  degree: {args.degree}", "  condense: true", "",
             "solver:", "  stages:", "    - {displacements: 1, loads: 0, steps: 1}",
             f"    - {{displacements: 1, loads: 1, steps: {args.steps}}}"]
+    if args.hp_tolerance is not None or args.hp_steps is not None:
+        out += ["", "adapt:", "  method: hp"]
+    if args.hp_tolerance is not None:
+        if not 0 < args.hp_tolerance < 1:
+            ap.error("--hp-tolerance must lie in (0, 1)")
+        out += [f"  tolerance: {num(args.hp_tolerance)}"]
+    if args.hp_steps is not None:
+        if args.hp_steps < 1:
+            ap.error("--hp-steps must be at least 1")
+        out += [f"  steps: {args.hp_steps}"]
     sys.stdout.write("\n".join(out) + "\n")
 
 

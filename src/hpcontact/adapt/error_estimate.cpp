@@ -37,10 +37,13 @@ ErrorEstimate estimate_error(const Solved& coarse, const Solved& enriched) {
   const auto& b = enriched.solution;
   HPC_REQUIRE(a.pairs.size() == b.pairs.size(), AdaptError,
               "estimate_error: the two solves have different contact pairs");
-  double diff2 = 0, norm2 = 0;
+  double diff2 = 0, norm2 = 0, shear_diff2 = 0, shear_norm2 = 0;
+  bool friction = false;
   for (size_t k = 0; k < a.pairs.size(); ++k) {
     const model::BoundaryPressureProbe pa(coarse.discretization, a.pairs[k], a.u, a.multipliers_of(k));
     const model::BoundaryPressureProbe pb(enriched.discretization, b.pairs[k], b.u, b.multipliers_of(k));
+    const bool shear = pa.has_tangential_traction() && pb.has_tangential_traction();
+    friction = friction || shear;
     const auto& body = enriched.discretization.bodies[b.pairs[k].body];
     for (size_t e = 0; e < b.pairs[k].edges.size(); ++e) {
       const auto& edge = body.mesh.edge(b.pairs[k].edges[e]);
@@ -55,11 +58,18 @@ ErrorEstimate estimate_error(const Solved& coarse, const Solved& enriched) {
         const double ta = pa.traction(ke, t), tb = pb.traction(ke, t);
         diff2 += rule.weights[i] * ds_dt * (ta - tb) * (ta - tb);
         norm2 += rule.weights[i] * ds_dt * tb * tb;
+        if (!shear) continue;
+        const double sa = pa.tangential_traction(ke, t), sb = pb.tangential_traction(ke, t);
+        shear_diff2 += rule.weights[i] * ds_dt * (sa - sb) * (sa - sb);
+        shear_norm2 += rule.weights[i] * ds_dt * sb * sb;
       }
     }
   }
   ErrorEstimate est;
   if (norm2 > 0) est.pressure = std::sqrt(diff2 / norm2);
+  // A frictional contact that carries no shear (loaded normally only) has no relative error of
+  // it: its absolute one is then measured against the pressure's size.
+  if (friction) est.shear = std::sqrt(shear_diff2 / (shear_norm2 > 0 ? shear_norm2 : norm2));
   const double ua = post::strain_energy(coarse.discretization, a.u);
   const double ub = post::strain_energy(enriched.discretization, b.u);
   if (ub > 0) est.energy = std::sqrt(std::abs(ub - ua) / ub);
@@ -68,29 +78,41 @@ ErrorEstimate estimate_error(const Solved& coarse, const Solved& enriched) {
   return est;
 }
 
-namespace {
-
-/// ∂J/∂λ of J(λ) = ∫ (t⁺ − t) λ ds for the multipliers of `enriched`, per pair: W_j (t⁺ − t) at
-/// each of its multiplier nodes (tangential multipliers: 0).
 std::vector<Eigen::VectorXd> traction_error_gradient(const Solved& coarse, const Solved& enriched) {
   const auto& a = coarse.solution;
   const auto& b = enriched.solution;
   std::vector<Eigen::VectorXd> g(b.pairs.size());
+  double norm2 = 0, shear_norm2 = 0;
   for (size_t k = 0; k < b.pairs.size(); ++k) {
     const auto& c = b.pairs[k].constraints;
     if (!c) continue;
     const model::BoundaryPressureProbe pa(coarse.discretization, a.pairs[k], a.u, a.multipliers_of(k));
     const model::BoundaryPressureProbe pb(enriched.discretization, b.pairs[k], b.u, b.multipliers_of(k));
-    g[k] = Eigen::VectorXd::Zero(c->size() * (c->has_friction() ? 2 : 1));
-    for (int j = 0; j < c->size(); ++j) {
+    const int n = c->size();
+    const bool shear = pa.has_tangential_traction() && pb.has_tangential_traction();
+    g[k] = Eigen::VectorXd::Zero(n * (c->has_friction() ? 2 : 1));
+    for (int j = 0; j < n; ++j) {
       const auto& node = c->nodes.nodes[j];
-      g[k](j) = node.weight * (pb.traction(node.edge, node.t) - pa.traction(node.edge, node.t));
+      const double tb = pb.traction(node.edge, node.t);
+      g[k](j) = node.weight * (tb - pa.traction(node.edge, node.t));
+      norm2 += node.weight * tb * tb;
+      if (!shear) continue;
+      const double sb = pb.tangential_traction(node.edge, node.t);
+      g[k](n + j) = node.weight * (sb - pa.tangential_traction(node.edge, node.t));
+      shear_norm2 += node.weight * sb * sb;
     }
+  }
+  // Without shear (loaded normally only) its absolute error counts against the pressure's size.
+  if (shear_norm2 <= 0) shear_norm2 = norm2;
+  for (size_t k = 0; k < g.size(); ++k) {
+    if (!g[k].size()) continue;
+    const int n = b.pairs[k].constraints->size();
+    if (norm2 > 0) g[k].head(n) /= norm2;
+    if (g[k].size() > n && shear_norm2 > 0) g[k].tail(n) /= shear_norm2;
   }
   return g;
 }
 
-}  // namespace
 
 std::vector<std::vector<double>> surplus_energies(const model::Discretization& coarse,
                                                   const model::Discretization& enriched,

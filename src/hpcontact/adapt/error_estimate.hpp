@@ -2,6 +2,7 @@
 // the same mesh, and the change of the contact pressure and the energy between the two.
 #pragma once
 
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -17,12 +18,23 @@ struct ErrorEstimate {
   /// ‖t − t⁺‖ / ‖t⁺‖ in L2 over the contact edges of every pair, t the traction the method
   /// carries (the multiplier, or the penalty traction) per unit undeformed length.
   double pressure = none;
+  /// The same of the tangential traction λ_T over the pairs enforced exactly with friction; not a
+  /// number without one.
+  double shear = none;
   /// √(|U⁺ − U| / U⁺), U the strain energy: the relative energy-norm error the difference
   /// shows (U − U⁺ = ‖u⁺ − u‖²_E for a linear problem, Pythagoras).
   double energy = none;
   int dofs = 0;                ///< free dofs of the solve one degree higher
   int newton_iterations = 0;   ///< of that solve
   double seconds = 0;          ///< of that solve
+
+  /// What a tolerance on the contact traction is held to: the larger of the pressure's and
+  /// the shear's relative errors (the pressure's alone without friction); not a number if the
+  /// pressure's is not.
+  double traction() const {
+    if (!(shear > pressure)) return pressure;  // no shear (NaN), or the pressure's is larger
+    return std::isnan(pressure) ? pressure : shear;
+  }
 };
 
 /// The problem with the degree of every element of every body raised by one (p_xi and p_eta);
@@ -39,12 +51,22 @@ std::vector<std::vector<double>> surplus_energies(const model::Discretization& c
                                                   const model::Discretization& enriched,
                                                   const Eigen::VectorXd& field);
 
+/// ∂J/∂λ of the goal J(λ) = ∫ (t⁺ − t) λ ds / ‖t⁺‖² + ∫ (t_T⁺ − t_T) λ_T ds / ‖t_T⁺‖² for the
+/// multipliers of `enriched`, per pair (empty for a penalty pair): W_j (t⁺ − t) / ‖t⁺‖² at each
+/// multiplier node j (W_j its weight), and with friction W_j (t_T⁺ − t_T) / ‖t_T⁺‖² at each
+/// tangential one; the norms Σ W_j t⁺_j² over every pair's nodes (a shear of zero: the
+/// pressure's). J(λ⁺) − J(λ) is then the sum of the squared relative errors of the pressure and
+/// the shear at the nodes: the two weigh alike.
+std::vector<Eigen::VectorXd> traction_error_gradient(const Solved& coarse, const Solved& enriched);
+
 /// Where `coarse`'s error in the contact traction comes from, element by element (goal-oriented,
 /// dual-weighted): per body, per element K, η_K = √(S_K(u⁺) · E_K(z⁺)), with S_K(u⁺) the surplus
 /// energy of the solve one degree higher (surplus_energies: what K's own degree leaves out) and
 /// E_K(z⁺) the strain energy on K of its adjoint (model::multiplier_adjoint) for
-/// J(λ) = ∫ (t⁺ − t) λ ds over the exactly enforced pairs' contact edges, the traction's error
-/// as the weight: by Cauchy–Schwarz, how much an error of K's size moves J. Without exact pairs
+/// J(λ) = ∫ (t⁺ − t) λ ds / ‖t⁺‖² + ∫ (t_T⁺ − t_T) λ_T ds / ‖t_T⁺‖² over the exactly enforced
+/// pairs' contact edges (the second term with friction), the traction's error as the weight,
+/// each part relative to its size (traction_error_gradient): by Cauchy–Schwarz, how much an
+/// error of K's size moves J. Without exact pairs
 /// (no multipliers), or when the adjoint cannot be solved (said through `progress`), S_K alone.
 std::vector<std::vector<double>> traction_error_indicators(const Solved& coarse,
                                                            const Solved& enriched,

@@ -68,8 +68,9 @@ std::string limit_message(const HpOutcome& out, const HpOptions& options, const 
   std::ostringstream os;
   os.precision(3);
   os << "hp: the tolerance " << options.tolerance << " was not reached: " << why
-     << "; the smallest estimated error, " << out.estimate.pressure << " (contact pressure, "
-     << "relative L2), is that of the result kept";
+     << "; the smallest estimated error, " << out.estimate.traction() << " (contact "
+     << (out.estimate.traction() == out.estimate.pressure ? "pressure" : "shear")
+     << ", relative L2), is that of the result kept";
   return os.str();
 }
 
@@ -199,13 +200,15 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         std::ostringstream os;
         os.precision(3);
         os << "hp step " << step << ": estimated error " << rec.estimate.pressure
-           << " (pressure, relative L2), " << rec.estimate.energy << " (energy)";
+           << " (pressure, relative L2), ";
+        if (!std::isnan(rec.estimate.shear)) os << rec.estimate.shear << " (shear), ";
+        os << rec.estimate.energy << " (energy)";
         say(os.str());
       }
       // Goal-oriented degrees learn from the steps on the refined meshes (the input mesh's
       // degrees are not the rule's).
       if (options.degree == model::HpDegree::goal && step > 0 &&
-          !(rec.estimate.pressure <= options.tolerance)) {
+          !(rec.estimate.traction() <= options.tolerance)) {
         const auto [raised, lowered] = corrections.learn(*s, *enriched, progress);
         rec.degrees_learnt = true;
         rec.degrees_raised = raised;
@@ -214,11 +217,11 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       out.history.push_back(rec);
       // The best estimated step so far (an estimate that is not a number is never the best; one
       // below the tolerance is, every earlier one having been above it).
-      const bool better = std::isfinite(rec.estimate.pressure) &&
-                          !(rec.estimate.pressure >= out.estimate.pressure);
+      const bool better = std::isfinite(rec.estimate.traction()) &&
+                          !(rec.estimate.traction() >= out.estimate.traction());
       if (!out.last || better) keep(s, rec.estimate);
       if (observe) observe(rec, *s);
-      if (rec.estimate.pressure <= options.tolerance) {
+      if (rec.estimate.traction() <= options.tolerance) {
         out.converged = true;
         out.stopped = "tolerance reached";
         return out;

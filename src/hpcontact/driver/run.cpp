@@ -422,12 +422,14 @@ nlohmann::json rp_iteration_json(const adapt::RpIteration& it) {
 /// An error estimate as summary.json keeps it (null where there is none).
 nlohmann::json estimate_json(const adapt::ErrorEstimate& e) {
   auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
-  return {{"pressure_rel_L2", number(e.pressure)},
-          {"energy_rel", number(e.energy)},
-          {"from", "one degree more on the same mesh"},
-          {"dofs", e.dofs},
-          {"newton_iterations", e.newton_iterations},
-          {"solve_time_s", e.seconds}};
+  nlohmann::json j = {{"pressure_rel_L2", number(e.pressure)},
+                      {"energy_rel", number(e.energy)},
+                      {"from", "one degree more on the same mesh"},
+                      {"dofs", e.dofs},
+                      {"newton_iterations", e.newton_iterations},
+                      {"solve_time_s", e.seconds}};
+  if (!std::isnan(e.shear)) j["shear_rel_L2"] = number(e.shear);
+  return j;
 }
 
 nlohmann::json hp_iteration_json(const adapt::HpIteration& it) {

@@ -217,7 +217,8 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "p-version shape space: full tensor product or trunk (serendipity). Absent: trunk "
               "for hp with goal-oriented degrees (adapt.degree goal, the default with "
               "adapt.tolerance: fewer dofs for an accuracy, examples/hertz/CONVERGENCE.md) "
-              "without axisymmetric bodies, else tensor.",
+              "without axisymmetric bodies and friction, else tensor (with friction the trunk "
+              "space's shear scatters in the stick zone, examples/partial-slip).",
        .choices = {"tensor", "trunk"}},
       {.path = "discretization.element", .type = T::choice, .default_yaml = "Q8",
        .doc = "h-version element (ignored by the p-version).", .choices = {"Q4", "Q8", "Q9"}},
@@ -503,7 +504,8 @@ const std::vector<KeySpec>& input_schema() {
               "the estimated error is below it. none: no adaptivity.",
        .choices = {"rp", "hp", "none"}},
       {.path = "adapt.tolerance", .type = T::number,
-       .doc = "hp: the accuracy asked for, the relative L2 error of the contact pressure, in "
+       .doc = "hp: the accuracy asked for, the relative L2 error of the contact pressure (with "
+              "exact Coulomb friction also of the shear, the larger of the two), in "
               "(0, 1); each step's error is estimated from a solve one degree higher on its mesh "
               "and the loop stops at the first below it (adapt.steps is then the most it may "
               "take); absent: adapt.steps steps. rp: stop when every moved node is within this "
@@ -532,7 +534,8 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "hp: rising: min_degree at Γ* and one more per layer away from it (elements far "
               "from Γ* get min_degree + steps + 1); constant: discretization.degree everywhere; "
               "goal (needs adapt.tolerance): rising, and after each step an element whose "
-              "goal-oriented indicator of the contact traction's error per dof of one degree "
+              "goal-oriented indicator of the contact traction's error (pressure and, with "
+              "friction, shear, each relative to its size) per dof of one degree "
               "more is above 3 times the mean gets one degree more in every later step, one "
               "below 0.1 times the mean one less (docs/theory.md, Goal-oriented degrees). "
               "Absent: goal with adapt.tolerance, else rising.",
@@ -756,7 +759,7 @@ std::string input_schema_markdown() {
         "its `dofs`, `elements`, `degree_range` [lowest, highest], "
         "`stopped` why the loop ended, `result_step` the one kept; hp with a tolerance: "
         "`estimated_error` of the result and of each step — `pressure_rel_L2`, `energy_rel`, "
-        "from a solve one degree higher on the step's mesh; with goal-oriented degrees each step's "
+        "with exact Coulomb friction `shear_rel_L2`, from a solve one degree higher on the step's mesh; with goal-oriented degrees each step's "
         "`degrees`, how many elements it gave a degree more and a degree less), `error` with "
         "`exact`.\n"
         "- `contact.csv`: a row per contact point — exact contact: the multiplier nodes; "

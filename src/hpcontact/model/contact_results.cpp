@@ -607,6 +607,16 @@ double BoundaryPressureProbe::traction(int k, double t, Vec2* x, Vec2* X) const 
   return g < 0 ? -pair_.penalty * g : 0.0;
 }
 
+bool BoundaryPressureProbe::has_tangential_traction() const {
+  return pair_.constraints && multipliers_ && pair_.constraints->has_friction();
+}
+
+double BoundaryPressureProbe::tangential_traction(int k, double t) const {
+  if (!has_tangential_traction()) return 0;
+  const int n = pair_.constraints->size();
+  return pair_.constraints->nodes.interpolate(k, t, multipliers_->segment(n, n));
+}
+
 double BoundaryPressureProbe::coordinate(int k, double t) const {
   const Body& body = d_.bodies[pair_.body];
   const auto& edge = body.mesh.edge(pair_.edges[k]);

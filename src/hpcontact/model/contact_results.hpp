@@ -130,6 +130,11 @@ public:
   /// λ_h or eps_N <-g_N>, per unit undeformed length; x, X (may be null) the point deformed and
   /// undeformed.
   double traction(int k, double t, Vec2* x = nullptr, Vec2* X = nullptr) const;
+  /// Whether the pair carries a tangential multiplier (exact enforcement with friction).
+  bool has_tangential_traction() const;
+  /// The tangential multiplier λ_T,h at parameter t of contact edge k, per unit undeformed
+  /// length, signed along the pair's friction tangent; 0 without has_tangential_traction().
+  double tangential_traction(int k, double t) const;
   /// The coordinates s of the contact edges' ends, where the pressures are not smooth.
   std::vector<double> edge_ends() const;
 
