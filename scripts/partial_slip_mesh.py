@@ -288,7 +288,10 @@ def main():
         bottom_x = graded_points(targets, args.factor, args.layers, xc)
         left_y = depth_points(min(targets), args.factor, args.layers, R)
         nodes, quads, contact, arcs, cut = half_disc(R, bottom_x, left_y)
-        contact = [e for e in contact if max(abs(nodes[e[0]][0]), abs(nodes[e[1]][0])) <= 2 * a + 1e-12]
+        # the contact edges within 2a; the arc's other edges stay exact arcs
+        near = [e for e in contact if max(abs(nodes[e[0]][0]), abs(nodes[e[1]][0])) <= 2 * a + 1e-12]
+        arcs = arcs + [e for e in contact if e not in near]
+        contact = near
         grading = f"graded towards {', '.join(args.grade_at)}"
 
     centre = next(n for n, (x, y) in nodes.items() if x == 0.0 and y == R)
