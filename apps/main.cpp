@@ -26,6 +26,7 @@
 #include <omp.h>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/core/stop.hpp"
 #include "hpcontact/driver/contact_compare.hpp"
 #include "hpcontact/driver/run.hpp"
 #include "hpcontact/driver/slurm_study.hpp"
@@ -89,6 +90,28 @@ std::string output_folder(const std::string& out_dir, const std::string& file) {
 /// 2 the command line itself is wrong.
 constexpr int kFailed = 1;
 
+/// `run` under SIGTERM, SIGINT or SIGHUP (a scheduler's time limit, Ctrl-C): the solve is asked
+/// to stop (core/stop.hpp) instead of the process being killed, so that the run ends as a failed
+/// run that keeps what had converged in last-good/; the process then ends by the same signal. A
+/// second signal kills at once (the handler restores the default).
+extern "C" void stop_on_signal(int signal) {
+  request_stop(signal);
+  std::signal(signal, SIG_DFL);
+}
+
+void stop_runs_on_signals() {
+  for (const int signal : {SIGTERM, SIGINT, SIGHUP}) std::signal(signal, stop_on_signal);
+}
+
+/// After a run that failed because it was asked to stop (its error said what last-good/ holds):
+/// says so and ends by the signal.
+void end_by_stop_signal() {
+  const int signal = stop_signal();
+  std::cerr << "hpcontact: " << stop_reason() << " before the run finished\n";
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
 int run_command(const std::string& file, std::string out_dir, const std::vector<std::string>& sets,
                 bool quiet, const JsonLog* log) {
   out_dir = output_folder(out_dir, file);
@@ -103,7 +126,8 @@ int run_command(const std::string& file, std::string out_dir, const std::vector<
     options.progress = [log](const std::string& line) { log->progress(line); };
     log->event("start", {{"case", read.spec.case_name}, {"file", file}, {"out", out_dir}});
   } else if (!quiet) {
-    options.progress = [](const std::string& line) { std::cout << "  " << printable(line) << '\n'; };
+    // each line flushed: a log followed while the run goes on (tail -f, a scheduler's file)
+    options.progress = [](const std::string& line) { std::cout << "  " << printable(line) << std::endl; };
     std::cout << "hpcontact: " << printable(file) << " (" << printable(read.spec.case_name) << ")\n";
   }
   const auto result = driver::run_problem(read.spec, options);
@@ -387,6 +411,7 @@ int main(int argc, char** argv) {
   try {
     if (*run) {
       const JsonLog log;
+      stop_runs_on_signals();
       try {
         const int code = run_command(file, out_dir, sets, quiet, log_json ? &log : nullptr);
         if (!std::cout)
@@ -396,6 +421,10 @@ int main(int argc, char** argv) {
         return code;
       } catch (const std::exception& e) {
         if (log_json) log.event("error", {{"message", e.what()}});
+        if (stop_signal() > 0) {
+          std::cerr << "hpcontact: error: " << printable(e.what()) << '\n';
+          end_by_stop_signal();
+        }
         throw;
       }
     }

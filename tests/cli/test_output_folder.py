@@ -117,7 +117,7 @@ def test_user_file_with_an_output_name_refuses_the_folder(hpcontact, root, tmp_p
 
 def test_user_files_and_earlier_results_survive_every_run(hpcontact, exe, root, tmp_path):
     """A user's folder used as --out: after a successful, a failing (a --set typo, a solver
-    failure with and without a converged step) and an interrupted run, every user file is
+    failure with and without a converged step), a stopped and a killed run, every user file is
     byte-identical and the previous results are intact until a new run succeeds."""
     out = user_folder(tmp_path)
     mine = snapshot(out)
@@ -135,11 +135,20 @@ def test_user_files_and_earlier_results_survive_every_run(hpcontact, exe, root, 
         assert r.returncode == code, (bad, r.stderr)
         assert results(out) == first, bad
 
-    # Interrupted while solving: nothing changes (its staging folder is left for the next run).
+    # Stopped while solving (SIGTERM): the solve stops before its next Newton iteration, the run
+    # ends by the signal, nothing is left staged and the earlier results stay (what had
+    # converged, if a load step had, would be in last-good/: test_stop_signal.py).
     p = start(exe, "run", os.path.join(root, LONG[0]), "--out", out, *LONG[1:])
     p.send_signal(signal.SIGTERM)
     assert p.wait(timeout=60) == -signal.SIGTERM
-    assert results(out) == first
+    assert {k: v for k, v in results(out).items() if not k.startswith("last-good/")} == first
+    assert not any(name.startswith(".hpcontact-staging-") for name in os.listdir(out))
+
+    # Killed outright (SIGKILL): nothing changes; its staging folder is left for the next run.
+    p = start(exe, "run", os.path.join(root, LONG[0]), "--out", out, *LONG[1:])
+    p.send_signal(signal.SIGKILL)
+    assert p.wait(timeout=60) == -signal.SIGKILL
+    assert {k: v for k, v in results(out).items() if not k.startswith("last-good/")} == first
     assert any(name.startswith(".hpcontact-staging-") for name in os.listdir(out))
 
     # A failure after a converged step adds last-good/ (converged: false) and changes nothing else.

@@ -235,6 +235,12 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
         continue;
       }
       in_a_row = 0;
+      if (rep.status == solve::SolveStatus::stopped) {  // asked to stop: no cuts, keep what converged
+        std::ostringstream os;
+        os << "load step " << sol.load_steps + 1 << " (" << fn.describe() << "): " << rep.message;
+        sol.message = os.str();
+        return false;
+      }
       const std::string why = failure_reason(rep);
       // A tangent made singular by a body that only contact holds (its constraints leave a
       // rigid motion free) stays singular on a shorter step: no cuts then.

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/core/stop.hpp"
 
 namespace hpcontact::solve {
 
@@ -103,6 +104,12 @@ ArcLengthReport arc_length(LoadPathSystem& system, Eigen::VectorXd& x, double& l
   const double max_length = o.max_length > 0 ? o.max_length : 8 * dl;
   Eigen::VectorXd previous_dx;
   while (static_cast<int>(rep.steps.size()) < o.max_steps) {
+    if (stop_requested()) {
+      std::ostringstream os;
+      os << "the arc-length method was " << stop_reason() << " at load factor " << lambda;
+      rep.message = os.str();
+      return rep;
+    }
     Eigen::VectorXd xt = x;
     double lt = lambda;
     int its = 0;

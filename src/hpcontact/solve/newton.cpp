@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/core/stop.hpp"
 
 namespace hpcontact::solve {
 
@@ -20,6 +21,12 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
   Eigen::VectorXd dx;
   bool evaluated = false;  // r and K already hold the state x (the line search's full step)
   for (int it = 0;; ++it) {
+    if (stop_requested()) {
+      report.status = SolveStatus::stopped;
+      report.message = std::string(stop_reason()) + " before Newton iteration " + std::to_string(it);
+      report.iterations = it;
+      return report;
+    }
     if (!evaluated) system.evaluate(x, r, &K);
     evaluated = false;
     double rn = r.norm();

@@ -52,7 +52,8 @@ struct NewtonOptions {
   bool line_search = false;
 };
 
-enum class SolveStatus { converged, max_iterations, not_finite, singular };
+/// stopped: a stop was requested (core/stop.hpp) before an iteration; x is the last iterate.
+enum class SolveStatus { converged, max_iterations, not_finite, singular, stopped };
 
 /// Outcome of a solve; non-convergence is a status, not an exception.
 struct SolveReport {

@@ -1,0 +1,78 @@
+"""A run asked to stop (SIGTERM from a scheduler's time limit, SIGINT from Ctrl-C) keeps what had
+converged instead of being killed with nothing: the solve stops before its next Newton
+iteration, the run ends as a failed run (the converged state in last-good/, converged: false,
+no summary.json of its own in the folder, the earlier results left as they were), and the
+process ends by the signal it was sent."""
+import json
+import os
+import signal
+import subprocess
+
+import pytest
+
+PARTIAL_SLIP = os.path.join("examples", "partial-slip")
+
+
+def run_until(exe, case, out, marker, sig, *sets):
+    """Runs `case` into `out`, sends `sig` when a progress line starts with `marker`; returns
+    (exit status, stderr, the progress lines up to the marker)."""
+    args = [exe, "run", case, "--out", str(out)]
+    for s in sets:
+        args += ["--set", s]
+    p = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    seen = []
+    for line in p.stdout:
+        seen.append(line)
+        if line.strip().startswith(marker):
+            p.send_signal(sig)
+            break
+    _, err = p.communicate(timeout=120)
+    assert seen and seen[-1].strip().startswith(marker), "the marker line never came: " + err
+    return p.returncode, err, seen
+
+
+def last_good(out):
+    return json.loads((out / "last-good" / "summary.json").read_text())
+
+
+@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT])
+def test_a_stopped_load_path_keeps_its_converged_steps(exe, root, tmp_path, sig):
+    """small-load.yaml (three load steps) stopped after its first: the process ends by the
+    signal, last-good/ holds the first step (load_steps 1, converged false), and the message
+    names the signal and the load step it stopped in."""
+    out = tmp_path / "r"
+    code, err, _ = run_until(exe, os.path.join(root, PARTIAL_SLIP, "small-load.yaml"), out,
+                             "load step 1:", sig)
+    assert code == -sig
+    name = signal.Signals(sig).name
+    assert f"stopped by {name} before Newton iteration" in err and "load step 2" in err
+    assert not (out / "summary.json").exists()
+    s = last_good(out)
+    assert s["converged"] is False and s["load_steps"] == 1
+
+
+def test_a_stopped_hp_loop_keeps_its_best_step(exe, root, tmp_path):
+    """hp to 1e-4 on the partial-slip example, stopped once its first steps are estimated: the
+    best estimated step so far is kept in last-good/ with the loop's history up to it, and the
+    earlier results in the folder (a finished run of the same problem to 1e-2) stay."""
+    case = os.path.join(root, PARTIAL_SLIP, "hp-tolerance.yaml")
+    out = tmp_path / "r"
+    done = subprocess.run([exe, "run", case, "--out", str(out), "-q", "--set", "adapt.tolerance=2e-2"],
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    before = (out / "summary.json").read_text()
+    code, err, seen = run_until(exe, case, out, "hp step 1: estimated error", signal.SIGTERM,
+                                "adapt.tolerance=1e-4")
+    assert code == -signal.SIGTERM
+    assert "stopped by SIGTERM" in err and "last-good" in err
+    assert (out / "summary.json").read_text() == before
+    s = last_good(out)
+    a = s["adapt"]
+    assert s["converged"] is False and not a["converged"]
+    assert "stopped by SIGTERM" in a["message"]
+    # kept: the step whose estimate was the smallest among those estimated
+    estimated = [h for h in a["history"] if "estimated_error" in h]
+    assert len(estimated) >= 2
+    best = min(estimated, key=lambda h: max(h["estimated_error"]["pressure_rel_L2"],
+                                            h["estimated_error"]["shear_rel_L2"]))
+    assert a["result_step"] == best["step"] and s["dofs"] == best["dofs"]
