@@ -2,7 +2,6 @@
 // the same mesh, and the change of the contact pressure and the energy between the two.
 #pragma once
 
-#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -31,10 +30,7 @@ struct ErrorEstimate {
   /// What a tolerance on the contact traction is held to: the larger of the pressure's and
   /// the shear's relative errors (the pressure's alone without friction); not a number if the
   /// pressure's is not.
-  double traction() const {
-    if (!(shear > pressure)) return pressure;  // no shear (NaN), or the pressure's is larger
-    return std::isnan(pressure) ? pressure : shear;
-  }
+  double traction() const { return shear > pressure ? shear : pressure; }  // NaN shear: pressure
 };
 
 /// The problem with the degree of every element of every body raised by one (p_xi and p_eta);
