@@ -146,8 +146,6 @@ def polar_half_disc(radius, first, ratio, sectors, outer):
 
     pts = [ring(r) for r in radii]
     K, m = len(radii) - 1, sectors
-    # the circle's nodes in x: left ring ends outwards-in, the origin, right ring ends
-    on_circle = [pts[k][0] for k in range(K, -1, -1)] + [(0.0, 0.0)] + [pts[k][m] for k in range(K + 1)]
     nodes, ids = {}, {}
 
     def nid(key, xy):
@@ -156,9 +154,9 @@ def polar_half_disc(radius, first, ratio, sectors, outer):
             nodes[ids[key]] = xy
         return ids[key]
 
-    for i, xy in enumerate(on_circle):
-        key = ("O",) if i == K + 1 else (("P", K - i, 0) if i <= K else ("P", i - K - 2, m))
-        nid(key, xy)
+    # the circle's nodes first, in x: the left ring ends outwards-in, the origin, the right ones
+    on_circle = [("P", k, 0) for k in range(K, -1, -1)] + [("O",)] + [("P", k, m) for k in range(K + 1)]
+    circle = [nid(key, (0.0, 0.0) if key == ("O",) else pts[key[1]][key[2]]) for key in on_circle]
     P = lambda k, j: nid(("P", k, j), pts[k][j])  # noqa: E731
     O = nid(("O",), (0.0, 0.0))
     C = nid(("C",), (0.0, first / 2))
@@ -189,7 +187,6 @@ def polar_half_disc(radius, first, ratio, sectors, outer):
             quad(P(K, m), Q(m), Q(m - 1), P(K, m - 1))
         else:
             quad(P(K, j), P(K, j + 1), Q(j + 1), Q(j))
-    circle = [ids[("P", k, 0)] for k in range(K, -1, -1)] + [O] + [ids[("P", k, m)] for k in range(K + 1)]
     edges = list(zip(circle, circle[1:]))
     contact = edges[K - 1:K + 3] if K >= 1 else edges
     arcs = [e for e in edges if e not in contact] + [(Q(0), circle[0]), (circle[-1], Q(m))]

@@ -23,7 +23,7 @@ void MultiplierNodes::shape(int k, double t, Eigen::VectorXd& L) const {
   }
 }
 
-double MultiplierNodes::interpolate(int k, double t, const Eigen::VectorXd& lambda) const {
+double MultiplierNodes::interpolate(int k, double t, const Eigen::Ref<const Eigen::VectorXd>& lambda) const {
   Eigen::VectorXd L;
   shape(k, t, L);
   double v = 0;

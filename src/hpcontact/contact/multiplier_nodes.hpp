@@ -38,7 +38,9 @@ struct MultiplierNodes {
   /// L_i(t) of edge k's Lobatto points, into L (resized to their number).
   void shape(int k, double t, Eigen::VectorXd& L) const;
   /// λ_h(t) on edge k for the nodal values lambda.
-  double interpolate(int k, double t, const Eigen::VectorXd& lambda) const;
+  /// A segment of a longer vector (the tangential multipliers after the normal ones) is taken
+  /// as it is, not copied.
+  double interpolate(int k, double t, const Eigen::Ref<const Eigen::VectorXd>& lambda) const;
 };
 
 /// The multiplier nodes of the chained contact edges (chain_edges(): `chain`, whose order the
