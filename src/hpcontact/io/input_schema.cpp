@@ -218,7 +218,7 @@ const std::vector<KeySpec>& input_schema() {
               "for hp with goal-oriented degrees (adapt.degree goal, the default with "
               "adapt.tolerance: fewer dofs for an accuracy, examples/hertz/CONVERGENCE.md) "
               "without axisymmetric bodies and friction, else tensor (with friction the trunk "
-              "space's shear scatters in the stick zone, examples/partial-slip).",
+              "loop was 12 times slower and its estimate under-read the shear: docs/theory.md).",
        .choices = {"tensor", "trunk"}},
       {.path = "discretization.element", .type = T::choice, .default_yaml = "Q8",
        .doc = "h-version element (ignored by the p-version).", .choices = {"Q4", "Q8", "Q9"}},
