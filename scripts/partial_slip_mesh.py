@@ -278,6 +278,12 @@ def main():
     if args.mesh == "polar":
         if not (args.ring_ratio > 1 and args.sectors >= 4 and args.sectors % 2 == 0):
             ap.error("--ring-ratio must be > 1 and --sectors even and at least 4")
+        if not args.ring_ratio * a <= 0.5 * R:
+            # one ring only: the contact edges (the core's) would end at a, where the zone ends
+            ap.error(f"--mesh polar at this load: the second ring, --ring-ratio × a = "
+                     f"{args.ring_ratio * a:.4g}, lies beyond R/2 = {0.5 * R:.4g}, and the contact "
+                     f"edges would end at a = {a:.4g}, where the contact zone ends; a smaller "
+                     f"--ring-ratio (at most {0.5 * R / a:.3g}) or --mesh structured")
         nodes, quads, contact, arcs, cut = polar_half_disc(R, a, args.ring_ratio, args.sectors, 0.5)
         grading = f"rings about the contact point from a, ratio {hertz_mesh.num(args.ring_ratio)}, {args.sectors} sectors"
     else:

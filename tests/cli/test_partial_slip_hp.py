@@ -61,3 +61,35 @@ def test_the_result_is_within_the_tolerance_of_cattaneo_mindlin(run):
     assert abs(m["c_rel_error"]) < 0.02
     assert 0.95 < m["slip_tv_ratio"] < 1.05
     assert m["coulomb_ratio_max"] <= 1 + 1e-9
+
+
+def generate(root, *args):
+    import subprocess
+    import sys
+    return subprocess.run([sys.executable, os.path.join(root, "scripts", "partial_slip_mesh.py"), *args],
+                          capture_output=True, text=True, timeout=60)
+
+
+def test_the_example_is_what_the_generator_writes(root):
+    """The example's header names the command that made it; that command writes it again."""
+    text = open(os.path.join(root, CASE)).read()
+    args = text.splitlines()[0].split("partial_slip_mesh.py ", 1)[1].split()
+    r = generate(root, *args)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout == text
+
+
+def test_rings_too_large_for_the_contact_zone_are_refused(root):
+    """At the seed's load (a = 0.2 R) a second ring at 3a lies beyond R/2: one ring only, and its
+    contact edges would end at a, where the zone ends (an hp run from it failed at its first
+    step). Refused naming the option and the largest ratio; a ratio within it gives contact
+    edges that reach beyond a."""
+    import yaml
+    r = generate(root, "--force", "70000", "--mesh", "polar")
+    assert r.returncode == 2
+    assert "--ring-ratio" in r.stderr and "2.54" in r.stderr and "R/2" in r.stderr
+    r = generate(root, "--force", "70000", "--mesh", "polar", "--ring-ratio", "2.5")
+    assert r.returncode == 0, r.stderr
+    upper = yaml.safe_load(r.stdout)["bodies"][0]
+    xs = [upper["nodes"][n][0] for e in upper["edge_sets"]["contact"] for n in e]
+    assert max(xs) > 2 * 1.965 and min(xs) < -2 * 1.965
