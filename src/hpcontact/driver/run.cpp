@@ -16,6 +16,7 @@
 #include "hpcontact/driver/contact_compare.hpp"
 #include "hpcontact/driver/contact_history.hpp"
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/core/stop.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/linear_solve.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
@@ -730,6 +731,11 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
   s.converged = true;
   result.u = st.u;
   write_summary(stage);
+  // Asked to stop while solving a step that has no Newton iterations to end at (a linear solve,
+  // the last iteration): the run still ends as stopped, as its scheduler reports it, and the
+  // folder keeps what it held.
+  HPC_REQUIRE(!stop_requested(), NumericalError, spec.file, ": ", stop_reason(),
+              " before the results were written; the output folder is left as it was");
   if (folder) folder->commit();
   return result;
 }
