@@ -132,11 +132,18 @@ def polar_half_disc(radius, first, ratio, sectors, outer):
     their shape (no slivers) from the contact zone to the cut, unlike the structured grid.
     Every boundary edge on the circle is an exact arc; the contact edges are the core's two and
     the first ring's two. Each element's first edge is its edge on the circle, if it has one,
-    in +x; the circle's nodes are numbered first, in x, as in half_disc."""
+    in +x; the circle's nodes are numbered first, in x, as in half_disc. ValueError when the
+    second ring would lie beyond `outer` · R (one ring: contact edges ending at `first`)."""
     R = radius
     radii = [first]
     while radii[-1] * ratio <= outer * R:
         radii.append(radii[-1] * ratio)
+    if len(radii) < 2:
+        # one ring: the contact edges (the core's) would end at `first`, where the zone ends
+        raise ValueError(f"the second ring, --ring-ratio × a = {first * ratio:.4g}, lies beyond "
+                         f"R/2 = {outer * R:.4g}, and the contact edges would end at a = "
+                         f"{first:.4g}, where the contact zone ends; a smaller --ring-ratio (at "
+                         f"most {outer * R / first:.3g}) or --mesh structured")
 
     def ring(r):
         y = r * r / (2 * R)           # where the ring meets the circle x² + (y - R)² = R²
@@ -188,7 +195,7 @@ def polar_half_disc(radius, first, ratio, sectors, outer):
         else:
             quad(P(K, j), P(K, j + 1), Q(j + 1), Q(j))
     edges = list(zip(circle, circle[1:]))
-    contact = edges[K - 1:K + 3] if K >= 1 else edges
+    contact = edges[K - 1:K + 3]
     arcs = [e for e in edges if e not in contact] + [(Q(0), circle[0]), (circle[-1], Q(m))]
     cut = [(Q(j), Q(j + 1)) for j in range(m)]
     return nodes, quads, contact, arcs, cut
@@ -278,13 +285,10 @@ def main():
     if args.mesh == "polar":
         if not (args.ring_ratio > 1 and args.sectors >= 4 and args.sectors % 2 == 0):
             ap.error("--ring-ratio must be > 1 and --sectors even and at least 4")
-        if not args.ring_ratio * a <= 0.5 * R:
-            # one ring only: the contact edges (the core's) would end at a, where the zone ends
-            ap.error(f"--mesh polar at this load: the second ring, --ring-ratio × a = "
-                     f"{args.ring_ratio * a:.4g}, lies beyond R/2 = {0.5 * R:.4g}, and the contact "
-                     f"edges would end at a = {a:.4g}, where the contact zone ends; a smaller "
-                     f"--ring-ratio (at most {0.5 * R / a:.3g}) or --mesh structured")
-        nodes, quads, contact, arcs, cut = polar_half_disc(R, a, args.ring_ratio, args.sectors, 0.5)
+        try:
+            nodes, quads, contact, arcs, cut = polar_half_disc(R, a, args.ring_ratio, args.sectors, 0.5)
+        except ValueError as e:
+            ap.error(f"--mesh polar at this load: {e}")
         grading = f"rings about the contact point from a, ratio {hertz_mesh.num(args.ring_ratio)}, {args.sectors} sectors"
     else:
         targets = sorted({"a": a, "c": c}[g] for g in set(args.grade_at))

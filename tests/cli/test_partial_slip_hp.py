@@ -9,8 +9,11 @@ Measured: step 0 estimates the pressure at 0.82 % and the shear at 1.75 %; step 
 0.37 % and 1.04 %, and its shear is 0.91 % from the closed form, the pressure 0.27 %."""
 import json
 import os
+import subprocess
+import sys
 
 import pytest
+import yaml
 
 from conftest import load_script
 
@@ -64,8 +67,6 @@ def test_the_result_is_within_the_tolerance_of_cattaneo_mindlin(run):
 
 
 def generate(root, *args):
-    import subprocess
-    import sys
     return subprocess.run([sys.executable, os.path.join(root, "scripts", "partial_slip_mesh.py"), *args],
                           capture_output=True, text=True, timeout=60)
 
@@ -84,7 +85,6 @@ def test_rings_too_large_for_the_contact_zone_are_refused(root):
     contact edges would end at a, where the zone ends (an hp run from it failed at its first
     step). Refused naming the option and the largest ratio; a ratio within it gives contact
     edges that reach beyond a."""
-    import yaml
     r = generate(root, "--force", "70000", "--mesh", "polar")
     assert r.returncode == 2
     assert "--ring-ratio" in r.stderr and "2.54" in r.stderr and "R/2" in r.stderr

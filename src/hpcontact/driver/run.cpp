@@ -573,6 +573,12 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       }
       s.extra["newton_iterations_total"] = total;
     }
+    // Asked to stop after the loop's last solve (no iteration left to end at): stopped all the
+    // same, as its scheduler reports it; the result is kept as the last good one.
+    if (converged && stop_requested()) {
+      converged = false;
+      message = std::string(stop_reason()) + " after the loop's last solve";
+    }
     aj["converged"] = converged;
     aj["message"] = message;
     aj["history"] = history;
@@ -731,9 +737,9 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
   s.converged = true;
   result.u = st.u;
   write_summary(stage);
-  // Asked to stop while solving a step that has no Newton iterations to end at (a linear solve,
-  // the last iteration): the run still ends as stopped, as its scheduler reports it, and the
-  // folder keeps what it held.
+  // Asked to stop while solving a step that has no Newton iteration left to end at (a linear
+  // solve, the last iteration): the run still ends as stopped, as its scheduler reports it, and
+  // the folder keeps what it held (the adaptive loops' result above goes to last-good/).
   HPC_REQUIRE(!stop_requested(), NumericalError, spec.file, ": ", stop_reason(),
               " before the results were written; the output folder is left as it was");
   if (folder) folder->commit();
