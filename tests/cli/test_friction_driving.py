@@ -5,6 +5,8 @@ against an exact state: the homogeneous one of a block on a plane, or full slip 
 import csv
 import json
 import os
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -203,4 +205,80 @@ def test_contradicting_load_paths_are_refused(hpcontact, tmp_path, settings, mes
     assert r.returncode == code, r.stderr
     assert message in r.stderr, r.stderr
     assert os.path.basename(case) in r.stderr
+    assert not os.path.exists(tmp_path / "out" / "summary.json")
+
+
+def partial_slip_mesh(root, tmp_path, *args):
+    """A partial-slip problem file of scripts/partial_slip_mesh.py (two cylinders, R = 10)."""
+    case = tmp_path / "partial-slip.yaml"
+    r = subprocess.run([sys.executable, os.path.join(root, "scripts", "partial_slip_mesh.py"), *args],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    case.write_text(r.stdout)
+    return case
+
+
+def test_force_control_through_stages(hpcontact, root, tmp_path):
+    """Two cylinders pressed to P = 7 by force control, then sheared by Q = mu P / 2 with P held
+    (target_resultant with stages: each stage's displacements the share of P it reaches). Every
+    step of the press carries its share of P and every step of the shear P itself, with the
+    tangential force growing as the loads do; the state is the displacement-driven path's at the
+    factors force control found (stage by stage: the push that gave P at the end of each)."""
+    case = partial_slip_mesh(root, tmp_path, "--force", "7", "--mesh", "polar", "--degree", "3")
+    stages = ["solver.stages=[{displacements: 0.5, loads: 0, steps: 1}, {displacements: 1, loads: 0, steps: 1},"
+              " {displacements: 1, loads: 1, steps: 2}]"]
+    forced = run(hpcontact, str(case), tmp_path / "force", "solver.target_resultant={value: 7}", *stages)
+    path = rows(tmp_path / "force" / "path.csv")
+    assert [float(r["resultant_y"]) for r in path] == pytest.approx([3.5, 7, 7, 7], rel=1e-9)
+    assert [float(r["load_factor"]) for r in path] == [0, 0, 0.5, 1]
+    assert [float(r["resultant_x"]) for r in path] == pytest.approx([0, 0, -0.525, -1.05], rel=1e-9, abs=1e-9)
+    pair = forced["contact_pairs"][0]
+    assert pair["normal_force"] == pytest.approx(7, rel=1e-9)
+    assert pair["tangential_force"] == pytest.approx(-1.05, rel=1e-9)
+    alpha = [float(r["displacement_factor"]) for r in path]
+    assert forced["load_factor"] == pytest.approx(alpha[-1], rel=1e-12)
+    # the push found differs from the generator's (its P from the half-space) and moves as the
+    # shear is applied (the pressure on the tilted interface carries part of Q)
+    assert abs(alpha[-1] - 1) > 1e-5 and alpha[-1] != alpha[1]
+    # the same path driven by the displacements, stage by stage at the factors found
+    shown = run(hpcontact, str(case), tmp_path / "displacement",
+                f"solver.stages=[{{displacements: {alpha[0]!r}, loads: 0, steps: 1}},"
+                f" {{displacements: {alpha[1]!r}, loads: 0, steps: 1}},"
+                f" {{displacements: {alpha[3]!r}, loads: 1, steps: 2}}]")
+    assert shown["contact_pairs"][0]["normal_force"] == pytest.approx(7, rel=1e-7)
+    a = rows(tmp_path / "force" / "contact.csv")
+    b = rows(tmp_path / "displacement" / "contact.csv")
+    assert len(a) == len(b) and len(a) > 20
+    scale = max(abs(float(p["pressure"])) for p in a)
+    for p, q in zip(a, b):
+        assert p["state"] == q["state"]
+        for key in ("pressure", "tangential_traction"):
+            assert float(p[key]) == pytest.approx(float(q[key]), abs=1e-6 * scale), (key, p, q)
+
+
+@pytest.mark.parametrize("settings, message, code", [
+    # force control scales one factor on all the prescribed displacements: no per-direction shares
+    ([], "block-press-push.yaml:26:25: solver.stages[0].displacements_x: under solver.target_resultant "
+         "a stage's displacements is the share of the target force", 1),
+    (["solver.stages=[{displacements: -0.5, steps: 2}, {displacements: 1, steps: 1}]"],
+     "solver.stages[0].displacements (from --set): under solver.target_resultant this is the share "
+     "of the target force the stage reaches, not negative", 2),
+    (["solver.stages=[{displacements: 1, steps: 2}, {displacements: 0.5, steps: 1}]"],
+     "solver.stages[1].displacements (from --set): under solver.target_resultant the last stage "
+     "reaches the target force", 2),
+    (["solver.stages=[{displacements: 1, steps: 2}]", "contact[0].enforcement=penalty",
+      "contact[0].friction={law: stick, penalty: 1e6}", "contact[0].penalty=1e6"],
+     "force control with friction needs the first contact pair enforced exactly", 1),
+    (["solver.stages=[{displacements: 1, steps: 2}]", "contact[0].enforcement=penalty",
+      "contact[0].friction={law: none}", "contact[0].penalty=1e6"],
+     "target_resultant with stages needs the first contact pair enforced exactly", 1),
+])
+def test_stages_under_force_control_are_shares_of_the_target(hpcontact, tmp_path, settings, message, code):
+    args = ["run", PRESS_PUSH, "--out", tmp_path / "out", "-q", "--set", "solver.target_resultant={value: 20}"]
+    for s in settings:
+        args += ["--set", s]
+    r = hpcontact(*args)
+    assert r.returncode == code, r.stderr
+    assert message in r.stderr, r.stderr
+    assert "block-press-push.yaml" in r.stderr
     assert not os.path.exists(tmp_path / "out" / "summary.json")

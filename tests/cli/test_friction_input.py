@@ -14,7 +14,8 @@ STICK = os.path.join("examples", "two-bars", "stick.yaml")
     (["contact[0].friction.penalty=0"], "contact[0].friction.penalty", 2),
     (["contact[0].friction.penalty=-1e8"], "contact[0].friction.penalty", 2),
     (["contact[0].friction.law=viscous"], "contact[0].friction.law", 2),
-    (["solver.target_resultant.value=100"], "stages cannot be combined with target_resultant", 1),
+    (["solver.target_resultant.value=2297.5", "solver.stages[1].displacements=0.5"],
+     "solver.stages[1].displacements (from --set): under solver.target_resultant the last stage reaches the target force", 2),
     (["solver.stages[0].steps=0"], "solver.stages[0].steps", 2),
 ])
 def test_bad_friction_input(hpcontact, root, tmp_path, settings, message, code):

@@ -68,6 +68,26 @@ def test_shear_and_pressure_against_the_closed_forms(run):
     assert 0.95 < m["slip_tv_ratio"] < 1.05
 
 
+def test_shear_against_the_force_it_carries(run):
+    """The shear carries Q and the tilt's part (the pressure on the sheared, tilted interface
+    pushes against it: 0.45 % of Q at b/R = 0.02), so its stick zone is Cattaneo's for that
+    larger force, narrower. The two errors differ by no more than the two closed forms do
+    (triangle inequality in the nodes' weighted L2 norm, the forms compared independently here
+    on a fine grid)."""
+    _, m, _ = run
+    Q, carried = m["Q"], m["shear_integral"]
+    assert carried == pytest.approx(Q - m["tilt_force"], rel=1e-3)
+    assert 1e-3 < carried / Q - 1 < 1e-2
+    assert m["c_carried"] < m["c"]
+    x = np.linspace(-m["a"], m["a"], 400001)
+    _, _, _, _, q_applied = compare.closed_form(m["R_star"], m["E_star"], m["mu"], m["P"], Q)
+    _, _, _, _, q_carried = compare.closed_form(m["R_star"], m["E_star"], m["mu"], m["P"], carried)
+    gap = np.sqrt(np.trapz((q_applied(x) - q_carried(x)) ** 2, x) / np.trapz(q_applied(x) ** 2, x))
+    norm_ratio = np.sqrt(np.trapz(q_carried(x) ** 2, x) / np.trapz(q_applied(x) ** 2, x))
+    assert gap > 1e-3
+    assert abs(m["shear_rel_L2"] - m["shear_rel_L2_carried"] * norm_ratio) <= 1.02 * gap
+
+
 def test_stick_slip_points_located_between_their_nodes(run):
     """summary.json's stick_slip_points (the root of |λ_T + κ ĝ_T| − μ λ along the edge) lie
     strictly between the outermost stick node and the first slip node, one on each side, and

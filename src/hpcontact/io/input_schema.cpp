@@ -293,7 +293,8 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "solver.stages[].displacements", .type = T::number,
        .doc = "Factor on every prescribed displacement (and obstacle displacement) at the end of "
               "the stage; absent: 1 (for the directions displacements_x and displacements_y do "
-              "not give)."},
+              "not give). Under solver.target_resultant: the share of the target force the stage "
+              "reaches (the factor is found), the last stage's 1."},
       {.path = "solver.stages[].displacements_x", .type = T::number,
        .doc = "Factor on the x components of the prescribed displacements (ux, and an obstacle "
               "displacement's x) at the end of the stage, where it differs from displacements: "
@@ -313,8 +314,11 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Load control by force: the prescribed displacements are scaled until the contact "
               "resultant's component equals value. With exact contact the factor is one more "
               "unknown of Newton's system; with friction (whose answer depends on the path) in "
-              "solver.load_steps force-controlled steps, each to its share of value. Not with "
-              "stages."},
+              "solver.load_steps force-controlled steps, each to its share of value. With "
+              "solver.stages (exact contact) each stage's displacements is the share of value it "
+              "reaches and its loads go as given, the factor found in every step: press to a "
+              "force, then shear with that force held (stages [{displacements: 1, loads: 0}, "
+              "{displacements: 1, loads: 1}])."},
       {.path = "solver.target_resultant.value", .type = T::number, .required = true,
        .unit = "force", .doc = "The contact resultant's component to reach.",
        .lower = greater_than(0)},

@@ -602,10 +602,29 @@ class SpecBuilder {
         if (stages[i]["steps"]) st.steps = integer(stages[i]["steps"]);
         s.stages.push_back(st);
       }
+      // Under force control a stage's displacements is the share of the target resultant
+      // reached at its end (the factor on the displacements is the unknown): one share for all
+      // directions, not negative, the last one the target itself.
       if (s.target_resultant)
-        source_.fail(stages, "solver.stages",
-                     "a load path with stages cannot be combined with target_resultant (force "
-                     "control scales one factor)");
+        for (std::size_t i = 0; i < stages.size(); ++i) {
+          const std::string at = "solver.stages[" + std::to_string(i) + "]";
+          const LoadStageSpec& st = s.stages[i];
+          if (st.x_displacements || st.y_displacements)
+            source_.fail(stages[i][st.x_displacements ? "displacements_x" : "displacements_y"],
+                         at + (st.x_displacements ? ".displacements_x" : ".displacements_y"),
+                         "under solver.target_resultant a stage's displacements is the share of the "
+                         "target force it reaches, one for all directions (the factor on the "
+                         "prescribed displacements is found): use displacements");
+          if (st.displacements < 0)
+            source_.fail(stages[i]["displacements"], at + ".displacements",
+                         "under solver.target_resultant this is the share of the target force the "
+                         "stage reaches, not negative");
+          if (i + 1 == stages.size() && st.displacements != 1.0)
+            source_.fail(stages[i]["displacements"] ? stages[i]["displacements"] : stages[i],
+                         at + ".displacements",
+                         "under solver.target_resultant the last stage reaches the target force: "
+                         "its displacements (the share of the target) must be 1");
+        }
     }
     s.where = source_.where(node, "solver");
     return s;

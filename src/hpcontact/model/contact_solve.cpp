@@ -187,9 +187,17 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   // Load steps along the path parameter from `from` to `target` (factors(s) gives the
   // factors), halving a step that does not converge (at most max_cuts times in a row) and
   // doubling it again, up to the nominal step, after two steps in a row converged. With
-  // `force` (component, value), force-controlled steps: at s the factor is the unknown of the
-  // bordered system whose target is s × value (factors(s) then gives its first guess).
-  using ForceTarget = std::optional<std::pair<int, double>>;
+  // `force`, force-controlled steps: at s the factor on the prescribed displacements is the
+  // unknown of the bordered system whose target is share(s) × value (factors(s) then gives its
+  // first guess, and the loads' factor unless they follow the unknown).
+  struct ForceControl {
+    int component;
+    double value;
+    double share_from = 0, share_to = 1;  ///< the share of value at s = 0 and s = 1
+    bool scales_loads = true;             ///< the loads' factor is the unknown too
+    double share(double s) const { return share_from + s * (share_to - share_from); }
+  };
+  using ForceTarget = std::optional<ForceControl>;
   auto advance = [&](double from, double target, int steps, const auto& factors,
                      const ForceTarget& force = std::nullopt) -> bool {
     const double nominal = (target - from) / std::max(1, steps);
@@ -201,17 +209,19 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       system.set_factors(fn.displacements, fn.loads);
       Eigen::VectorXd trial = x;
       if (force) {
-        system.set_force_target(std::make_pair(force->first, next * force->second));
+        system.set_force_target(std::make_pair(force->component, force->share(next) * force->value),
+                                force->scales_loads);
         trial.conservativeResize(system.size());
         trial(system.size() - 1) = fn.displacements.y();
       }
       no.reference_norm = system.force_scale(trial);
-      if (force) no.reference_norm = std::max(no.reference_norm, next * force->second);
+      if (force) no.reference_norm = std::max(no.reference_norm, force->share(next) * force->value);
       const auto rep = solve::newton(system, trial, no, newton_progress());
       sol.newton_iterations += rep.iterations;
       sol.factorizations += rep.factorizations;
       if (force) {
-        fn = Factors::proportional(system.displacement_factor(trial));
+        const double alpha = system.displacement_factor(trial);
+        fn = force->scales_loads ? Factors::proportional(alpha) : Factors{Vec2(alpha, alpha), fn.loads};
         system.set_force_target(std::nullopt);
         trial.conservativeResize(system.size());
         system.set_factors(fn.displacements, fn.loads);
@@ -351,7 +361,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
         return Factors::proportional(carried > 0 ? last.displacements * s * tr.value / carried
                                                  : last.displacements);
       };
-      if (!advance(0.0, 1.0, ss.load_steps, guess, std::make_pair(tr.component, tr.value)))
+      if (!advance(0.0, 1.0, ss.load_steps, guess, ForceControl{tr.component, tr.value}))
         return failed();
     } else if (bordered) {
       const auto& tr = *ss.target_resultant;
@@ -384,6 +394,37 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
         x = x0;
         bordered = false;
       }
+    }
+    // Stages under force control (an exactly enforced first pair): each stage takes the
+    // target's share to its `displacements` (the share, not a factor: the factor is the unknown)
+    // while its loads go linearly — e.g. press to the force, then shear at that force held.
+    const bool staged_force = !ss.stages.empty() && ss.target_resultant;
+    if (staged_force) {
+      HPC_REQUIRE(!pairs.empty() && pairs.front().constraints, InputError, ss.where.str(),
+                  ".target_resultant with stages needs the first contact pair enforced exactly "
+                  "(enforcement: augmented-lagrangian): the factor on the prescribed displacements is "
+                  "then an unknown of every load step");
+      const auto& tr = *ss.target_resultant;
+      double share = 0, loads = 0;
+      for (const auto& stage : ss.stages) {
+        const double share_to = stage.displacements_y(), loads_to = stage.loads;
+        auto guess = [&](double s) {
+          const double target = share + s * (share_to - share);
+          double alpha = first * target;
+          if (!sol.path.empty()) {
+            const auto& last = sol.path.back();
+            const double carried = std::abs(last.resultant(tr.component));
+            if (carried > 0) alpha = last.displacements * target * tr.value / carried;
+          }
+          return Factors{Vec2(alpha, alpha), loads + s * (loads_to - loads)};
+        };
+        if (!advance(0.0, 1.0, stage.steps > 0 ? stage.steps : ss.load_steps, guess,
+                     ForceControl{tr.component, tr.value, share, share_to, false}))
+          return failed();
+        share = share_to;
+        loads = loads_to;
+      }
+      bordered = true;  // the target is reached: no secant
     }
     if (!bordered && ss.stages.empty()) {
       if (!advance_to(0.0, first)) return failed();
@@ -505,6 +546,9 @@ Eigen::VectorXd multiplier_adjoint(const ProblemSpec& spec, const Discretization
                        sol.elastic);
   system.set_factors(sol.displacement_factors, sol.loads_factor);
   // Force control held the first pair's resultant: the functional's change at a fixed force.
+  // (Not through stages: bordered there with the loads held, the weights grew at the cut's
+  // corners and the partial-slip loop went to 9983 DOF for 0.16 % instead of 7495 for 0.10 %;
+  // its adjoint stays that of the displacements' control until that is understood.)
   const auto& tr = spec.solver.target_resultant;
   const bool bordered = spec.solver.stages.empty() && tr && !sol.pairs.empty() &&
                         sol.pairs.front().constraints;

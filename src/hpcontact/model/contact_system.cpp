@@ -60,7 +60,7 @@ void ContactSystem::set_factors(const Vec2& displacements, double loads) {
     if (pair.moving) pair.moving->set_load_factors(displacements);
 }
 
-void ContactSystem::set_force_target(std::optional<std::pair<int, double>> target) {
+void ContactSystem::set_force_target(std::optional<std::pair<int, double>> target, bool scales_loads) {
   HPC_ASSERT(!target || (!pairs_.empty() && pairs_.front().constraints), "force target needs an exact first pair");
   if (target.has_value() != target_.has_value()) {
     n_z_ += target ? 1 : -1;
@@ -68,6 +68,7 @@ void ContactSystem::set_force_target(std::optional<std::pair<int, double>> targe
     if (target) gamma_(n_z_ - 1) = 0;
   }
   target_ = target;
+  target_scales_loads_ = scales_loads;
 }
 
 Vec2 ContactSystem::displacement_factors(const Eigen::VectorXd& x) const {
@@ -83,7 +84,7 @@ Eigen::VectorXd ContactSystem::prescribed(const Vec2& factors) const {
 }
 
 double ContactSystem::loads_factor(const Eigen::VectorXd& x) const {
-  return target_ ? x(size() - 1) : lambda_f_;
+  return target_ && target_scales_loads_ ? x(size() - 1) : lambda_f_;
 }
 
 void ContactSystem::commit(const Eigen::VectorXd& x) {
@@ -369,10 +370,11 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
   }
   if (target_) {
     // ∂r/∂α: the prescribed displacements' column of the tangent (linear bodies: K u_p; the
-    // finite-strain and contact parts from their triplets) less the loads, and of the active
-    // constraint rows.
+    // finite-strain and contact parts from their triplets) less the loads when they follow α,
+    // and of the active constraint rows.
     const int col = size() - 1;
-    Eigen::VectorXd column = K_prescribed_ - op_->load;
+    Eigen::VectorXd column = K_prescribed_;
+    if (target_scales_loads_) column -= op_->load;
     for (const auto& e : t_all)
       if (const double up = d_.prescribed(e.col()); up != 0.0) column(e.row()) += e.value() * up;
     const Eigen::VectorXd cu = op_->restrict(d_, column);

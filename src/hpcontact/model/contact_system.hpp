@@ -58,11 +58,13 @@ public:
   void set_factors(const Vec2& displacements, double loads);
   /// Force control as one more unknown: the factor on the prescribed displacements, found with
   /// the first pair's resultant component (0: x, 1: y) equal to `value` in magnitude. The first
-  /// pair must be enforced exactly. Off (nullopt): the factor is set_factors()'s.
-  void set_force_target(std::optional<std::pair<int, double>> target);
+  /// pair must be enforced exactly. Off (nullopt): the factor is set_factors()'s. With
+  /// `scales_loads` the loads follow the same factor (the proportional path); without, they keep
+  /// set_factors()'s (a stage that shears at a held normal force).
+  void set_force_target(std::optional<std::pair<int, double>> target, bool scales_loads = true);
   bool force_controlled() const { return target_.has_value(); }
   /// The factors on the prescribed displacements' x and y components at x (both the unknown α
-  /// under force control), and on the loads (α too under force control: the proportional path).
+  /// under force control), and on the loads (α too under force control on the proportional path).
   Vec2 displacement_factors(const Eigen::VectorXd& x) const;
   /// The unknown α under force control, else the y displacements' factor.
   double displacement_factor(const Eigen::VectorXd& x) const { return displacement_factors(x).y(); }
@@ -165,6 +167,7 @@ private:
   int n_z_ = 0;            ///< multipliers and the bordered factor
   std::vector<int> z_offset_;  ///< per pair: its first multiplier's index in z, -1 for penalty
   std::optional<std::pair<int, double>> target_;  ///< force control: component, value
+  bool target_scales_loads_ = true;               ///< force control: the loads' factor is α too
   Eigen::VectorXd gamma_;      ///< augmentation of each row of z (ε_j W_j; 0 for α)
   solve::SaddlePointSolver saddle_;
   /// The state of each multiplier row at the last evaluation, and at the last two with a
