@@ -81,6 +81,19 @@ TEST(MultiplierAdjoint, PredictsTheFunctionalUnderForceControl) {
   expect_adjoint_predicts(spec);
 }
 
+// Under force control through stages (pressed to the force with the loads at 0, then the loads
+// applied with the force held): the factor scales the displacements only, the loads keep the
+// stage's factor.
+TEST(MultiplierAdjoint, PredictsTheFunctionalUnderForceControlThroughStages) {
+  model::ProblemSpec spec = hertz(4);
+  ASSERT_TRUE(spec.solver.target_resultant);
+  model::LoadStageSpec press, load;
+  press.loads = 0;
+  press.steps = load.steps = 1;
+  spec.solver.stages = {press, load};
+  expect_adjoint_predicts(spec);
+}
+
 // Under displacement control (the centre's displacement prescribed, the force free).
 TEST(MultiplierAdjoint, PredictsTheFunctionalUnderDisplacementControl) {
   model::ProblemSpec spec = hertz(4);

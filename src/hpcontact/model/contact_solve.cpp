@@ -545,14 +545,12 @@ Eigen::VectorXd multiplier_adjoint(const ProblemSpec& spec, const Discretization
   ContactSystem system(d, pairs, spec.discretization.condense, ContactSystem::Tangent::analytic,
                        sol.elastic);
   system.set_factors(sol.displacement_factors, sol.loads_factor);
-  // Force control held the first pair's resultant: the functional's change at a fixed force.
-  // (Not through stages: bordered there with the loads held, the weights grew at the cut's
-  // corners and the partial-slip loop went to 9983 DOF for 0.16 % instead of 7495 for 0.10 %;
-  // its adjoint stays that of the displacements' control until that is understood.)
+  // Force control held the first pair's resultant: the functional's change at a fixed force
+  // (through stages the loads at theirs, the factor on the displacements alone the unknown).
   const auto& tr = spec.solver.target_resultant;
-  const bool bordered = spec.solver.stages.empty() && tr && !sol.pairs.empty() &&
-                        sol.pairs.front().constraints;
-  if (bordered) system.set_force_target(std::make_pair(tr->component, tr->value));
+  const bool bordered = tr && !sol.pairs.empty() && sol.pairs.front().constraints;
+  if (bordered)
+    system.set_force_target(std::make_pair(tr->component, tr->value), spec.solver.stages.empty());
   const Eigen::VectorXd x = system.unknowns(sol.u, sol.multipliers);
   Eigen::VectorXd r;
   solve::SparseMatrix A;
