@@ -1,9 +1,12 @@
-// A plain run asked to stop while in a solve with no Newton iteration left to end at (here a
-// linear one): it ends as stopped and writes nothing, as its scheduler reports it cancelled.
+// A run asked to stop while in a solve with no Newton iteration left to end at (a plain run's
+// linear solve, an adaptive loop's last one): it ends as stopped, as its scheduler reports it
+// cancelled — the plain run writing nothing, the loop keeping its result as the last good one.
 #include <gtest/gtest.h>
 
 #include <csignal>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include <unistd.h>
@@ -49,4 +52,38 @@ TEST(RunStop, ALinearRunAskedToStopWritesNoResults) {
   EXPECT_FALSE(fs::exists(stopped / "summary.json"));
   fs::remove_all(stopped);
   fs::remove_all(finished);
+}
+
+// An adaptive run asked to stop after its loop's last solve (here while it reports its last hp
+// step: no Newton iteration is left to end at) ends as stopped as well: its result is kept
+// apart in last-good/ with converged false, and the output folder has no summary.json.
+TEST(RunStop, AnAdaptiveRunAskedToStopAfterItsLastSolveKeepsItAsLastGood) {
+  const auto spec = io::read_problem(std::string(HPC_SOURCE_DIR) + "/examples/hertz/hp.yaml",
+                                     {"adapt.steps=2", "output.vtu=false"});
+  const fs::path stopped = fresh_folder("adaptive");
+  driver::RunOptions options;
+  options.out_dir = stopped.string();
+  bool asked = false;
+  options.progress = [&](const std::string& line) {
+    if (line.find("hp step 2:") != std::string::npos && line.find("dofs") != std::string::npos) {
+      request_stop(SIGTERM);
+      asked = true;
+    }
+  };
+  try {
+    driver::run_problem(spec, options);
+    ADD_FAILURE() << "a run asked to stop ended as a success";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("stopped by SIGTERM after the loop's last solve"),
+              std::string::npos)
+        << e.what();
+  }
+  clear_stop();
+  EXPECT_TRUE(asked);
+  EXPECT_FALSE(fs::exists(stopped / "summary.json"));
+  ASSERT_TRUE(fs::exists(stopped / "last-good" / "summary.json"));
+  std::ifstream in(stopped / "last-good" / "summary.json");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"converged\": false"), std::string::npos);
+  fs::remove_all(stopped);
 }
