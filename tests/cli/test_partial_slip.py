@@ -79,6 +79,8 @@ def test_shear_against_the_force_it_carries(run):
     assert carried == pytest.approx(Q - m["tilt_force"], rel=1e-3)
     assert 1e-3 < carried / Q - 1 < 1e-2
     assert m["c_carried"] < m["c"]
+    # the model's shear is nearer the carried force's form (measured 2.26 % against 2.47 %)
+    assert m["shear_rel_L2_carried"] < 0.95 * m["shear_rel_L2"]
     x = np.linspace(-m["a"], m["a"], 400001)
     _, _, _, _, q_applied = compare.closed_form(m["R_star"], m["E_star"], m["mu"], m["P"], Q)
     _, _, _, _, q_carried = compare.closed_form(m["R_star"], m["E_star"], m["mu"], m["P"], carried)

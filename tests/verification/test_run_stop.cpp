@@ -27,6 +27,20 @@ fs::path fresh_folder(const std::string& name) {
   fs::remove_all(dir);
   return dir;
 }
+
+/// run_problem ends with an error of type E that says `said`, not as a success; the stop request
+/// is cleared afterwards.
+template <class E>
+void expect_stopped(const model::ProblemSpec& spec, const driver::RunOptions& options,
+                    const std::string& said) {
+  try {
+    driver::run_problem(spec, options);
+    ADD_FAILURE() << "a run asked to stop ended as a success";
+  } catch (const E& e) {
+    EXPECT_NE(std::string(e.what()).find(said), std::string::npos) << e.what();
+  }
+  clear_stop();
+}
 }  // namespace
 
 TEST(RunStop, ALinearRunAskedToStopWritesNoResults) {
@@ -40,15 +54,7 @@ TEST(RunStop, ALinearRunAskedToStopWritesNoResults) {
 
   options.out_dir = stopped.string();
   request_stop(SIGTERM);
-  try {
-    driver::run_problem(spec, options);
-    ADD_FAILURE() << "a run asked to stop ended as a success";
-  } catch (const NumericalError& e) {
-    EXPECT_NE(std::string(e.what()).find("stopped by SIGTERM before the results were written"),
-              std::string::npos)
-        << e.what();
-  }
-  clear_stop();
+  expect_stopped<NumericalError>(spec, options, "stopped by SIGTERM before the results were written");
   EXPECT_FALSE(fs::exists(stopped / "summary.json"));
   fs::remove_all(stopped);
   fs::remove_all(finished);
@@ -70,15 +76,7 @@ TEST(RunStop, AnAdaptiveRunAskedToStopAfterItsLastSolveKeepsItAsLastGood) {
       asked = true;
     }
   };
-  try {
-    driver::run_problem(spec, options);
-    ADD_FAILURE() << "a run asked to stop ended as a success";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("stopped by SIGTERM after the loop's last solve"),
-              std::string::npos)
-        << e.what();
-  }
-  clear_stop();
+  expect_stopped<Error>(spec, options, "stopped by SIGTERM after the loop's last solve");
   EXPECT_TRUE(asked);
   EXPECT_FALSE(fs::exists(stopped / "summary.json"));
   ASSERT_TRUE(fs::exists(stopped / "last-good" / "summary.json"));

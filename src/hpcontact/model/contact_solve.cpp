@@ -350,17 +350,20 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     // system, its equation the target resultant (bordered), from the start at once. Should that
     // not converge, the load-controlled steps and the secant below take over.
     bool bordered = ss.stages.empty() && ss.target_resultant && !pairs.empty() && pairs.front().constraints;
+    // The first guess of the factor that carries `share` of the target force in a
+    // force-controlled load step: the last step's, scaled by the force it carried.
+    auto factor_for = [&](double share) {
+      const auto& tr = *ss.target_resultant;
+      if (sol.path.empty()) return first * share;
+      const auto& last = sol.path.back();
+      const double carried = std::abs(last.resultant(tr.component));
+      return carried > 0 ? last.displacements * share * tr.value / carried : first * share;
+    };
     if (bordered && system.has_friction()) {
       // With friction the path matters: load steps, each to its share of the target force,
-      // the factor an unknown of each (its first guess the last step's, scaled).
+      // the factor an unknown of each.
       const auto& tr = *ss.target_resultant;
-      auto guess = [&](double s) {
-        if (sol.path.empty()) return Factors::proportional(first * s);
-        const auto& last = sol.path.back();
-        const double carried = std::abs(last.resultant(tr.component));
-        return Factors::proportional(carried > 0 ? last.displacements * s * tr.value / carried
-                                                 : last.displacements);
-      };
+      auto guess = [&](double s) { return Factors::proportional(factor_for(s)); };
       if (!advance(0.0, 1.0, ss.load_steps, guess, ForceControl{tr.component, tr.value}))
         return failed();
     } else if (bordered) {
@@ -395,37 +398,14 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
         bordered = false;
       }
     }
-    // Stages under force control (an exactly enforced first pair): each stage takes the
-    // target's share to its `displacements` (the share, not a factor: the factor is the unknown)
-    // while its loads go linearly — e.g. press to the force, then shear at that force held.
+    // Stages under force control (an exactly enforced first pair): a stage's `displacements`
+    // is the share of the target force it reaches (the factor is the unknown) while its loads go
+    // linearly — e.g. press to the force, then shear at that force held.
     const bool staged_force = !ss.stages.empty() && ss.target_resultant;
-    if (staged_force) {
-      HPC_REQUIRE(!pairs.empty() && pairs.front().constraints, InputError, ss.where.str(),
-                  ".target_resultant with stages needs the first contact pair enforced exactly "
-                  "(enforcement: augmented-lagrangian): the factor on the prescribed displacements is "
-                  "then an unknown of every load step");
-      const auto& tr = *ss.target_resultant;
-      double share = 0, loads = 0;
-      for (const auto& stage : ss.stages) {
-        const double share_to = stage.displacements_y(), loads_to = stage.loads;
-        auto guess = [&](double s) {
-          const double target = share + s * (share_to - share);
-          double alpha = first * target;
-          if (!sol.path.empty()) {
-            const auto& last = sol.path.back();
-            const double carried = std::abs(last.resultant(tr.component));
-            if (carried > 0) alpha = last.displacements * target * tr.value / carried;
-          }
-          return Factors{Vec2(alpha, alpha), loads + s * (loads_to - loads)};
-        };
-        if (!advance(0.0, 1.0, stage.steps > 0 ? stage.steps : ss.load_steps, guess,
-                     ForceControl{tr.component, tr.value, share, share_to, false}))
-          return failed();
-        share = share_to;
-        loads = loads_to;
-      }
-      bordered = true;  // the target is reached: no secant
-    }
+    HPC_REQUIRE(!staged_force || (!pairs.empty() && pairs.front().constraints), InputError, ss.where.str(),
+                ".target_resultant with stages needs the first contact pair enforced exactly "
+                "(enforcement: augmented-lagrangian): the factor on the prescribed displacements is "
+                "then an unknown of every load step");
     if (!bordered && ss.stages.empty()) {
       if (!advance_to(0.0, first)) return failed();
     } else if (!bordered) {
@@ -433,12 +413,20 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       for (const auto& stage : ss.stages) {
         const Factors end{Vec2(stage.displacements_x(), stage.displacements_y()), stage.loads};
         auto along = [&](double s) {
-          return Factors{start.displacements + s * (end.displacements - start.displacements),
-                         start.loads + s * (end.loads - start.loads)};
+          Factors f{start.displacements + s * (end.displacements - start.displacements),
+                    start.loads + s * (end.loads - start.loads)};
+          if (staged_force) f.displacements.setConstant(factor_for(f.displacements.y()));  // a share
+          return f;
         };
-        if (!advance(0.0, 1.0, stage.steps > 0 ? stage.steps : ss.load_steps, along)) return failed();
+        const int steps = stage.steps > 0 ? stage.steps : ss.load_steps;
+        const ForceTarget force =
+            staged_force ? ForceTarget(ForceControl{ss.target_resultant->component, ss.target_resultant->value,
+                                                    start.displacements.y(), end.displacements.y(), false})
+                         : std::nullopt;
+        if (!advance(0.0, 1.0, steps, along, force)) return failed();
         start = end;
       }
+      bordered = staged_force;  // the target reached: no secant
     }
     secant = ss.target_resultant && !bordered;
   }
