@@ -118,6 +118,26 @@ def wait_unlocked(run_dir, seconds=60):
         time.sleep(0.2)
 
 
+def wait_locked(run_dir, seconds=60):
+    """Until a process holds the run folder's lock: hpcontact has started in the task, with its
+    signal handlers in place (they come before the lock). A task cancelled earlier may lose its
+    run from the scheduler's view (its script killed while the run was being started), and that
+    run then ends, committed, after the task was reported CANCELLED."""
+    import fcntl
+    path = os.path.join(run_dir, ".hpcontact-lock")
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        if os.path.exists(path):
+            with open(path, "a") as f:
+                try:
+                    fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
+                    fcntl.flock(f, fcntl.LOCK_UN)
+                except BlockingIOError:
+                    return
+        time.sleep(0.05)
+    pytest.fail(f"no run held {path} within {seconds} s")
+
+
 def test_cancelled_task_is_a_failed_row_and_resubmission_completes(exe, cluster, tmp_path):
     """scancel of one running task: that row fails with its label and log, the others are
     collected; submitting again runs only that row, and the study is complete. The slow row
@@ -135,6 +155,7 @@ runs:
     try:
         job = wait_submitted(str(out))
         wait_running(cluster, f"{job}_1")
+        wait_locked(str(out / "runs" / "02-slow"))
         cluster.run("scancel", f"{job}_1")
         stdout, stderr = p.communicate(timeout=STUDY_SECONDS)
     finally:
@@ -159,6 +180,35 @@ runs:
     assert "1 tasks (rows 1," in r.stdout and "2 rows already have a successful run" in r.stdout
     assert [s["rows"] for s in submissions(out)] == [[0, 1, 2], [1]]
     assert all(row["converged"] == "true" for row in table(out))
+
+
+def test_a_run_that_outlived_its_task_is_the_row(exe, cluster, tmp_path):
+    """A task whose script ended without its exit line while its run went on and committed (the
+    scheduler lost the process): the row is that run, written after the submission, as a
+    resubmission counts it; a summary older than the submission is not the task's."""
+    study = write_study(str(tmp_path), "one", f"""study: one
+runs:
+  - {{label: only, case: {P5}, set: [discretization.degree=3]}}
+""")
+    out = tmp_path / "out"
+    r = hpcontact(exe, cluster, "study", study, "--executor", "slurm", "--out", out, "--wait")
+    assert r.returncode == 0, r.stdout + r.stderr + cluster.logs()
+    job = submissions(out)[-1]["job_id"]
+    log = out / "slurm" / "logs" / f"{job}_0.out"
+    text = log.read_text()
+    assert "hpcontact-task: exit 0" in text
+    log.write_text("".join(l for l in text.splitlines(True) if not l.startswith("hpcontact-task: exit")))
+    r = hpcontact(exe, cluster, "study", "--collect", out)
+    assert r.returncode == 0 and "1 of 1 runs converged" in r.stdout, r.stdout + r.stderr
+    assert table(out)[0]["converged"] == "true"
+
+    summary = out / "runs" / "01-only" / "summary.json"
+    before = summary.stat().st_mtime - 7200
+    os.utime(summary, (before, before))
+    r = hpcontact(exe, cluster, "study", "--collect", out)
+    assert r.returncode == 1, r.stdout + r.stderr
+    assert f"FAILED only: array task {job}_0 ended COMPLETED" in r.stdout, r.stdout
+    assert "without an exit status" in r.stdout
 
 
 def test_no_sbatch_on_path(exe, cluster, tmp_path):

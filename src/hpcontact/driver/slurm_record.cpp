@@ -14,6 +14,13 @@ using nlohmann::json;
 namespace {
 /// A record of thousands of rows is a few MB.
 constexpr std::size_t kMaxRecordBytes = 64u << 20;
+
+/// "YYYY-MM-DDTHH:MM:SSZ" (the record's "submitted") as seconds since the epoch; 0 if unreadable.
+std::time_t utc_seconds(const std::string& text) {
+  std::tm t{};
+  const char* end = strptime(text.c_str(), "%Y-%m-%dT%H:%M:%SZ", &t);
+  return end && *end == '\0' ? timegm(&t) : 0;
+}
 }  // namespace
 
 json study_to_json(const io::StudySpec& study) {
@@ -67,7 +74,8 @@ std::optional<TaskRef> latest_task(const json& record, int row) {
   std::optional<TaskRef> task;
   for (const auto& s : submitted(record))
     for (const auto& r : s.at("rows"))
-      if (r.get<int>() == row) task = TaskRef{s.at("job_id").get<std::string>(), row};
+      if (r.get<int>() == row)
+        task = TaskRef{s.at("job_id").get<std::string>(), row, utc_seconds(s.value("submitted", ""))};
   return task;
 }
 

@@ -3,6 +3,7 @@
 // need nothing but the folder.
 #pragma once
 
+#include <ctime>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,7 @@ std::vector<nlohmann::json> submitted(const nlohmann::json& record);
 struct TaskRef {
   std::string job_id;
   int index = 0;
+  std::time_t submitted = 0;  ///< when its submission was made (UTC, whole seconds); 0 if unknown
 };
 
 /// The last submitted task of row `row`, if any.

@@ -2,6 +2,7 @@
 // recorded in OUT/slurm/submission.json (slurm_record.hpp).
 #include "hpcontact/driver/slurm_study.hpp"
 
+#include <sys/stat.h>
 #include <sys/vfs.h>
 #include <unistd.h>
 
@@ -84,6 +85,13 @@ std::string relative_run_dir(const io::StudySpec& study, int i) {
   return "runs/" + row_folder_name(i, study.runs[i].label);
 }
 
+/// Whether the run folder's summary.json was written at or after `since` (a committed run: the
+/// summary is written in the staging folder and moved into place when the run has succeeded).
+bool summary_written_since(const std::string& run_dir, std::time_t since) {
+  struct stat st{};
+  return since > 0 && ::stat((run_dir + "/summary.json").c_str(), &st) == 0 && st.st_mtime >= since;
+}
+
 /// A row as its task left it; `queries` caches the scheduler's answers per job.
 StudyRowResult row_result(const io::StudySpec& study, const json& record, const std::string& out,
                           int i, std::map<std::string, SlurmArrayQuery>& queries) {
@@ -113,6 +121,16 @@ StudyRowResult row_result(const io::StudySpec& study, const json& record, const 
     if (row.message.empty()) row.message = "exit code " + std::to_string(row.exit_code);
     row.message = "array task " + name + ": " + row.message + " (log " + log + ")";
     return row;
+  }
+  // The task's script ended without its exit line (scancel, a time limit) while the run it had
+  // started went on to commit — a process the scheduler had lost track of. Its results are
+  // complete, as a resubmission counts them: the row is that run.
+  if (summary_written_since(row.run_dir, task->submitted)) {
+    row.exit_code = 0;
+    row.summary = read_summary(row.run_dir);
+    if (row.converged()) return row;
+    row.exit_code = -1;
+    row.summary = nullptr;
   }
   auto known = queries.find(task->job_id);
   if (known == queries.end()) known = queries.emplace(task->job_id, query_slurm_array(task->job_id)).first;
