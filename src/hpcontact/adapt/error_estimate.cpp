@@ -16,6 +16,26 @@
 
 namespace hpcontact::adapt {
 
+namespace {
+/// A shear below this share of what Coulomb friction could carry, μ‖p‖, is incidental.
+constexpr double kIncidentalShear = 0.01;
+
+/// The squared size the shear's error is measured against: the shear's own, unless the contact
+/// carries almost no shear — less than kIncidentalShear of its friction's capacity, whose square
+/// is `capacity2` (0 under a stick law: no bound) — and the shear is only the numerical rest of a
+/// contact loaded normally (two equal bodies pressed together carry none in the linear theory):
+/// then the pressure's, its absolute error counting against the traction's size.
+double shear_scale2(double shear2, double capacity2, double pressure2) {
+  return shear2 > kIncidentalShear * kIncidentalShear * capacity2 ? shear2 : pressure2;
+}
+
+/// μ² of a pair's Coulomb law; 0 under a stick law (no capacity bound) or without friction.
+double coulomb_mu2(const model::ContactPair& pair) {
+  const auto& c = pair.constraints;
+  return c && c->friction.kind == contact::FrictionLaw::Kind::coulomb ? c->friction.mu * c->friction.mu : 0.0;
+}
+}  // namespace
+
 model::ProblemSpec with_degrees_raised(const model::ProblemSpec& spec) {
   model::ProblemSpec raised = spec;
   for (auto& body : raised.bodies) {
@@ -37,13 +57,14 @@ ErrorEstimate estimate_error(const Solved& coarse, const Solved& enriched) {
   const auto& b = enriched.solution;
   HPC_REQUIRE(a.pairs.size() == b.pairs.size(), AdaptError,
               "estimate_error: the two solves have different contact pairs");
-  double diff2 = 0, norm2 = 0, shear_diff2 = 0, shear_norm2 = 0;
+  double diff2 = 0, norm2 = 0, shear_diff2 = 0, shear_norm2 = 0, capacity2 = 0;
   bool friction = false;
   for (size_t k = 0; k < a.pairs.size(); ++k) {
     const model::BoundaryPressureProbe pa(coarse.discretization, a.pairs[k], a.u, a.multipliers_of(k));
     const model::BoundaryPressureProbe pb(enriched.discretization, b.pairs[k], b.u, b.multipliers_of(k));
     const bool shear = pa.has_tangential_traction() && pb.has_tangential_traction();
     friction = friction || shear;
+    const double mu2 = coulomb_mu2(b.pairs[k]);
     const auto& body = enriched.discretization.bodies[b.pairs[k].body];
     for (size_t e = 0; e < b.pairs[k].edges.size(); ++e) {
       const auto& edge = body.mesh.edge(b.pairs[k].edges[e]);
@@ -62,14 +83,16 @@ ErrorEstimate estimate_error(const Solved& coarse, const Solved& enriched) {
         const double sa = pa.tangential_traction(ke, t), sb = pb.tangential_traction(ke, t);
         shear_diff2 += rule.weights[i] * ds_dt * (sa - sb) * (sa - sb);
         shear_norm2 += rule.weights[i] * ds_dt * sb * sb;
+        capacity2 += rule.weights[i] * ds_dt * mu2 * tb * tb;
       }
     }
   }
   ErrorEstimate est;
   if (norm2 > 0) est.pressure = std::sqrt(diff2 / norm2);
-  // A frictional contact that carries no shear (loaded normally only) has no relative error of
-  // it: its absolute one is then measured against the pressure's size.
-  if (friction) est.shear = std::sqrt(shear_diff2 / (shear_norm2 > 0 ? shear_norm2 : norm2));
+  if (friction) {
+    const double scale2 = shear_scale2(shear_norm2, capacity2, norm2);
+    if (scale2 > 0) est.shear = std::sqrt(shear_diff2 / scale2);
+  }
   const double ua = post::strain_energy(coarse.discretization, a.u);
   const double ub = post::strain_energy(enriched.discretization, b.u);
   if (ub > 0) est.energy = std::sqrt(std::abs(ub - ua) / ub);
@@ -82,7 +105,7 @@ std::vector<Eigen::VectorXd> traction_error_gradient(const Solved& coarse, const
   const auto& a = coarse.solution;
   const auto& b = enriched.solution;
   std::vector<Eigen::VectorXd> g(b.pairs.size());
-  double norm2 = 0, shear_norm2 = 0;
+  double norm2 = 0, shear_norm2 = 0, capacity2 = 0;
   for (size_t k = 0; k < b.pairs.size(); ++k) {
     const auto& c = b.pairs[k].constraints;
     if (!c) continue;
@@ -91,6 +114,7 @@ std::vector<Eigen::VectorXd> traction_error_gradient(const Solved& coarse, const
     const int n = c->size();
     const bool shear = pa.has_tangential_traction() && pb.has_tangential_traction();
     g[k] = Eigen::VectorXd::Zero(n * (c->has_friction() ? 2 : 1));
+    const double mu2 = coulomb_mu2(b.pairs[k]);
     for (int j = 0; j < n; ++j) {
       const auto& node = c->nodes.nodes[j];
       const double tb = pb.traction(node.edge, node.t);
@@ -100,10 +124,10 @@ std::vector<Eigen::VectorXd> traction_error_gradient(const Solved& coarse, const
       const double sb = pb.tangential_traction(node.edge, node.t);
       g[k](n + j) = node.weight * (sb - pa.tangential_traction(node.edge, node.t));
       shear_norm2 += node.weight * sb * sb;
+      capacity2 += node.weight * mu2 * tb * tb;
     }
   }
-  // Without shear (loaded normally only) its absolute error counts against the pressure's size.
-  if (shear_norm2 <= 0) shear_norm2 = norm2;
+  shear_norm2 = shear_scale2(shear_norm2, capacity2, norm2);
   for (size_t k = 0; k < g.size(); ++k) {
     if (!g[k].size()) continue;
     const int n = b.pairs[k].constraints->size();

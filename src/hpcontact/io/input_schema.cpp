@@ -509,7 +509,9 @@ const std::vector<KeySpec>& input_schema() {
        .choices = {"rp", "hp", "none"}},
       {.path = "adapt.tolerance", .type = T::number,
        .doc = "hp: the accuracy asked for, the relative L2 error of the contact pressure (with "
-              "exact Coulomb friction also of the shear, the larger of the two), in "
+              "exact friction also of the shear, the larger of the two; a shear below 1 % of "
+              "mu times the pressure, as on a contact pressed only, has its error measured "
+              "against the pressure's size instead of its own), in "
               "(0, 1); each step's error is estimated from a solve one degree higher on its mesh "
               "and the loop stops at the first below it (adapt.steps is then the most it may "
               "take); absent: adapt.steps steps. rp: stop when every moved node is within this "
