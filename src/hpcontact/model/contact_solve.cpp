@@ -10,6 +10,8 @@
 #include <limits>
 #include <sstream>
 
+#include <Eigen/SparseLU>
+
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/model/contact_system.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
@@ -545,16 +547,21 @@ Eigen::VectorXd multiplier_adjoint(const ProblemSpec& spec, const Discretization
   system.evaluate(x, r, &A);
   Eigen::VectorXd g = system.unknowns(Eigen::VectorXd::Zero(sol.u.size()), gradient);
   if (bordered) g(g.size() - 1) = 0;
-  // Aᵀ has the blocks of a tangent (Kᵀ, Gᵀ, Eᵀ, Hᵀ): the system's saddle-point solver takes it
-  // as it takes A (a sparse factorisation of the displacement block, a dense Schur complement).
+  // Aᵀ by a sparse LU with pivoting, not by the system's saddle-point solver: that one
+  // eliminates the multipliers by a Schur complement equilibrated by its diagonal, and Aᵀ's
+  // force-target row has a u-part (the prescribed displacements' column) where A's has none, so
+  // its diagonal there is a rounding rest of the augmentation, and the equilibrated complement
+  // looked singular (partial slip under force control, a non-singular Aᵀ) — the goal-oriented
+  // weights were then left out.
   const solve::SparseMatrix At = A.transpose();
-  solve::LinearSolver sparse(tangent_solver(spec.solver, d, system));
-  try {
-    system.factorize(sparse, At);
-  } catch (const NumericalError& e) {
-    throw NumericalError(std::string("the adjoint of the contact problem: ") + e.what());
-  }
-  const Eigen::VectorXd z = system.solve(sparse, g);
+  Eigen::SparseLU<solve::SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
+  lu.compute(At);
+  HPC_REQUIRE(lu.info() == Eigen::Success, NumericalError, "the adjoint of the contact problem: its "
+              "matrix (the transposed Newton tangent, ", At.rows(), " unknowns) is singular: ",
+              lu.lastErrorMessage());
+  const Eigen::VectorXd z = lu.solve(g);
+  HPC_REQUIRE(z.allFinite(), NumericalError, "the adjoint of the contact problem: its solution is "
+              "not finite (the transposed Newton tangent is singular)");
   return system.homogeneous_field(z);
 }
 
