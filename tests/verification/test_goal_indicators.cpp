@@ -107,8 +107,7 @@ TEST(MultiplierAdjoint, PredictsTheFunctionalUnderDisplacementControl) {
 // force through stages, then sheared with the force held: the adjoint's load term predicts how
 // the shear's second moment moves with a body force on the upper one. Its transposed tangent
 // is not singular, but the saddle-point solver's Schur complement of it looked so (reciprocal
-// condition 2e-15: the force row's diagonal a rounding rest of the augmentation, equilibrated
-// by itself) and the goal-oriented weights were left out of every hp step there.
+// condition 2e-15) and the goal-oriented weights were left out of every hp step there.
 TEST(MultiplierAdjoint, PredictsTheShearOfTwoCylindersUnderForceControlThroughStages) {
   const model::ProblemSpec spec = io::read_problem(
       std::string(HPC_SOURCE_DIR) + "/examples/partial-slip/hp-tolerance.yaml",

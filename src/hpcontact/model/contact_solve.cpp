@@ -548,11 +548,12 @@ Eigen::VectorXd multiplier_adjoint(const ProblemSpec& spec, const Discretization
   Eigen::VectorXd g = system.unknowns(Eigen::VectorXd::Zero(sol.u.size()), gradient);
   if (bordered) g(g.size() - 1) = 0;
   // Aᵀ by a sparse LU with pivoting, not by the system's saddle-point solver: that one
-  // eliminates the multipliers by a Schur complement equilibrated by its diagonal, and Aᵀ's
-  // force-target row has a u-part (the prescribed displacements' column) where A's has none, so
-  // its diagonal there is a rounding rest of the augmentation, and the equilibrated complement
-  // looked singular (partial slip under force control, a non-singular Aᵀ) — the goal-oriented
-  // weights were then left out.
+  // eliminates the multipliers by a Schur complement equilibrated by its diagonal, built for A's
+  // pattern, and on Aᵀ of two cylinders under force control the complement looked singular
+  // (reciprocal condition 2e-15) where Aᵀ is not (its smallest singular value 6e-4 of the
+  // largest 3e6) — probably the force row, which has a u-part in Aᵀ and none in A, so that its
+  // diagonal there is a rounding rest of the augmentation. The goal-oriented weights were then
+  // left out.
   const solve::SparseMatrix At = A.transpose();
   Eigen::SparseLU<solve::SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
   lu.compute(At);
