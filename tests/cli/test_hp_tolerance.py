@@ -115,6 +115,7 @@ def test_goal_oriented_degrees_need_half_the_dofs_of_the_rising_degree(to_1e4, h
     learnt = [h["degrees"] for h in to_1e4["adapt"]["history"] if "degrees" in h]
     assert learnt and all("degrees" not in h for h in rising["adapt"]["history"])
     assert sum(d["raised"] for d in learnt) >= 1 and sum(d["lowered"] for d in learnt) >= 1
+    assert all(d["weights"] == "goal-oriented" for d in learnt)  # the adjoint solved at every step
 
 
 def test_goal_degrees_need_a_tolerance(hpcontact, root, tmp_path):

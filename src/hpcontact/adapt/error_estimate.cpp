@@ -165,11 +165,15 @@ std::vector<std::vector<double>> surplus_energies(const model::Discretization& c
 
 std::vector<std::vector<double>> traction_error_indicators(const Solved& coarse,
                                                            const Solved& enriched,
-                                                           const model::ProgressFn& progress) {
+                                                           const model::ProgressFn& progress,
+                                                           std::string* weights_left_out) {
   auto eta = surplus_energies(coarse.discretization, enriched.discretization, enriched.solution.u);
   bool exact = false;
   for (const auto& pair : enriched.solution.pairs) exact = exact || pair.constraints;
-  if (!exact) return eta;
+  if (!exact) {
+    if (weights_left_out) *weights_left_out = "no exactly enforced contact pair (no multipliers to weigh)";
+    return eta;
+  }
   std::vector<std::vector<double>> weight;
   try {
     weight = post::element_strain_energies(
@@ -178,6 +182,7 @@ std::vector<std::vector<double>> traction_error_indicators(const Solved& coarse,
                                   traction_error_gradient(coarse, enriched)));
   } catch (const NumericalError& e) {
     if (progress) progress(std::string("goal-oriented weights left out: ") + e.what());
+    if (weights_left_out) *weights_left_out = e.what();
     return eta;
   }
   for (size_t b = 0; b < eta.size(); ++b)

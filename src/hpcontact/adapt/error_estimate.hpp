@@ -3,6 +3,7 @@
 #pragma once
 
 #include <limits>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -63,10 +64,12 @@ std::vector<Eigen::VectorXd> traction_error_gradient(const Solved& coarse, const
 /// pairs' contact edges (the second term with friction), the traction's error as the weight,
 /// each part relative to its size (traction_error_gradient): by Cauchy–Schwarz, how much an
 /// error of K's size moves J. Without exact pairs
-/// (no multipliers), or when the adjoint cannot be solved (said through `progress`), S_K alone.
+/// (no multipliers), or when the adjoint cannot be solved (said through `progress`), S_K alone,
+/// and why in `weights_left_out` (if not null; else it is left empty).
 std::vector<std::vector<double>> traction_error_indicators(const Solved& coarse,
                                                            const Solved& enriched,
-                                                           const model::ProgressFn& progress = {});
+                                                           const model::ProgressFn& progress = {},
+                                                           std::string* weights_left_out = nullptr);
 
 /// Solves `coarse`'s problem one degree higher (starting from its solution) and estimates the
 /// error of `coarse` from it; the solve is returned in `enriched` when not null.

@@ -8,8 +8,9 @@
 namespace hpcontact::adapt {
 
 std::pair<int, int> DegreeCorrections::learn(const Solved& coarse, const Solved& enriched,
-                                             const model::ProgressFn& progress) {
-  auto score = traction_error_indicators(coarse, enriched, progress);
+                                             const model::ProgressFn& progress,
+                                             std::string* weights_left_out) {
+  auto score = traction_error_indicators(coarse, enriched, progress, weights_left_out);
   double total = 0;
   int n = 0;
   for (size_t b = 0; b < score.size(); ++b)

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <string>
 #include <vector>
 
 #include "hpcontact/adapt/solved.hpp"
@@ -25,9 +26,11 @@ public:
   /// same mesh. Each element's goal-oriented indicator η_K (traction_error_indicators) is divided
   /// by the dofs one more degree costs it, 2 p_K + 3 (per component, tensor space), so that
   /// degrees are bought where they buy most accuracy; the elements far above and far below the
-  /// mean are corrected. Returns how many were raised and how many lowered.
+  /// mean are corrected. Returns how many were raised and how many lowered; why the indicators
+  /// had no goal-oriented weights, if they had none, in `weights_left_out`.
   std::pair<int, int> learn(const Solved& coarse, const Solved& enriched,
-                            const model::ProgressFn& progress = {});
+                            const model::ProgressFn& progress = {},
+                            std::string* weights_left_out = nullptr);
 
   /// The corrections added to the degrees of `spec` (elements with an entry in element_degrees),
   /// each kept within [min_degree, model::kMaxDegree].

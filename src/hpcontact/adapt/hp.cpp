@@ -209,7 +209,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       // degrees are not the rule's).
       if (options.degree == model::HpDegree::goal && step > 0 &&
           !(rec.estimate.traction() <= options.tolerance)) {
-        const auto [raised, lowered] = corrections.learn(*s, *enriched, progress);
+        const auto [raised, lowered] = corrections.learn(*s, *enriched, progress, &rec.weights_left_out);
         rec.degrees_learnt = true;
         rec.degrees_raised = raised;
         rec.degrees_lowered = lowered;

@@ -47,6 +47,8 @@ struct HpIteration {
   /// steps, and how many elements they gave one degree more and one less.
   bool degrees_learnt = false;
   int degrees_raised = 0, degrees_lowered = 0;
+  /// Why this step's indicators had no goal-oriented weights (the energy surplus alone), if so.
+  std::string weights_left_out;
 };
 
 using HpObserver = std::function<void(const HpIteration&, const Solved&)>;

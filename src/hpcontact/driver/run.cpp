@@ -440,7 +440,10 @@ nlohmann::json hp_iteration_json(const adapt::HpIteration& it) {
   j["recentred"] = it.recentred;
   j["gamma_star_inside"] = it.inside;
   if (it.estimate.dofs > 0) j["estimated_error"] = estimate_json(it.estimate);
-  if (it.degrees_learnt) j["degrees"] = {{"raised", it.degrees_raised}, {"lowered", it.degrees_lowered}};
+  if (it.degrees_learnt)
+    j["degrees"] = {{"raised", it.degrees_raised}, {"lowered", it.degrees_lowered},
+                    {"weights", it.weights_left_out.empty() ? "goal-oriented"
+                                                           : "energy surplus alone: " + it.weights_left_out}};
   if (it.step == 0) {
     j["resolve_rounds"] = it.resolve_rounds;
     j["resolved_towards"] = points_json(it.resolved_towards);
