@@ -551,9 +551,10 @@ Eigen::VectorXd multiplier_adjoint(const ProblemSpec& spec, const Discretization
   // eliminates the multipliers by a Schur complement equilibrated by its diagonal, built for A's
   // pattern, and on Aᵀ of two cylinders under force control the complement looked singular
   // (reciprocal condition 2e-15) where Aᵀ is not (its smallest singular value 6e-4 of the
-  // largest 3e6) — probably the force row, which has a u-part in Aᵀ and none in A, so that its
-  // diagonal there is a rounding rest of the augmentation. The goal-oriented weights were then
-  // left out.
+  // largest 3e6): the force row has a u-part in Aᵀ and none in A, its diagonal in the complement
+  // is a rounding rest (1e-12 beside entries of 161, at p = 2), and the equilibration by the
+  // diagonal's root blew that row up (the complement itself: condition 8e6). The goal-oriented
+  // weights were then left out.
   const solve::SparseMatrix At = A.transpose();
   Eigen::SparseLU<solve::SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
   lu.compute(At);
