@@ -87,6 +87,19 @@ def test_under_force_control_every_step_has_goal_oriented_weights(hpcontact, roo
     assert learnt and all(d["weights"] == "goal-oriented" for d in learnt), learnt
 
 
+def test_a_shear_above_the_friction_capacity_is_said(hpcontact, root, tmp_path):
+    """Q = 2.2 on the cylinders pressed to 7 with mu = 0.3 (capacity 2.1): every point slips at
+    the last load steps and the upper body is held by nothing in x; the run fails saying so, the
+    capacity named, and writes no summary."""
+    out = tmp_path / "gross"
+    r = hpcontact("run", os.path.join(root, CASE), "--out", out, "-q", "--set", "adapt.method=none",
+                  "--set", "bodies[0].loads[0].resultant=2.2", "--set", "bodies[1].loads[0].resultant=2.2")
+    assert r.returncode == 1, r.stderr
+    assert "body 'upper' is held only by contact against translation in x" in r.stderr, r.stderr
+    assert "a tangential load above the friction's capacity, mu times the normal force" in r.stderr
+    assert not (out / "summary.json").exists()
+
+
 def test_pressed_only_the_tolerance_holds_the_pressure(hpcontact, root, tmp_path):
     """The same cylinders pressed and not sheared carry almost no shear (none in the linear
     theory: equal bodies), a numerical rest whose error relative to its own size stays between

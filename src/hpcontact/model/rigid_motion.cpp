@@ -140,7 +140,9 @@ std::string explain_singular(const Discretization& d, int row, const std::vector
            (b < frictional.size() && frictional[b]
                 ? " (contact with friction holds it where points touch: normal to the contact "
                   "where they press, tangentially where they stick or press; a body that touches "
-                  "nowhere, or only at points that slip without pressure, is free)"
+                  "nowhere, or only at points that slip without pressure, is free; and where every "
+                  "point slips — a tangential load above the friction's capacity, mu times the "
+                  "normal force — nothing holds it tangentially and there is no equilibrium)"
                 : " (frictionless contact holds only where it presses, and only normal to the "
                   "contact)");
   }
