@@ -38,6 +38,19 @@ def exe(hpcontact, request):
     return request.config.getoption("--hpcontact")
 
 
+def expect_refused(hpcontact, case, out, settings, message, code):
+    """`hpcontact run case --out out -q` with each of `settings` as --set: exit `code`, `message`
+    and the case's file name on stderr, and no summary.json in `out`."""
+    args = ["run", case, "--out", out, "-q"]
+    for s in settings:
+        args += ["--set", s]
+    r = hpcontact(*args)
+    assert r.returncode == code, r.stderr
+    assert message in r.stderr, r.stderr
+    assert os.path.basename(case) in r.stderr
+    assert not os.path.exists(os.path.join(out, "summary.json"))
+
+
 def load_script(name):
     """scripts/<name>.py as a module (its functions, without running main)."""
     spec = importlib.util.spec_from_file_location(name, os.path.join(ROOT, "scripts", name + ".py"))

@@ -11,6 +11,8 @@ import sys
 import numpy as np
 import pytest
 
+from conftest import expect_refused
+
 DATA = os.path.join(os.path.dirname(__file__), "data")
 PATCH = os.path.join(DATA, "block-shear-patch.yaml")
 PRESS_PUSH = os.path.join(DATA, "block-press-push.yaml")
@@ -198,14 +200,7 @@ def test_friction_on_a_curved_obstacle_from_a_symmetry_line(hpcontact, root, tmp
 ])
 def test_contradicting_load_paths_are_refused(hpcontact, tmp_path, settings, message, code):
     case = PRESS_PUSH if code == 2 else force_controlled(tmp_path)
-    args = ["run", case, "--out", tmp_path / "out", "-q"]
-    for s in settings:
-        args += ["--set", s]
-    r = hpcontact(*args)
-    assert r.returncode == code, r.stderr
-    assert message in r.stderr, r.stderr
-    assert os.path.basename(case) in r.stderr
-    assert not os.path.exists(tmp_path / "out" / "summary.json")
+    expect_refused(hpcontact, str(case), str(tmp_path / "out"), settings, message, code)
 
 
 def partial_slip_mesh(root, tmp_path, *args):
@@ -274,11 +269,5 @@ def test_force_control_through_stages(hpcontact, root, tmp_path):
      "target_resultant with stages needs the first contact pair enforced exactly", 1),
 ])
 def test_stages_under_force_control_are_shares_of_the_target(hpcontact, tmp_path, settings, message, code):
-    args = ["run", PRESS_PUSH, "--out", tmp_path / "out", "-q", "--set", "solver.target_resultant={value: 20}"]
-    for s in settings:
-        args += ["--set", s]
-    r = hpcontact(*args)
-    assert r.returncode == code, r.stderr
-    assert message in r.stderr, r.stderr
-    assert "block-press-push.yaml" in r.stderr
-    assert not os.path.exists(tmp_path / "out" / "summary.json")
+    expect_refused(hpcontact, PRESS_PUSH, str(tmp_path / "out"),
+                   ["solver.target_resultant={value: 20}", *settings], message, code)

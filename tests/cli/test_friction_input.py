@@ -6,6 +6,8 @@ import os
 
 import pytest
 
+from conftest import expect_refused
+
 STICK = os.path.join("examples", "two-bars", "stick.yaml")
 
 
@@ -19,14 +21,7 @@ STICK = os.path.join("examples", "two-bars", "stick.yaml")
     (["solver.stages[0].steps=0"], "solver.stages[0].steps", 2),
 ])
 def test_bad_friction_input(hpcontact, root, tmp_path, settings, message, code):
-    args = ["run", os.path.join(root, STICK), "--out", tmp_path, "-q"]
-    for s in settings:
-        args += ["--set", s]
-    r = hpcontact(*args)
-    assert r.returncode == code, r.stderr
-    assert message in r.stderr, r.stderr
-    assert "stick.yaml" in r.stderr
-    assert not os.path.exists(tmp_path / "summary.json")
+    expect_refused(hpcontact, os.path.join(root, STICK), str(tmp_path), settings, message, code)
 
 
 @pytest.mark.parametrize("friction, message", [
