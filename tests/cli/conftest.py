@@ -1,8 +1,10 @@
 """Fixtures of the command-line tests: the path of the built hpcontact program, and the
 scripts/ modules loaded for tests of their functions."""
+import csv
 import importlib.util
 import os
 import subprocess
+import sys
 
 import pytest
 
@@ -49,6 +51,19 @@ def expect_refused(hpcontact, case, out, settings, message, code):
     assert message in r.stderr, r.stderr
     assert os.path.basename(case) in r.stderr
     assert not os.path.exists(os.path.join(out, "summary.json"))
+
+
+def csv_rows(path):
+    """A CSV file's rows as dicts (contact.csv, path.csv, ...)."""
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def partial_slip_generator(root, *args):
+    """scripts/partial_slip_mesh.py with these arguments (two cylinders, R = 10): the finished
+    process, the problem file on its stdout."""
+    return subprocess.run([sys.executable, os.path.join(root, "scripts", "partial_slip_mesh.py"), *args],
+                          capture_output=True, text=True, timeout=60)
 
 
 def load_script(name):

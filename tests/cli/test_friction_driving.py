@@ -2,25 +2,17 @@
 tangential stage with the press held), the load path friction remembers, and force control with
 friction (force-controlled load steps, the factor an unknown of each). Every figure is checked
 against an exact state: the homogeneous one of a block on a plane, or full slip at mu P."""
-import csv
 import json
 import os
-import subprocess
-import sys
 
 import numpy as np
 import pytest
 
-from conftest import expect_refused
+from conftest import csv_rows, expect_refused, partial_slip_generator
 
 DATA = os.path.join(os.path.dirname(__file__), "data")
 PATCH = os.path.join(DATA, "block-shear-patch.yaml")
 PRESS_PUSH = os.path.join(DATA, "block-press-push.yaml")
-
-
-def rows(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
 
 
 def run(hpcontact, case, out, *settings):
@@ -37,7 +29,7 @@ def test_tangential_stage_reproduces_the_homogeneous_state(hpcontact, tmp_path, 
     """Pressed, then sheared by a displacement-driven stage: pressure E eps = 10, |t_T| = G gamma
     = 2 below mu p (stick), no point moved along the plane; the path's factors per direction."""
     s = run(hpcontact, PATCH, tmp_path, f"discretization.degree={degree}")
-    points = rows(tmp_path / "contact.csv")
+    points = csv_rows(tmp_path / "contact.csv")
     assert len(points) > 2
     for p in points:
         assert float(p["pressure"]) == pytest.approx(10, rel=1e-10)
@@ -47,7 +39,7 @@ def test_tangential_stage_reproduces_the_homogeneous_state(hpcontact, tmp_path, 
         assert p["state"] == "stick"
     # the force on the block: the plane pushes up by p W, and back against the push by tau W
     assert s["contact"]["resultant"] == pytest.approx([-4, 20], rel=1e-10)
-    path = rows(tmp_path / "path.csv")
+    path = csv_rows(tmp_path / "path.csv")
     assert [float(r["displacement_factor_x"]) for r in path] == [0, 0, 0.5, 1]
     assert [float(r["displacement_factor_y"]) for r in path] == [0.5, 1, 1, 1]
     # pressed, not yet pushed: no tangential force
@@ -61,7 +53,7 @@ def test_the_load_path_matters(hpcontact, tmp_path):
     s = run(hpcontact, PRESS_PUSH, tmp_path / "press-push")
     assert s["contact"]["normal_force"] == pytest.approx(20, rel=1e-10)
     assert s["contact"]["resultant"][0] == pytest.approx(-0.3 * 20, rel=1e-10)
-    for p in rows(tmp_path / "press-push" / "contact.csv"):
+    for p in csv_rows(tmp_path / "press-push" / "contact.csv"):
         assert p["state"] == "slip"
         assert abs(float(p["tangential_traction"])) == pytest.approx(0.3 * float(p["pressure"]), rel=1e-9)
     s = run(hpcontact, PRESS_PUSH, tmp_path / "push-press",
@@ -88,7 +80,7 @@ def test_slip_is_the_path_total(hpcontact, tmp_path):
     case = tmp_path / "slide.yaml"
     case.write_text(text)
     run(hpcontact, str(case), tmp_path / "slide")
-    points = rows(tmp_path / "slide" / "contact.csv")
+    points = csv_rows(tmp_path / "slide" / "contact.csv")
     assert len(points) >= 7
     for p in points:
         assert p["state"] == "slip" and float(p["tangent_x"]) == 1
@@ -115,7 +107,7 @@ def test_the_other_bodys_rows_slip_as_the_pair_does(hpcontact, tmp_path):
     bodies' rows hold this to 2e-5 (measured 2.2e-6 on the block's, 5.5e-6 on the foundation's,
     where they were 0), the last of the three equal steps a third of it, both along t_T."""
     run(hpcontact, os.path.join(DATA, "block-on-foundation-slide.yaml"), tmp_path)
-    points = rows(tmp_path / "contact.csv")
+    points = csv_rows(tmp_path / "contact.csv")
     block = [p for p in points if p["body"] == "block"]
     foundation = [p for p in points if p["body"] == "foundation"]
     assert len(block) == 7 and len(foundation) > 50
@@ -153,11 +145,11 @@ def test_force_control_with_friction(hpcontact, tmp_path):
     shown = run(hpcontact, PRESS_PUSH, tmp_path / "displacement", *settings)
     forced = run(hpcontact, force_controlled(tmp_path), tmp_path / "force")
     assert forced["load_factor"] == pytest.approx(1, rel=1e-9)
-    assert [float(r["resultant_y"]) for r in rows(tmp_path / "force" / "path.csv")] == \
+    assert [float(r["resultant_y"]) for r in csv_rows(tmp_path / "force" / "path.csv")] == \
         pytest.approx([5, 10, 15, 20], rel=1e-9)
     assert forced["contact"]["resultant"] == pytest.approx(shown["contact"]["resultant"], rel=1e-9)
-    a = rows(tmp_path / "force" / "contact.csv")
-    b = rows(tmp_path / "displacement" / "contact.csv")
+    a = csv_rows(tmp_path / "force" / "contact.csv")
+    b = csv_rows(tmp_path / "displacement" / "contact.csv")
     assert len(a) == len(b)
     for p, q in zip(a, b):
         assert float(p["tangential_traction"]) == pytest.approx(float(q["tangential_traction"]), rel=1e-8)
@@ -176,7 +168,7 @@ def test_friction_on_a_curved_obstacle_from_a_symmetry_line(hpcontact, root, tmp
             "contact[0].obstacle={type: circle, center: [0, -50], radius: 50}",
             f"contact[0].friction={{law: coulomb, mu: {mu}}}")
     assert s["converged"] and abs(s["contact"]["resultant"][1] - 35000) < 35
-    points = rows(tmp_path / "contact.csv")
+    points = csv_rows(tmp_path / "contact.csv")
     axis = min(points, key=lambda p: abs(float(p["X"])))
     assert float(axis["X"]) < 1e-12 and float(axis["tangential_traction"]) == 0
     # t_T and the normal multiplier `traction` are both per unit undeformed length
@@ -206,8 +198,7 @@ def test_contradicting_load_paths_are_refused(hpcontact, tmp_path, settings, mes
 def partial_slip_mesh(root, tmp_path, *args):
     """A partial-slip problem file of scripts/partial_slip_mesh.py (two cylinders, R = 10)."""
     case = tmp_path / "partial-slip.yaml"
-    r = subprocess.run([sys.executable, os.path.join(root, "scripts", "partial_slip_mesh.py"), *args],
-                       capture_output=True, text=True)
+    r = partial_slip_generator(root, *args)
     assert r.returncode == 0, r.stderr
     case.write_text(r.stdout)
     return case
@@ -223,7 +214,7 @@ def test_force_control_through_stages(hpcontact, root, tmp_path):
     stages = ["solver.stages=[{displacements: 0.5, loads: 0, steps: 1}, {displacements: 1, loads: 0, steps: 1},"
               " {displacements: 1, loads: 1, steps: 2}]"]
     forced = run(hpcontact, str(case), tmp_path / "force", "solver.target_resultant={value: 7}", *stages)
-    path = rows(tmp_path / "force" / "path.csv")
+    path = csv_rows(tmp_path / "force" / "path.csv")
     assert [float(r["resultant_y"]) for r in path] == pytest.approx([3.5, 7, 7, 7], rel=1e-9)
     assert [float(r["load_factor"]) for r in path] == [0, 0, 0.5, 1]
     assert [float(r["resultant_x"]) for r in path] == pytest.approx([0, 0, -0.525, -1.05], rel=1e-9, abs=1e-9)
@@ -241,8 +232,8 @@ def test_force_control_through_stages(hpcontact, root, tmp_path):
                 f" {{displacements: {alpha[1]!r}, loads: 0, steps: 1}},"
                 f" {{displacements: {alpha[3]!r}, loads: 1, steps: 2}}]")
     assert shown["contact_pairs"][0]["normal_force"] == pytest.approx(7, rel=1e-7)
-    a = rows(tmp_path / "force" / "contact.csv")
-    b = rows(tmp_path / "displacement" / "contact.csv")
+    a = csv_rows(tmp_path / "force" / "contact.csv")
+    b = csv_rows(tmp_path / "displacement" / "contact.csv")
     assert len(a) == len(b) and len(a) > 20
     scale = max(abs(float(p["pressure"])) for p in a)
     for p, q in zip(a, b):

@@ -7,16 +7,13 @@ here to better than 0.05 %: examples/partial-slip/README.md).
 
 Measured: step 0 estimates the pressure at 0.82 % and the shear at 1.75 %; step 2 (2541 DOF)
 0.37 % and 1.04 %, and its shear is 0.91 % from the closed form, the pressure 0.27 %."""
-import csv
 import json
 import os
-import subprocess
-import sys
 
 import pytest
 import yaml
 
-from conftest import load_script
+from conftest import csv_rows, load_script, partial_slip_generator
 
 compare = load_script("partial_slip_compare")
 CASE = os.path.join("examples", "partial-slip", "hp-tolerance.yaml")
@@ -67,11 +64,6 @@ def test_the_result_is_within_the_tolerance_of_cattaneo_mindlin(run):
     assert m["coulomb_ratio_max"] <= 1 + 1e-9
 
 
-def generate(root, *args):
-    return subprocess.run([sys.executable, os.path.join(root, "scripts", "partial_slip_mesh.py"), *args],
-                          capture_output=True, text=True, timeout=60)
-
-
 def test_under_force_control_every_step_has_goal_oriented_weights(hpcontact, root, tmp_path):
     """Pressed by a force through the stages (solver.target_resultant), the loop's adjoint is
     bordered with the force held; each step that learns degrees says which weights its indicators
@@ -104,9 +96,9 @@ def test_pressed_only_the_tolerance_holds_the_pressure(hpcontact, root, tmp_path
     """The same cylinders pressed and not sheared carry almost no shear (none in the linear
     theory: equal bodies), a numerical rest whose error relative to its own size stays between
     0.7 and 3 at every step (measured at 1e-3: 0.68, 1.0, 2.0, 1.1, 0.94, 1.9, 2.9 in six steps, the
-    pressure's 2.3e-5 at the last, and no end); below 1 %
-    of the friction's capacity μ‖p‖ its error counts against the pressure's size, and the loop
-    ends at the tolerance with the pressure within it of Hertz's."""
+    pressure's 2.3e-5 at the last, and no end); below 1 % of the friction's capacity μ‖p‖ its
+    error counts against the pressure's size, and the loop ends at the tolerance with the pressure
+    within it of Hertz's."""
     tolerance = 3e-3
     out = tmp_path / "pressed"
     r = hpcontact("run", os.path.join(root, CASE), "--out", out, "-q",
@@ -124,16 +116,11 @@ def test_pressed_only_the_tolerance_holds_the_pressure(hpcontact, root, tmp_path
     assert m["pressure_rel_L2"] <= tolerance, m["pressure_rel_L2"]
 
 
-def csv_rows(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-
-
 def test_the_example_is_what_the_generator_writes(root):
     """The example's header names the command that made it; that command writes it again."""
     text = open(os.path.join(root, CASE)).read()
     args = text.splitlines()[0].split("partial_slip_mesh.py ", 1)[1].split()
-    r = generate(root, *args)
+    r = partial_slip_generator(root, *args)
     assert r.returncode == 0, r.stderr
     assert r.stdout == text
 
@@ -143,10 +130,10 @@ def test_rings_too_large_for_the_contact_zone_are_refused(root):
     contact edges would end at a, where the zone ends (an hp run from it failed at its first
     step). Refused naming the option and the largest ratio; a ratio within it gives contact
     edges that reach beyond a."""
-    r = generate(root, "--force", "70000", "--mesh", "polar")
+    r = partial_slip_generator(root, "--force", "70000", "--mesh", "polar")
     assert r.returncode == 2
     assert "--ring-ratio" in r.stderr and "2.54" in r.stderr and "R/2" in r.stderr
-    r = generate(root, "--force", "70000", "--mesh", "polar", "--ring-ratio", "2.5")
+    r = partial_slip_generator(root, "--force", "70000", "--mesh", "polar", "--ring-ratio", "2.5")
     assert r.returncode == 0, r.stderr
     upper = yaml.safe_load(r.stdout)["bodies"][0]
     xs = [upper["nodes"][n][0] for e in upper["edge_sets"]["contact"] for n in e]

@@ -2,6 +2,7 @@
 the local executor's study.csv, a cancelled task is a failed row and a resubmission completes the
 study, and bad input is refused by name before anything is submitted."""
 import csv
+import fcntl
 import json
 import os
 import subprocess
@@ -100,20 +101,24 @@ def wait_submitted(folder, seconds=60):
     pytest.fail(f"no job submitted into {folder} within {seconds} s")
 
 
+def lock_held(path):
+    """Whether another process holds the run folder's lock file (flock) now."""
+    with open(path, "a") as f:
+        try:
+            fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            fcntl.flock(f, fcntl.LOCK_UN)
+            return False
+        except BlockingIOError:
+            return True
+
+
 def wait_unlocked(run_dir, seconds=60):
     """Until no process holds the run folder's lock (.hpcontact-lock, flock): Slurm records a
     task CANCELLED when it signals it, and the run it killed may live on for a moment (up to
     KillWait) holding its folder; a run started there meanwhile is refused, as it should be."""
-    import fcntl
     path = os.path.join(run_dir, ".hpcontact-lock")
     deadline = time.monotonic() + seconds
-    while os.path.exists(path):
-        with open(path, "a") as f:
-            try:
-                fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
-                return
-            except BlockingIOError:
-                pass
+    while os.path.exists(path) and lock_held(path):
         assert time.monotonic() < deadline, f"{path} still locked after {seconds} s"
         time.sleep(0.2)
 
@@ -123,19 +128,12 @@ def wait_locked(run_dir, seconds=60):
     signal handlers in place (they come before the lock). A task cancelled earlier may lose its
     run from the scheduler's view (its script killed while the run was being started), and that
     run then ends, committed, after the task was reported CANCELLED."""
-    import fcntl
     path = os.path.join(run_dir, ".hpcontact-lock")
     deadline = time.monotonic() + seconds
-    while time.monotonic() < deadline:
-        if os.path.exists(path):
-            with open(path, "a") as f:
-                try:
-                    fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
-                    fcntl.flock(f, fcntl.LOCK_UN)
-                except BlockingIOError:
-                    return
+    while not (os.path.exists(path) and lock_held(path)):
+        if time.monotonic() > deadline:
+            pytest.fail(f"no run held {path} within {seconds} s")
         time.sleep(0.05)
-    pytest.fail(f"no run held {path} within {seconds} s")
 
 
 def test_cancelled_task_is_a_failed_row_and_resubmission_completes(exe, cluster, tmp_path):

@@ -125,13 +125,12 @@ StudyRowResult row_result(const io::StudySpec& study, const json& record, const 
   // The task's script ended without its exit line (scancel, a time limit) while the run it had
   // started went on to commit — a process the scheduler had lost track of. Its results are
   // complete, as a resubmission counts them: the row is that run.
-  if (summary_written_since(row.run_dir, task->submitted)) {
-    row.exit_code = 0;
-    row.summary = read_summary(row.run_dir);
-    if (row.converged()) return row;
-    row.exit_code = -1;
-    row.summary = nullptr;
-  }
+  if (summary_written_since(row.run_dir, task->submitted))
+    if (json summary = read_summary(row.run_dir); summary.is_object()) {
+      row.exit_code = 0;
+      row.summary = std::move(summary);
+      return row;
+    }
   auto known = queries.find(task->job_id);
   if (known == queries.end()) known = queries.emplace(task->job_id, query_slurm_array(task->job_id)).first;
   const SlurmArrayQuery& q = known->second;

@@ -428,9 +428,9 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
         if (!advance(0.0, 1.0, steps, along, force)) return failed();
         start = end;
       }
-      bordered = staged_force;  // the target reached: no secant
     }
-    secant = ss.target_resultant && !bordered;
+    // the secant on complete solves only where no step held the target itself
+    secant = ss.target_resultant && !bordered && !staged_force;
   }
   lambda = first;
   if (secant) {
