@@ -7,9 +7,11 @@
 #endif
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstring>
+#include <ctime>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -90,13 +92,31 @@ std::string output_folder(const std::string& out_dir, const std::string& file) {
 /// 2 the command line itself is wrong.
 constexpr int kFailed = 1;
 
+/// When the first stop signal came (CLOCK_MONOTONIC, ns).
+std::atomic<long long> first_stop_ns{0};
+static_assert(std::atomic<long long>::is_always_lock_free, "stop_on_signal must be async-signal-safe");
+
+/// A stop signal within this of the first is the same request delivered twice, not a second
+/// one: `timeout` signals the run and then its whole process group, and Ctrl-C reaches a study's
+/// runs from the terminal and again from the study, which passes it on.
+constexpr long long kRepeatNs = 1'000'000'000;
+
 /// `run` under SIGTERM, SIGINT or SIGHUP (a scheduler's time limit, Ctrl-C): the solve is asked
 /// to stop (core/stop.hpp) instead of the process being killed, so that the run ends as a failed
 /// run that keeps what had converged in last-good/; the process then ends by the same signal. A
-/// second signal kills at once (the handler restores the default).
+/// second signal more than kRepeatNs after the first kills at once.
 extern "C" void stop_on_signal(int signal) {
-  request_stop(signal);
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe, as request_stop and raise
+  const long long t = now.tv_sec * 1'000'000'000LL + now.tv_nsec;
+  if (!stop_requested()) {
+    first_stop_ns.store(t);
+    request_stop(signal);
+    return;
+  }
+  if (t - first_stop_ns.load() < kRepeatNs) return;
   std::signal(signal, SIG_DFL);
+  std::raise(signal);  // delivered as the handler returns (the signal is blocked until then)
 }
 
 void stop_runs_on_signals() {

@@ -300,6 +300,33 @@ def test_study_passes_signals_to_its_runs(exe, root, tmp_path, sig):
     assert not (out / "study.csv").exists() and not (out / "study.json").exists()
 
 
+def test_ctrl_c_on_a_study_keeps_what_its_runs_had_converged(exe, root, tmp_path):
+    """Ctrl-C in a terminal signals the study and its runs (one process group), and the study
+    passes the signal on: each run gets SIGINT twice within milliseconds. That is one request —
+    each run stops before its next Newton iteration and keeps its converged load steps in
+    last-good/ — not a second one that kills at once (which lost them)."""
+    study = tmp_path / "study.yaml"
+    study.write_text(f"study: long\ncase: {os.path.join(root, LONG[0])}\n"
+                     "set: ['solver.load_steps=400', 'contact[0].enforcement=penalty']\n"
+                     "runs:\n  - {label: a}\n  - {label: b}\n")
+    out = tmp_path / "out"
+    p = subprocess.Popen([exe, "study", study, "--out", out, "-j", "2", "-q"],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                         start_new_session=True)  # its own group, as a terminal's job
+    deadline = time.monotonic() + 30
+    while len(children_of(p.pid)) < 2 and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert len(children_of(p.pid)) == 2
+    time.sleep(1.5)  # the runs have converged load steps
+    os.killpg(p.pid, signal.SIGINT)
+    _, err = p.communicate(timeout=60)
+    assert p.returncode == -signal.SIGINT, err
+    for label in ("01-a", "02-b"):
+        kept = json.loads((out / "runs" / label / "last-good" / "summary.json").read_text())
+        assert kept["converged"] is False and kept["load_steps"] >= 1
+        assert "stopped by SIGINT before Newton iteration" in kept["message"], kept["message"]
+
+
 def test_study_into_a_folder_with_a_users_table_is_refused(hpcontact, root, tmp_path):
     """A study.csv the study did not write refuses the folder and stays."""
     study = tmp_path / "study.yaml"

@@ -7,15 +7,17 @@ import json
 import os
 import signal
 import subprocess
+import time
 
 import pytest
 
 PARTIAL_SLIP = os.path.join("examples", "partial-slip")
 
 
-def run_until(exe, case, out, marker, sig, *sets):
-    """Runs `case` into `out`, sends `sig` when a progress line starts with `marker`; returns
-    (exit status, stderr, the progress lines up to the marker)."""
+def run_until(exe, case, out, marker, sig, *sets, again=None):
+    """Runs `case` into `out`, sends `sig` when a progress line starts with `marker` (and once
+    more `again` seconds later, if given); returns (exit status, stderr, the progress lines up to
+    the marker)."""
     args = [exe, "run", case, "--out", str(out)]
     for s in sets:
         args += ["--set", s]
@@ -25,6 +27,9 @@ def run_until(exe, case, out, marker, sig, *sets):
         seen.append(line)
         if line.strip().startswith(marker):
             p.send_signal(sig)
+            if again is not None:
+                time.sleep(again)
+                p.send_signal(sig)
             break
     _, err = p.communicate(timeout=120)
     assert seen and seen[-1].strip().startswith(marker), "the marker line never came: " + err
@@ -49,6 +54,18 @@ def test_a_stopped_load_path_keeps_its_converged_steps(exe, root, tmp_path, sig)
     assert not (out / "summary.json").exists()
     s = last_good(out)
     assert s["converged"] is False and s["load_steps"] == 1
+
+
+def test_the_same_signal_twice_at_once_is_one_stop(exe, root, tmp_path):
+    """`timeout` sends its SIGTERM to the run and then to the run's process group, so the run
+    gets it twice within milliseconds: one request to stop, not a second that kills at once
+    (which left nothing). Sent twice 20 ms apart, the run still keeps its first load step."""
+    out = tmp_path / "r"
+    code, err, _ = run_until(exe, os.path.join(root, PARTIAL_SLIP, "small-load.yaml"), out,
+                             "load step 1:", signal.SIGTERM, again=0.02)
+    assert code == -signal.SIGTERM
+    assert "stopped by SIGTERM before Newton iteration" in err, err
+    assert last_good(out)["load_steps"] == 1
 
 
 def test_a_stopped_hp_loop_keeps_its_best_step(exe, root, tmp_path):
