@@ -116,6 +116,27 @@ def test_pressed_only_the_tolerance_holds_the_pressure(hpcontact, root, tmp_path
     assert m["pressure_rel_L2"] <= tolerance, m["pressure_rel_L2"]
 
 
+def test_a_solve_that_fails_inside_the_loop_is_named_and_the_best_step_kept(hpcontact, root,
+                                                                              tmp_path):
+    """Newton held to 14 iterations without cuts: a later step's solve (here step 3's estimate,
+    one degree more) does not converge. The message names the step and which of its solves
+    failed, after the problem file, and the step whose result last-good/ holds (hp calls them
+    steps, not iterations); last-good's summary says the same step."""
+    import re
+    out = tmp_path / "r"
+    r = hpcontact("run", os.path.join(root, CASE), "--out", out, "-q", "--set",
+                  "solver.max_iterations=14", "--set", "solver.max_cuts=0")
+    assert r.returncode == 1
+    m = re.search(r"hp-tolerance\.yaml: hp step (\d+)(, its estimate \(one degree more\))?: the "
+                  r"solver stopped: .*; the last good result \(step (\d+)\) is in", r.stderr)
+    assert m, r.stderr
+    failed, kept = int(m.group(1)), int(m.group(3))
+    assert 0 < failed and kept <= failed
+    a = json.load(open(out / "last-good" / "summary.json"))["adapt"]
+    assert a["stopped"] == "error" and a["result_step"] == kept
+    assert f"hp-tolerance.yaml: hp step {failed}" in a["message"]
+
+
 def test_the_example_is_what_the_generator_writes(root):
     """The example's header names the command that made it; that command writes it again."""
     text = open(os.path.join(root, CASE)).read()

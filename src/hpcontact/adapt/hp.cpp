@@ -104,8 +104,10 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
   std::vector<Centre> centres;
   model::ProblemSpec base = spec;  // the input, refined where a zone is narrow (step 0)
   DegreeCorrections corrections;
+  std::string where;  // the solve under way, for a failure's message
   try {
     for (int step = 0; step <= options.steps; ++step) {
+      where = "hp step " + std::to_string(step) + ": ";
       const auto t0 = Clock::now();
       HpIteration rec;
       rec.step = step;
@@ -195,6 +197,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         return out;
       }
       SolvedPtr enriched;
+      where = "hp step " + std::to_string(step) + ", its estimate (one degree more): ";
       rec.estimate = estimate_by_enrichment(*s, progress, &enriched);
       {
         std::ostringstream os;
@@ -240,7 +243,9 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
     out.converged = true;
     out.stopped = "steps done";
   } catch (const Error& e) {
-    out.message = e.what();
+    // after the problem file's name, which the solver's message starts with
+    const std::string file = spec.file + ": ", what = e.what();
+    out.message = what.rfind(file, 0) == 0 ? file + where + what.substr(file.size()) : where + what;
     out.stopped = "error";
   }
   return out;

@@ -607,7 +607,8 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
         folder->commit_subfolder("last-good");
     }
     HPC_REQUIRE(converged, AdaptError, message,
-                folder ? "; the last good result (iteration " + std::to_string(kept) +
+                folder ? "; the last good result (" + std::string(rp ? "iteration " : "step ") +
+                             std::to_string(kept) +
                              ") is in " + last_good
                        : std::string());
     result.discretization = last->discretization;
