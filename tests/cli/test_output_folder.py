@@ -275,22 +275,29 @@ def alive(pid):
         return False
 
 
-@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT])
-def test_study_passes_signals_to_its_runs(exe, root, tmp_path, sig):
-    """A study stopped by SIGTERM or SIGINT stops its running runs, waits for them, writes no
-    table and ends by that signal."""
+def start_long_study(exe, root, tmp_path, labels, **popen):
+    """Starts a study of long runs (`labels`, two at a time) and waits until two are running;
+    returns the study's process, its output folder and the runs' pids."""
     study = tmp_path / "study.yaml"
     study.write_text(f"study: long\ncase: {os.path.join(root, LONG[0])}\n"
                      "set: ['solver.load_steps=400', 'contact[0].enforcement=penalty']\n"
-                     "runs:\n  - {label: a}\n  - {label: b}\n  - {label: c}\n")
+                     "runs:\n" + "".join(f"  - {{label: {x}}}\n" for x in labels))
     out = tmp_path / "out"
     p = subprocess.Popen([exe, "study", study, "--out", out, "-j", "2", "-q"],
-                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, **popen)
     deadline = time.monotonic() + 30
     while len(children_of(p.pid)) < 2 and time.monotonic() < deadline:
         time.sleep(0.05)
     runs = children_of(p.pid)
     assert len(runs) == 2, runs
+    return p, out, runs
+
+
+@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT])
+def test_study_passes_signals_to_its_runs(exe, root, tmp_path, sig):
+    """A study stopped by SIGTERM or SIGINT stops its running runs, waits for them, writes no
+    table and ends by that signal."""
+    p, out, runs = start_long_study(exe, root, tmp_path, "abc")
     time.sleep(0.3)  # the runs are solving
     p.send_signal(sig)
     _, err = p.communicate(timeout=60)
@@ -305,18 +312,8 @@ def test_ctrl_c_on_a_study_keeps_what_its_runs_had_converged(exe, root, tmp_path
     passes the signal on: each run gets SIGINT twice within milliseconds. That is one request —
     each run stops before its next Newton iteration and keeps its converged load steps in
     last-good/ — not a second one that kills at once (which lost them)."""
-    study = tmp_path / "study.yaml"
-    study.write_text(f"study: long\ncase: {os.path.join(root, LONG[0])}\n"
-                     "set: ['solver.load_steps=400', 'contact[0].enforcement=penalty']\n"
-                     "runs:\n  - {label: a}\n  - {label: b}\n")
-    out = tmp_path / "out"
-    p = subprocess.Popen([exe, "study", study, "--out", out, "-j", "2", "-q"],
-                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                         start_new_session=True)  # its own group, as a terminal's job
-    deadline = time.monotonic() + 30
-    while len(children_of(p.pid)) < 2 and time.monotonic() < deadline:
-        time.sleep(0.05)
-    assert len(children_of(p.pid)) == 2
+    # its own process group, as a terminal's job
+    p, out, _ = start_long_study(exe, root, tmp_path, "ab", start_new_session=True)
     time.sleep(1.5)  # the runs have converged load steps
     os.killpg(p.pid, signal.SIGINT)
     _, err = p.communicate(timeout=60)
