@@ -295,7 +295,10 @@ int study_command(const std::string& file, std::string out_dir, int jobs, bool q
   if (outcome.signal) {
     // The runs were stopped and waited for; the study ends by the signal it was sent.
     std::cerr << "\nhpcontact: study stopped by " << strsignal(outcome.signal)
-              << ": its running runs were stopped, no table written in " << out_dir << "/\n";
+              << ": its running runs were stopped (each keeps what had converged in its "
+                 "last-good/), no table written in " << out_dir << "/"
+              << (outcome.logs.empty() ? "" : "; the runs' logs are in " + outcome.logs + "/")
+              << "\n";
     std::signal(outcome.signal, SIG_DFL);
     std::raise(outcome.signal);
     return kFailed;

@@ -305,13 +305,19 @@ def test_study_passes_signals_to_its_runs(exe, root, tmp_path, sig):
     assert "study stopped by" in err, err
     assert not any(alive(pid) for pid in runs)
     assert not (out / "study.csv").exists() and not (out / "study.json").exists()
+    # the logs of the two runs it started, apart from a finished study's; none of the third
+    assert f"the runs' logs are in {out}/stopped/runs/" in err, err
+    assert sorted(f.parent.name for f in (out / "stopped" / "runs").glob("*/log.txt")) == \
+        ["01-a", "02-b"]
+    assert not (out / "stopped" / "study.csv").exists()
 
 
 def test_ctrl_c_on_a_study_keeps_what_its_runs_had_converged(exe, root, tmp_path):
     """Ctrl-C in a terminal signals the study and its runs (one process group), and the study
     passes the signal on: each run gets SIGINT twice within milliseconds. That is one request —
     each run stops before its next Newton iteration and keeps its converged load steps in
-    last-good/ — not a second one that kills at once (which lost them)."""
+    last-good/ — not a second one that kills at once (which lost them). Each run's log, which
+    says so, is in the study's stopped/runs/."""
     # its own process group, as a terminal's job
     p, out, _ = start_long_study(exe, root, tmp_path, "ab", start_new_session=True)
     time.sleep(1.5)  # the runs have converged load steps
@@ -322,6 +328,7 @@ def test_ctrl_c_on_a_study_keeps_what_its_runs_had_converged(exe, root, tmp_path
         kept = json.loads((out / "runs" / label / "last-good" / "summary.json").read_text())
         assert kept["converged"] is False and kept["load_steps"] >= 1
         assert "stopped by SIGINT before Newton iteration" in kept["message"], kept["message"]
+        assert "stopped by SIGINT" in (out / "stopped" / "runs" / label / "log.txt").read_text()
 
 
 def test_study_into_a_folder_with_a_users_table_is_refused(hpcontact, root, tmp_path):

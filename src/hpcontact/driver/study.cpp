@@ -139,6 +139,12 @@ std::optional<int> run_process(const std::vector<std::string>& argv, const fs::p
 namespace {
 
 bool study_output(const std::string& relative, bool folder) {
+  // A stopped study's logs: stopped/runs/NN-label/log.txt (no table there).
+  if (relative == "stopped") return folder;
+  if (relative.rfind("stopped/", 0) == 0) {
+    const std::string rest = relative.substr(8);
+    return rest.rfind("runs", 0) == 0 && study_output(rest, folder);
+  }
   if (relative == "study.csv" || relative == "study.json") return !folder;
   if (relative == "slurm/submission.json" || relative == "slurm/array.sh") return !folder;
   if (relative == "runs" || relative == "slurm") return folder;
@@ -218,9 +224,17 @@ StudyOutcome run_study(const io::StudySpec& study, const StudyOptions& options) 
     for (int j = 0; j < jobs; ++j) threads.emplace_back(worker);
     for (auto& t : threads) t.join();
   }
-  // A stopped study writes no table: its rows would pass for runs that failed.
+  // A stopped study writes no table: its rows would pass for runs that failed. The logs of the
+  // runs it started go to stopped/, apart from a finished study's (each stopped run's converged
+  // state is in its own folder's last-good/).
   outcome.signal = forwarder.signal();
-  if (outcome.signal) return outcome;
+  if (outcome.signal) {
+    if (fs::exists(stage / "runs")) {
+      folder->commit_subfolder("stopped");
+      outcome.logs = (target / "stopped" / "runs").string();
+    }
+    return outcome;
+  }
   write_study_tables(study, rows, stage.string());
   folder->commit();
   HPC_REQUIRE(failure.empty(), IoError, study.file, ": ", failure);

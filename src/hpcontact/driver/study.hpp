@@ -35,6 +35,8 @@ struct StudyOutcome {
   /// SIGINT or SIGTERM if the study was stopped by one: it was passed on to the running runs,
   /// they were waited for, and no table was written; 0 otherwise.
   int signal = 0;
+  /// Stopped: where the logs of the runs it had started are (OUT/stopped/runs), or empty.
+  std::string logs;
 };
 
 /// Runs every row (`program run CASE --out OUT/runs/NN-label -q --set ...`, its output in the

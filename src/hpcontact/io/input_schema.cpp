@@ -832,7 +832,8 @@ std::string input_schema_markdown() {
         "`pressure.csv`, `path.csv`, `contact_history.csv`, `mesh.yaml`, `solution.vtu`, `contact.vtu`, "
         "`solution.pvd`, `contact.pvd`, `rp/pressure-N.csv`, `hp/pressure-N.csv`, "
         "`steps/step-NNNN.vtu`, `steps/contact-NNNN.vtu`, all of these in `last-good/`; for a "
-        "study `study.csv`, `study.json`, `runs/NN-label/log.txt`) that the manifest does not "
+        "study `study.csv`, `study.json`, `runs/NN-label/log.txt`, "
+        "`stopped/runs/NN-label/log.txt`) that the manifest does not "
         "list is someone else's: the run is refused, naming it, before anything is solved. "
         "Other files are never touched. (Results of an hpcontact without manifests count as "
         "someone else's: remove them.)\n"
@@ -845,7 +846,10 @@ std::string input_schema_markdown() {
         "- Every file is checked to the disk (each write, fsync and close): a full disk ends the "
         "run with exit code 1 and a message naming the file and the system's reason.\n"
         "- `study` passes SIGINT and SIGTERM on to its running runs, waits for them, writes no "
-        "table and ends by the same signal.\n";
+        "table and ends by the same signal; each stopped run keeps what had converged in its "
+        "`runs/NN-label/last-good/`, and the logs of the runs it started are moved to "
+        "`stopped/runs/NN-label/log.txt` (replaced by the next stopped study, removed by the "
+        "next finished one).\n";
   return md.str();
 }
 
