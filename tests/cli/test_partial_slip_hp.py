@@ -9,6 +9,7 @@ Measured: step 0 estimates the pressure at 0.82 % and the shear at 1.75 %; step 
 0.37 % and 1.04 %, and its shear is 0.91 % from the closed form, the pressure 0.27 %."""
 import json
 import os
+import re
 
 import pytest
 import yaml
@@ -122,7 +123,6 @@ def test_a_solve_that_fails_inside_the_loop_is_named_and_the_best_step_kept(hpco
     one degree more) does not converge. The message names the step and which of its solves
     failed, after the problem file, and the step whose result last-good/ holds (hp calls them
     steps, not iterations); last-good's summary says the same step."""
-    import re
     out = tmp_path / "r"
     r = hpcontact("run", os.path.join(root, CASE), "--out", out, "-q", "--set",
                   "solver.max_iterations=14", "--set", "solver.max_cuts=0")

@@ -107,7 +107,8 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
   std::string where;  // the solve under way, for a failure's message
   try {
     for (int step = 0; step <= options.steps; ++step) {
-      where = "hp step " + std::to_string(step) + ": ";
+      const std::string step_name = "hp step " + std::to_string(step);
+      where = step_name + ": ";
       const auto t0 = Clock::now();
       HpIteration rec;
       rec.step = step;
@@ -197,7 +198,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         return out;
       }
       SolvedPtr enriched;
-      where = "hp step " + std::to_string(step) + ", its estimate (one degree more): ";
+      where = step_name + ", its estimate (one degree more): ";
       rec.estimate = estimate_by_enrichment(*s, progress, &enriched);
       {
         std::ostringstream os;
