@@ -19,8 +19,15 @@ length along the common tangent (the tangential multiplier times the pressure's 
   (shear_rel_L2_carried, stick zone c_carried): the error without the tilt's coupling, which
   the linear theory leaves out (it grows with the load: 0.04 % of Q at b/R = 0.002).
 
+- with --reference REF (a run of the same case on a much finer discretization: the model's own
+  answer, which the half-space's closed forms are not exactly), the shear's and the pressure's
+  relative L2 errors against it (shear_rel_L2_reference, pressure_rel_L2_reference): both
+  tractions polynomials on their own contact edges, integrated piece by piece between the two
+  meshes' edge ends.
+
     partial_slip_compare.py results/small-load                  # figures as JSON
     partial_slip_compare.py results/small-load --plot shear.png # and the plot
+    partial_slip_compare.py results/ps-hp --reference results/ps-hp-3e-4
 
 E, nu and R are read from the run's input.yaml (the upper body's material and its contact
 arcs' radius), mu from its friction.
@@ -118,8 +125,59 @@ def vertex_rows(folder, body, X):
     return rows
 
 
+def piecewise_polynomial(s, v, starts):
+    """The function of s that is, on each block of nodes (block_starts), the polynomial through
+    the block's values: the discrete traction along the contact edges."""
+    blocks = [(s[k0], s[k1], np.polyfit((s[k0:k1 + 1] - 0.5 * (s[k0] + s[k1])) / (0.5 * (s[k1] - s[k0])),
+                                         v[k0:k1 + 1], k1 - k0)) for k0, k1 in zip(starts, starts[1:])]
+
+    def evaluate(x):
+        x = np.asarray(x, dtype=float)
+        out = np.full_like(x, np.nan)
+        for lo, hi, coef in blocks:
+            k = (x >= lo) & (x <= hi)
+            out[k] = np.polyval(coef, (x[k] - 0.5 * (lo + hi)) / (0.5 * (hi - lo)))
+        return out
+    return evaluate, [b[0] for b in blocks] + [blocks[-1][1]]
+
+
+def against_reference(run, ref):
+    """Relative L2 errors of the run's shear and pressure against a reference run's (the model's
+    own answer: the same case on a much finer discretization), each side a polynomial on each of
+    its contact edges: Gauss–Legendre on every piece between the two meshes' edge ends, exact
+    for the difference of the two piecewise polynomials (p + 1 <= 16 points)."""
+    lo, hi = max(run["breaks"][0], ref["breaks"][0]), min(run["breaks"][-1], ref["breaks"][-1])
+    cuts = np.unique(np.clip(np.concatenate([run["breaks"], ref["breaks"]]), lo, hi))
+    g, gw = np.polynomial.legendre.leggauss(16)
+    x = np.concatenate([0.5 * (a + b) + 0.5 * (b - a) * g for a, b in zip(cuts, cuts[1:])])
+    w = np.concatenate([0.5 * (b - a) * gw for a, b in zip(cuts, cuts[1:])])
+    out = {}
+    for key in ("shear", "pressure"):
+        fe, ex = run[key](x), ref[key](x)
+        out[key + "_rel_L2_reference"] = float(np.sqrt(np.sum(w * (fe - ex) ** 2) / np.sum(w * ex ** 2)))
+    return out
+
+
 def total_variation(v):
     return float(np.sum(np.abs(np.diff(v)))) if len(v) > 1 else 0.0
+
+
+def shear(n):
+    """The shear per unit length along the common tangent at the nodes n (read_nodes): the
+    tangential multiplier times dS/ds (the pressure over the normal multiplier), taken positive
+    in the direction of its resultant (the multiplier's sign follows the tangent's orientation)."""
+    ratio = np.where(n["traction"] > 0, n["pressure"] / np.where(n["traction"] > 0, n["traction"], 1), 1.0)
+    return np.sign(np.sum(n["t_t"])) * n["t_t"] * ratio
+
+
+def discrete_tractions(folder):
+    """The run's shear and pressure as functions of s (piecewise_polynomial), and its edge ends."""
+    _, _, _, body, degree = read_case(folder)
+    n = read_nodes(folder, body)
+    starts = block_starts(len(n["s"]) - 1, degree, vertex_rows(folder, body, n["X"]))
+    q, breaks = piecewise_polynomial(n["s"], shear(n), starts)
+    return {"shear": q, "pressure": piecewise_polynomial(n["s"], n["pressure"], starts)[0],
+            "breaks": np.array(breaks)}
 
 
 def measure(folder):
@@ -131,11 +189,7 @@ def measure(folder):
     Q = abs(Q_run)
     a, c, p0, p_exact, q_exact = closed_form(R_star, E_star, mu, P, Q)
     s = n["s"]
-    # dS/ds of each node: the pressure per unit length along the tangent over the multiplier
-    ratio = np.where(n["traction"] > 0, n["pressure"] / np.where(n["traction"] > 0, n["traction"], 1), 1.0)
-    # taken positive in the direction of its resultant (the multiplier's sign follows the
-    # tangent's orientation)
-    q = np.sign(np.sum(n["t_t"])) * n["t_t"] * ratio
+    q = shear(n)
     w = edge_weights(s, degree, vertex_rows(folder, body, n["X"]))
     rel = lambda fe, ex: float(np.sqrt(np.sum(w * (fe - ex) ** 2) / np.sum(w * ex ** 2)))  # noqa: E731
     out = {"P": P, "Q": Q, "mu": mu, "R_star": R_star, "E_star": E_star, "a": a, "c": c,
@@ -210,8 +264,16 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("folder", help="the run's output folder (summary.json, contact.csv, input.yaml)")
     ap.add_argument("--plot", help="PNG of the shear and mu p, FE and closed form")
+    ap.add_argument("--reference", help="a run of the same case on a much finer discretization: the "
+                    "errors against it as well (shear_rel_L2_reference, pressure_rel_L2_reference)")
     args = ap.parse_args()
     out, data = measure(args.folder)
+    if args.reference:
+        reference, _ = measure(args.reference)
+        out.update(against_reference(discrete_tractions(args.folder), discrete_tractions(args.reference)))
+        out["reference"] = {"folder": args.reference, "dofs": reference["dofs"],
+                            "shear_rel_L2": reference["shear_rel_L2"],
+                            "pressure_rel_L2": reference["pressure_rel_L2"]}
     json.dump(out, sys.stdout, indent=1)
     sys.stdout.write("\n")
     if args.plot:

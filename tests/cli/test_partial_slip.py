@@ -144,3 +144,33 @@ def test_node_weights_on_edges_of_different_degrees():
     assert np.sum(compare.edge_weights(s, 2) * bump) != pytest.approx(exact(0.3) - exact(-0.2), rel=1e-3)
     with pytest.raises(SystemExit):
         compare.edge_weights(s, 3)
+
+
+def test_error_against_a_reference_run_of_other_edges():
+    """partial_slip_compare --reference: the relative L2 difference of two runs' tractions, each a
+    polynomial through its Gauss-Lobatto nodes on each of its own contact edges. The run: degree 2
+    on [-1, 0.2], [0.2, 1], values 1 + s²; the reference: degree 3 on [-1, -0.4], [-0.4, 1], values
+    1 + s² and 1 + s² + 0.01 (s + 0.4)³ — the difference has its exact L2 norm only if every piece
+    between the two meshes' edge ends is integrated apart (the reference's third derivative jumps
+    at -0.4, inside the run's first edge)."""
+    def traction(edges, f):
+        s, vertices = [], [0]
+        for a, b, p in edges:
+            pts = gauss_lobatto(p, a, b)
+            s.extend(pts if not s else pts[1:])
+            vertices.append(len(s) - 1)
+        s = np.array(s)
+        poly, breaks = compare.piecewise_polynomial(s, f(s), vertices)
+        return {"shear": poly, "pressure": poly, "breaks": np.array(breaks)}
+    run = traction([(-1.0, 0.2, 2), (0.2, 1.0, 2)], lambda s: 1 + s ** 2)
+    ref = traction([(-1.0, -0.4, 3), (-0.4, 1.0, 3)],
+                   lambda s: 1 + s ** 2 + 0.01 * np.where(s > -0.4, s + 0.4, 0.0) ** 3)
+    P = np.polynomial.Polynomial
+    base, bump = P([1, 0, 1]), 0.01 * P([0.4, 1]) ** 3
+    integral = lambda f, a, b: f.integ()(b) - f.integ()(a)  # noqa: E731
+    diff2 = integral(bump ** 2, -0.4, 1)
+    norm2 = integral(base ** 2, -1, 1) + integral(2 * base * bump + bump ** 2, -0.4, 1)
+    errors = compare.against_reference(run, ref)
+    assert errors["shear_rel_L2_reference"] == pytest.approx(np.sqrt(diff2 / norm2), rel=1e-10)
+    assert errors["pressure_rel_L2_reference"] == pytest.approx(np.sqrt(diff2 / norm2), rel=1e-10)
+    assert compare.against_reference(ref, ref)["shear_rel_L2_reference"] < 1e-14
