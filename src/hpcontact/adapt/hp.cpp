@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "hpcontact/adapt/boundary_track.hpp"
+#include "hpcontact/adapt/facing_degrees.hpp"
 #include "hpcontact/adapt/geometric_refinement.hpp"
 #include "hpcontact/adapt/zone_resolution.hpp"
 #include "hpcontact/core/error.hpp"
@@ -22,7 +23,8 @@ struct Centre {
 };
 
 /// The input mesh with the centres moved to their points and refined `steps` times around them,
-/// degrees set by layer (and corrected, with goal-oriented degrees).
+/// degrees set by layer (and corrected, with goal-oriented degrees), equal on facing contact
+/// edges of two bodies.
 model::ProblemSpec build_mesh(const model::ProblemSpec& input, const std::vector<Centre>& centres,
                               int steps, const HpOptions& options,
                               const DegreeCorrections& corrections) {
@@ -48,6 +50,7 @@ model::ProblemSpec build_mesh(const model::ProblemSpec& input, const std::vector
     }
   }
   if (options.degree == model::HpDegree::goal) corrections.apply(spec, options.min_degree);
+  if (options.degree != model::HpDegree::constant) match_facing_degrees(spec);
   return spec;
 }
 

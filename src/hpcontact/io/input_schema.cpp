@@ -218,7 +218,7 @@ const std::vector<KeySpec>& input_schema() {
               "for hp with goal-oriented degrees (adapt.degree goal, the default with "
               "adapt.tolerance: fewer dofs for an accuracy, examples/hertz/CONVERGENCE.md) "
               "without axisymmetric bodies and friction, else tensor (with friction the trunk "
-              "loop was 12 times slower and its estimate under-read the shear: docs/theory.md).",
+              "loop was 5-12 times slower, its active set settling slowly: docs/theory.md).",
        .choices = {"tensor", "trunk"}},
       {.path = "discretization.element", .type = T::choice, .default_yaml = "Q8",
        .doc = "h-version element (ignored by the p-version).", .choices = {"Q4", "Q8", "Q9"}},
@@ -544,6 +544,8 @@ const std::vector<KeySpec>& input_schema() {
               "friction, shear, each relative to its size) per dof of one degree "
               "more is above 3 times the mean gets one degree more in every later step, one "
               "below 0.1 times the mean one less (docs/theory.md, Goal-oriented degrees). "
+              "With rising and goal, facing contact edges of two bodies get the larger of their "
+              "elements' two degrees (unequal, they make a stick zone's shear oscillate). "
               "Absent: goal with adapt.tolerance, else rising.",
        .choices = {"rising", "constant", "goal"}},
       {.path = "adapt.min_degree", .type = T::integer, .default_yaml = "1",

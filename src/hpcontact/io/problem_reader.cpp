@@ -79,8 +79,8 @@ class SpecBuilder {
     // tensor product space (examples/hertz/CONVERGENCE.md): its default there, for plane bodies.
     // (An axisymmetric ball on a flat at a/R = 0.2 made the contact Newton cycle in the trunk
     // space on the hp meshes, at any force; the tensor space solves it. With friction the trunk
-    // loop on examples/partial-slip/hp-tolerance.yaml took 12 times as long and stopped with the
-    // shear 0.134 % off at a 0.1 % tolerance, the tensor loop's 0.0995 %: docs/theory.md.)
+    // loop on examples/partial-slip/hp-tolerance.yaml needs fewer DOF for its tolerance but takes
+    // 5-12 times as long, the friction's active set settling slowly: docs/theory.md.)
     const bool axisymmetric = std::any_of(spec.bodies.begin(), spec.bodies.end(), [](const BodySpec& b) {
       return b.material.plane == PlaneMode::axisymmetric;
     });
