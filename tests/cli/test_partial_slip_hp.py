@@ -68,7 +68,7 @@ def test_the_result_is_within_the_tolerance_of_cattaneo_mindlin(run):
 
 @pytest.fixture(scope="module")
 def finer(hpcontact, root, tmp_path_factory):
-    """The same loop taken to 3e-3 (4621 DOF, its shear estimated at 0.18 %)."""
+    """The same loop taken to 3e-3 (4693 DOF, its shear estimated at 0.17 %)."""
     out = tmp_path_factory.mktemp("partial-slip-hp-finer")
     r = hpcontact("run", os.path.join(root, CASE), "--out", out, "-q", "--set", "adapt.tolerance=3e-3")
     assert r.returncode == 0, r.stderr

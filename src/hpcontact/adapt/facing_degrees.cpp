@@ -2,7 +2,9 @@
 #include "hpcontact/adapt/facing_degrees.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
