@@ -7,8 +7,7 @@ namespace hpcontact::adapt {
 
 /// Gives the elements of two facing contact edges the same degree, the larger of the two, for
 /// every exactly enforced contact pair with friction between two bodies. Two edges face each
-/// other where the other's edge
-/// covers more than half of the shorter one and lies within half its length of it. The
+/// other where one covers more than half of the shorter and lies within half its length of it. The
 /// multipliers of an exactly enforced pair sit at the Gauss–Lobatto points of the body's edges
 /// and tie its trace to the other body's: facing traces of different degrees make the stick
 /// zone's shear oscillate from node to node once the degrees are high (examples/partial-slip

@@ -65,9 +65,8 @@ TEST(FacingDegrees, FacingElementsTakeTheLargerDegree) {
 
 TEST(FacingDegrees, ShiftedMeshesFaceWhereMostOfAnEdgeIsCovered) {
   model::ProblemSpec spec;
-  // the lower strip shifted by half an element: each upper element overlaps two lower ones by
-  // half its length, which is not "facing" (more than half); shifted by a quarter, it faces the
-  // one it covers three quarters of
+  // the lower strip shifted by a quarter of an element: each upper element faces the lower one
+  // it covers three quarters of
   spec.bodies = {strip("upper", 3, 0, 0, false, {2, 2, 7}), strip("lower", 3, 0.25, -1, true, {3, 2, 2})};
   spec.contact = {pair_between("upper", "lower")};
   adapt::match_facing_degrees(spec);
@@ -77,6 +76,8 @@ TEST(FacingDegrees, ShiftedMeshesFaceWhereMostOfAnEdgeIsCovered) {
   EXPECT_EQ(degree(spec.bodies[1], 3), 7);  // faces upper 3
   EXPECT_EQ(degree(spec.bodies[0], 3), 7);
 
+  // shifted by half an element: each upper element overlaps two lower ones by half its length,
+  // which is not "facing" (more than half)
   spec.bodies = {strip("upper", 2, 0, 0, false, {2, 9}), strip("lower", 2, 0.5, -1, true, {5, 4})};
   adapt::match_facing_degrees(spec);
   EXPECT_EQ(degree(spec.bodies[0], 1), 2);  // half overlaps only: nothing faces
