@@ -404,6 +404,13 @@ MUTATIONS = [
              "if (rec.inside || rec.recentred >= options.max_recentre) break;",
              "a step to a tolerance is solved again around each Γ* outside its smallest elements",
              ["cli:tests/cli/test_hp_tolerance.py::test_a_tolerance_of_1e4_is_reached_and_said"]),
+    # model (the seed's difference tangent with exact contact)
+    Mutation("difference-tangent-whole-symmetrised", "model", S + "model/contact_system.cpp",
+             "if (undisturbed) symmetrize_displacement_block(t, n_u_);",
+             "if (undisturbed) symmetrize_displacement_block(t, size());",
+             "the seed's difference tangent symmetrised over the multipliers' rows and columns too",
+             ["ContactTangent.SeedFiniteDifferenceTangentEqualsAnalyticWithMultipliers",
+              "ContactTangent.FiniteDifferenceTangentGivesTheSameSolution"]),
     # solve (factors and Schur columns kept between equal tangents)
     Mutation("kept-factors-pattern-only", "solve", S + "solve/linear_solver.cpp",
              "std::equal(A.valuePtr(), A.valuePtr() + nnz, matrix.valuePtr());",

@@ -452,6 +452,31 @@ void ContactSystem::tangential_rows(const PairConstraints& c, const ConstraintSt
   }
 }
 
+namespace {
+
+/// The seed's difference tangent solves the symmetric part of the displacement block ("symmetric
+/// equation system"): central differences are symmetric there up to round-off and up to columns
+/// straddling a contact switch. The rows and columns of the multipliers and of the bordered
+/// force are left as differenced: the saddle-point system is not symmetric (an inactive
+/// multiplier's row is the multiplier itself, its column the constraint's), and averaging it
+/// with its transpose mixed the two (Newton cycled between two residuals with no multiplier
+/// node active).
+void symmetrize_displacement_block(std::vector<Eigen::Triplet<double>>& t, int n_u) {
+  std::vector<Eigen::Triplet<double>> s;
+  s.reserve(t.size() + t.size() / 2);
+  for (const auto& e : t) {
+    if (e.row() < n_u && e.col() < n_u) {
+      s.emplace_back(e.row(), e.col(), 0.5 * e.value());
+      s.emplace_back(e.col(), e.row(), 0.5 * e.value());
+    } else {
+      s.push_back(e);
+    }
+  }
+  t = std::move(s);
+}
+
+}  // namespace
+
 solve::SparseMatrix ContactSystem::finite_difference_tangent(const Eigen::VectorXd& x,
                                                              const PairStates* undisturbed) const {
   std::vector<Eigen::Triplet<double>> t;
@@ -467,11 +492,9 @@ solve::SparseMatrix ContactSystem::finite_difference_tangent(const Eigen::Vector
       if (const double v = (r_plus(i) - r_minus(i)) / h; v != 0) t.emplace_back(i, m, v);
   }
   solve::SparseMatrix K(size(), size());
+  if (undisturbed) symmetrize_displacement_block(t, n_u_);
   K.setFromTriplets(t.begin(), t.end());
-  if (!undisturbed) return K;
-  // Central differences are symmetric up to round-off and up to columns straddling a contact
-  // switch; the seed solves the symmetric part ("symmetric equation system"), and so do we.
-  return solve::SparseMatrix(0.5 * (K + solve::SparseMatrix(K.transpose())));
+  return K;
 }
 
 }  // namespace hpcontact::model

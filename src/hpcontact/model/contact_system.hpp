@@ -141,8 +141,8 @@ private:
   /// The seed's tangent (eq. 3.35–3.36): column m by central differences of the whole residual
   /// with the step h_m = ν (|x_m| + 1e-3), ν = 1e-6 (< √η; below the seed's 1e-5 because a
   /// column straddling a contact switch is wrong and a small step makes that rare), the normals
-  /// of the undisturbed state kept. Without `undisturbed`: plain central differences, not
-  /// symmetrised.
+  /// of the undisturbed state kept, the displacement block symmetrised. Without `undisturbed`:
+  /// plain central differences, not symmetrised.
   solve::SparseMatrix finite_difference_tangent(const Eigen::VectorXd& x,
                                                 const PairStates* undisturbed) const;
 
