@@ -411,6 +411,12 @@ MUTATIONS = [
              "the seed's difference tangent symmetrised over the multipliers' rows and columns too",
              ["ContactTangent.SeedFiniteDifferenceTangentEqualsAnalyticWithMultipliers",
               "ContactTangent.FiniteDifferenceTangentGivesTheSameSolution"]),
+    Mutation("cuts-counted-in-a-row", "model", S + "model/contact_solve.cpp",
+             "        converged = fn;",
+             "        converged = fn, cuts = 0;",
+             "a converged step resets the count of halvings: a load beyond what can be carried is "
+             "approached by ever shorter steps",
+             ["cli:tests/cli/test_friction_driving.py::test_a_shear_at_the_friction_capacity_stops_at_the_shortest_step"]),
     # solve (factors and Schur columns kept between equal tangents)
     Mutation("kept-factors-pattern-only", "solve", S + "solve/linear_solver.cpp",
              "std::equal(A.valuePtr(), A.valuePtr() + nnz, matrix.valuePtr());",

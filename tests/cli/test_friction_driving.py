@@ -262,3 +262,37 @@ def test_force_control_through_stages(hpcontact, root, tmp_path):
 def test_stages_under_force_control_are_shares_of_the_target(hpcontact, tmp_path, settings, message, code):
     expect_refused(hpcontact, PRESS_PUSH, str(tmp_path / "out"),
                    ["solver.target_resultant={value: 20}", *settings], message, code)
+
+
+def test_a_shear_at_the_friction_capacity_stops_at_the_shortest_step(hpcontact, root, tmp_path):
+    """Pressed to P = 7 by force control, then sheared by Q = mu P exactly: the load cannot be
+    carried to its end (at the capacity the bodies may slide). The steps are halved at most
+    solver.max_cuts times in all, not in a row (before, the shear crept 0.75, 0.875, ..., 0.9995
+    of Q by ever shorter steps); the message says that the load cannot be carried beyond the
+    last converged step and how much of the friction's capacity the pair carries there."""
+    case = partial_slip_mesh(root, tmp_path, "--force", "7", "--mesh", "polar", "--degree", "3")
+    text = case.read_text()
+    assert text.count("resultant: 1.05}") == 2  # Q = mu P / 2 on each cut
+    case.write_text(text.replace("resultant: 1.05}", "resultant: 2.1}"))
+    out = tmp_path / "out"
+    r = hpcontact("run", case, "--out", out, "-q", "--set", "solver.target_resultant={value: 7}",
+                  "--set", "solver.stages=[{displacements: 0.5, loads: 0, steps: 1},"
+                  " {displacements: 1, loads: 0, steps: 1}, {displacements: 1, loads: 1, steps: 2}]")
+    assert r.returncode == 1, r.stderr
+    assert "the load cannot be carried beyond the last converged step" in r.stderr, r.stderr
+    assert "1/32 of a load step (solver.max_cuts = 5 halvings)" in r.stderr, r.stderr
+    share = float(r.stderr.split("contact[0] carries ")[1].split(" %")[0])
+    assert 90 <= share < 100
+    good = json.load(open(out / "last-good" / "summary.json"))
+    assert not good["converged"]
+    path = csv_rows(out / "last-good" / "path.csv")
+    loads = [float(row["load_factor"]) for row in path]
+    # the shear's stage in two steps of 1/2, each halved at most 5 times: no step shorter than
+    # 1/64 of the shear, so at most 1 - 1/64 reached and a bounded number of steps
+    assert 0.9 < loads[-1] <= 1 - 1 / 64 + 1e-12
+    assert all(b - a >= 1 / 64 - 1e-12 for a, b in zip(loads[2:], loads[3:]))
+    assert len(path) <= 12
+    # the share said is the last converged step's: |Q| / (mu P) from its path row
+    last = path[-1]
+    assert abs(float(last["resultant_x"])) / (0.3 * abs(float(last["resultant_y"]))) == pytest.approx(
+        share / 100, rel=1e-3)

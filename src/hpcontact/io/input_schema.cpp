@@ -256,8 +256,10 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Newton convergence: relative residual norm.",
        .lower = greater_than(0)},
       {.path = "solver.max_cuts", .type = T::integer, .default_yaml = "5",
-       .doc = "Halvings in a row of a load step that does not converge (the step doubles "
-              "again, up to the nominal one, after two converged steps).",
+       .doc = "Halvings of a load step that does not converge: a step is never shorter than "
+              "the nominal one halved max_cuts times (it doubles again, up to the nominal one, "
+              "after two converged steps). A step of that length that does not converge ends "
+              "the run: the load cannot be carried beyond the last converged step.",
        .lower = at_least(0), .upper = at_most(50),
        .upper_why = "a step halved 50 times is 1e-15 of its length, below what double precision "
                     "resolves of the load factor"},

@@ -187,8 +187,11 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   };
 
   // Load steps along the path parameter from `from` to `target` (factors(s) gives the
-  // factors), halving a step that does not converge (at most max_cuts times in a row) and
-  // doubling it again, up to the nominal step, after two steps in a row converged. With
+  // factors), halving a step that does not converge and doubling it again, up to the nominal
+  // step, after two steps in a row converged; a step is never shorter than the nominal one
+  // halved max_cuts times (`cuts` counts the halvings the current step has, not those in a row:
+  // a load that cannot be carried beyond some factor, e.g. a shear at the friction's capacity,
+  // was otherwise approached by ever shorter steps for ever, 0.75, 0.875, 0.9375, ...). With
   // `force`, force-controlled steps: at s the factor on the prescribed displacements is the
   // unknown of the bordered system whose target is share(s) × value (factors(s) then gives its
   // first guess, and the loads' factor unless they follow the unknown).
@@ -239,9 +242,9 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
         os << "load step " << sol.load_steps << ": " << fn.describe() << ", " << rep.iterations << " Newton iterations, |R| " << rep.residual_history.front()
            << " -> " << rep.residual_history.back();
         say(os.str());
-        cuts = 0;
-        if (++in_a_row >= 2 && std::abs(step) < std::abs(nominal)) {
-          step = std::abs(2 * step) < std::abs(nominal) ? 2 * step : nominal;
+        if (++in_a_row >= 2 && cuts > 0) {
+          --cuts;
+          step *= 2;
           in_a_row = 0;
         }
         continue;
@@ -260,7 +263,13 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       for (const Body& body : d.bodies) structural = structural || !body.free_rigid_motions.empty();
       if (cuts == ss.max_cuts || (rep.status == solve::SolveStatus::singular && structural)) {
         std::ostringstream os;
- os << "load step " << sol.load_steps + 1 << " (" << fn.describe() << ") failed after " << cuts << " cuts: " << why << "; residual history:";
+        os << "load step " << sol.load_steps + 1 << " (" << fn.describe() << ") failed after " << cuts
+           << " cuts: " << why;
+        if (cuts == ss.max_cuts && cuts > 0 && lambda != from)
+          os << "; the load cannot be carried beyond the last converged step (" << converged.describe()
+             << "): a step from it of 1/" << (1LL << cuts) << " of a load step (solver.max_cuts = "
+             << ss.max_cuts << " halvings) does not converge" << system.capacity_used();
+        os << "; residual history:";
         for (double r : rep.residual_history) os << ' ' << r;
         sol.message = os.str();
         return false;

@@ -89,6 +89,7 @@ double ContactSystem::loads_factor(const Eigen::VectorXd& x) const {
 
 void ContactSystem::commit(const Eigen::VectorXd& x) {
   if (!has_friction()) return;
+  committed_friction_ = friction_resultants(x);
   const Eigen::VectorXd u = full(x);
   // exact friction measures slips from here
   u_step_start_ = u_committed_;
@@ -254,6 +255,35 @@ std::string ContactSystem::describe() const {
   return os.str();
 }
 
+std::vector<Vec2> ContactSystem::friction_resultants(const Eigen::VectorXd& x) const {
+  const auto z = multipliers(x);
+  std::vector<Vec2> out(pairs_.size(), Vec2::Zero());
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    const auto& c = pairs_[k].constraints;
+    if (!c || !c->has_friction()) continue;
+    const int m = c->size();
+    for (int j = 0; j < m; ++j) out[k] += c->weight(j) * Vec2(z[k](j), z[k](m + j));
+  }
+  return out;
+}
+
+std::string ContactSystem::capacity_used() const {
+  std::ostringstream os;
+  os << std::setprecision(4);
+  for (std::size_t k = 0; k < committed_friction_.size(); ++k) {
+    const auto& c = pairs_[k].constraints;
+    if (!c || c->friction.kind != contact::FrictionLaw::Kind::coulomb) continue;
+    const double normal = committed_friction_[k].x(), capacity = c->friction.mu * normal;
+    if (!(capacity > 0)) continue;
+    const double share = std::abs(committed_friction_[k].y()) / capacity;
+    if (share < 0.9) continue;
+    os << "; there contact[" << k << "] carries " << 100 * share << " % of the tangential force its "
+       << "friction can (mu = " << c->friction.mu << " times the normal force " << normal
+       << "): a tangential load at the capacity or above it has no (unique) equilibrium";
+  }
+  return os.str();
+}
+
 void ContactSystem::factorize(solve::LinearSolver& sparse, const solve::SparseMatrix& K) {
   if (n_z_ == 0) return sparse.factorize(K);
   saddle_.factorize(sparse, K, n_u_, gamma_);
@@ -395,7 +425,8 @@ void ContactSystem::tangential_rows(const PairConstraints& c, const ConstraintSt
     // held: a sticking node whose slip no unknown moves (on a symmetry line, its tangent along
     // the held direction: the axis node of a half model); its λ_T is the support's and is pinned
     // to 0 (else the row is zero and the system singular). Decided at each tangent, kept between.
-    enum class State { open, stick, slip, held } state = State::open;
+    using State = TangentialState;
+    State state = State::open;
     double sign = 1;
     if (node_active(c, s, lambda, j)) {
       state = State::stick;

@@ -127,10 +127,17 @@ public:
   /// Per exact pair at the last evaluation: its active nodes, how many changed since the
   /// tangent before, and the largest penetration with where it is.
   std::string describe() const override;
+  /// "; there contact[k] carries 98.4 % of the tangential force its friction can ..." for each
+  /// exact Coulomb pair whose tangential resultant at the last committed step is at least 90 %
+  /// of μ times its normal one, else empty: why a load may not be carried further.
+  std::string capacity_used() const;
   Eigen::VectorXd solve(const solve::LinearSolver& sparse, const Eigen::VectorXd& b) const override;
 
 private:
   using PairStates = std::vector<std::vector<contact::PointState>>;
+  /// A tangential multiplier row's state (states_): held is a sticking node whose slip no
+  /// unknown moves (tangential_rows).
+  enum class TangentialState : char { open, stick, slip, held };
   using Triplets = std::vector<Eigen::Triplet<double>>;
 
   /// R(x); the tangent's triplets on the unknowns into T (null: none); the penalty points'
@@ -180,6 +187,10 @@ private:
   };
   mutable std::vector<Deepest> deepest_;
   std::vector<char> tangent_states_, previous_tangent_states_;
+  /// Per pair with exact friction: (Σ W_j λ_j, Σ W_j λ_T,j) at x, the normal and tangential
+  /// resultants of its multipliers (zero for the other pairs).
+  std::vector<Vec2> friction_resultants(const Eigen::VectorXd& x) const;
+  std::vector<Vec2> committed_friction_;  ///< friction_resultants at the last committed step
   Eigen::VectorXd K_prescribed_;   ///< K times the prescribed displacements (for ∂/∂α)
   /// The prescribed displacements, their x and y components scaled by `factors`.
   Eigen::VectorXd prescribed(const Vec2& factors) const;
