@@ -142,6 +142,11 @@ int run_command(const std::string& file, std::string out_dir, const std::vector<
   driver::RunOptions options;
   options.folder = &folder;
   options.effective_input = read.effective_yaml;
+  // Warnings reach stderr whatever -q says: they are about the user's input or result.
+  options.warning = [log](const std::string& warning) {
+    if (log) log->event("warning", {{"message", warning}});
+    std::cerr << "hpcontact: warning: " << printable(warning) << std::endl;
+  };
   if (log) {
     options.progress = [log](const std::string& line) { log->progress(line); };
     log->event("start", {{"case", read.spec.case_name}, {"file", file}, {"out", out_dir}});
@@ -177,6 +182,7 @@ int check_command(const std::string& file, const std::vector<std::string>& sets)
   model::require_held(spec, d);
   std::cout << printable(file) << ": case '" << printable(spec.case_name) << "', " << d.method
             << "-version\n";
+  for (const auto& warning : d.warnings) std::cout << "  warning: " << printable(warning) << '\n';
   for (const auto& b : d.bodies) {
     std::cout << "  body '" << printable(b.name) << "': " << b.mesh.n_nodes() << " nodes, " << b.mesh.n_quads()
               << " elements, " << b.mesh.n_edges() << " edges, degrees";

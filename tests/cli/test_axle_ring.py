@@ -51,11 +51,13 @@ def test_inverting_element_is_reported_and_last_step_kept(hpcontact, root, tmp_p
     that moves the top below the bottom inverts the element. The run fails (exit 1) naming the
     load step, the element, its body and det F; no summary.json in the output folder, the last
     converged step in last-good/ marked converged: false with its load factor (0.75: the steps
-    0.5 and 1 with one cut allowed in a row reach 0.75, then 0.875 inverts)."""
+    0.5 and 1 with one halving allowed reach 0.75, then the step of 0.25 to 1 inverts, and no
+    shorter step is allowed: the load cannot be carried beyond 0.75)."""
     r = hpcontact("run", os.path.join(root, "tests", "cli", "data", "crushed-block.yaml"),
                   "--out", tmp_path, "-q")
     assert r.returncode == 1
-    assert "load step 3 (factor 0.875)" in r.stderr, r.stderr
+    assert "load step 3 (factor 1)" in r.stderr, r.stderr
+    assert "the load cannot be carried beyond the last converged step (factor 0.75)" in r.stderr
     assert "element 7 of body 'block' inverts: det F = -" in r.stderr, r.stderr
     assert not os.path.exists(tmp_path / "summary.json")
     kept = summary(tmp_path / "last-good")

@@ -17,6 +17,7 @@
 #include "hpcontact/driver/contact_history.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/core/stop.hpp"
+#include "hpcontact/model/axis.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/linear_solve.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
@@ -266,6 +267,31 @@ nlohmann::json contact_pairs_json(const SolvedState& st, const Comparisons& comp
 
 /// Fills the summary and the interface curves of a solved state and writes its files (except
 /// summary.json) into out_dir (nothing if empty).
+/// A warning into summary.json's `warnings` and to the caller (RunOptions::warning), once.
+void warn(const std::string& warning, const RunOptions& options, post::Summary& s) {
+  auto& list = s.extra["warnings"];
+  if (!list.is_array()) list = nlohmann::json::array();
+  for (const auto& w : list)
+    if (w == warning) return;
+  list.push_back(warning);
+  if (options.warning) options.warning(warning);
+}
+
+/// Warnings about a solution: an axisymmetric section of linear elasticity whose deformed shape
+/// crosses its axis (a finite-strain body fails instead: its hoop stretch turns negative).
+void warn_about_solution(const model::ProblemSpec& spec, const model::Discretization& d,
+                         const Eigen::VectorXd& u, const RunOptions& options, post::Summary& s) {
+  for (size_t b = 0; b < d.bodies.size(); ++b) {
+    const auto& body = d.bodies[b];
+    if (!body.axisymmetric() || body.finite_strain()) continue;
+    if (const auto where = model::crosses_axis(body, u))
+      warn(spec.file + ": bodies[" + std::to_string(b) + "] (" + body.name + "): the deformed " +
+               "section crosses the axis r = 0 (" + *where + "): displacements of the order of the " +
+               "radius are beyond linear elasticity (material.model: neo-hooke follows them)",
+           options, s);
+  }
+}
+
 void post_process(const model::ProblemSpec& spec, const SolvedState& st, const std::string& out_dir,
                   const RunOptions& options, const Comparisons& comparisons, RunResult& r) {
   namespace fs = std::filesystem;
@@ -284,6 +310,7 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
               st.u.cwiseAbs().maxCoeff(), "): a load, prescribed displacement, length or material "
               "value of the input is too large for double precision");
   s.error = exact_error(spec, disc, st.u, s.strain_energy);
+  warn_about_solution(spec, disc, st.u, options, s);
   s.extra["units"] = units_note(spec);
   // The p-version's shape space: its default depends on the adaptivity (docs/input.md).
   if (spec.discretization.method == model::Method::p)
@@ -490,7 +517,10 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
 
   // The comparisons' preconditions are checked before anything is solved (on the input's mesh).
   std::optional<model::Discretization> d0;
-  if (spec.adapt.method != model::AdaptMethod::none) d0.emplace(model::discretize(spec));
+  if (spec.adapt.method != model::AdaptMethod::none) {
+    d0.emplace(model::discretize(spec));
+    for (const auto& w : d0->warnings) warn(w, options, s);
+  }
   Comparisons comparisons;
   if (spec.adapt.method != model::AdaptMethod::none) comparisons = comparisons_of(spec, *d0);
 
@@ -618,6 +648,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
 
   model::Discretization d = model::discretize(spec);
   model::require_held(spec, d);
+  for (const auto& w : d.warnings) warn(w, options, s);
   comparisons = comparisons_of(spec, d);
   {
     std::ostringstream os;

@@ -23,6 +23,9 @@ struct RunOptions {
   OutputFolder* folder = nullptr;
   std::string effective_input;   ///< YAML text written as input.yaml (if not empty)
   std::function<void(const std::string&)> progress;  ///< one line per stage; may be empty
+  /// Each warning as it arises (it names the file, the place and the cause; summary.json's
+  /// `warnings` lists them too); may be empty.
+  std::function<void(const std::string&)> warning;
 };
 
 struct RunResult {

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/model/axis.hpp"
 
 namespace hpcontact::model {
 
@@ -30,6 +31,20 @@ std::vector<int> edges_named(const Body& body, const std::vector<std::string>& n
     edges.insert(edges.end(), it->second.begin(), it->second.end());
   }
   return edges;
+}
+
+/// An axisymmetric body's contact edges off its axis: an edge along r = 0 is a line of the solid,
+/// not a surface (its circle has radius 0), and contact there has no area to carry a pressure.
+void require_off_axis(const Body& body, const std::vector<int>& edges, const std::string& key) {
+  if (!body.axisymmetric()) return;
+  for (int e : edges) {
+    const auto& edge = body.mesh.edge(e);
+    HPC_REQUIRE(!edge_on_axis(body.mesh, e), InputError, key, ": edge ", body.mesh.node_id(edge.v0),
+                "-", body.mesh.node_id(edge.v1), " of body '", body.name, "' lies on the axis r = 0 "
+                "of the axisymmetric body: there the solid has no surface (a circle of radius 0), "
+                "so contact has no area to act on; leave the axis' edges out of the contact's edge "
+                "sets (the axis is held by u_r = 0)");
+  }
 }
 
 /// The contact points of `edges` in the order of the boundary path(s) they form: edges sorted
@@ -64,6 +79,7 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
     ContactPair pair;
     const Body& body = body_named(d, cs.body, cs.where, &pair.body);
     pair.edges = edges_named(body, cs.edge_sets, cs.where.str() + ".edges");
+    require_off_axis(body, pair.edges, cs.where.str() + ".edges");
     std::vector<contact::ChainEdge> chain;
     pair.points = chained_contact_points(body, pair.edges, cs.quadrature, &chain);
     const bool exact = cs.enforcement == Enforcement::augmented_lagrangian;
@@ -109,7 +125,14 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       const Body& other = body_named(d, o.body, cs.where, &pair.other);
       HPC_REQUIRE(pair.other != pair.body, InputError, cs.where.str(),
                   ".obstacle.body: must be another body than the contact's own");
+      HPC_REQUIRE(other.axisymmetric() == body.axisymmetric(), InputError, cs.where.str(),
+                  ".obstacle.body: body '", body.name, "' is ",
+                  body.axisymmetric() ? "axisymmetric" : "a plane section", " and body '",
+                  other.name, "' is ", other.axisymmetric() ? "axisymmetric" : "a plane section",
+                  ": bodies in contact must be sections of one kind (material.plane: axisymmetric "
+                  "for both, or plane strain / stress for both)");
       pair.other_edges = edges_named(other, o.edge_sets, cs.where.str() + ".obstacle.edges");
+      require_off_axis(other, pair.other_edges, cs.where.str() + ".obstacle.edges");
       pair.other_points = chained_contact_points(other, pair.other_edges, cs.quadrature);
       // Both boundaries list their edges in chain order, as the points and multiplier nodes do.
       pair.boundary = std::make_shared<contact::DeformableBoundary>(body.mesh, body.dofs, body.maps,

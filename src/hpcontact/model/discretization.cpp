@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <sstream>
 #include <tuple>
 
 #include "hpcontact/basis/legendre.hpp"
@@ -13,6 +15,7 @@
 #include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/fem/elasticity.hpp"
 #include "hpcontact/fem/element_values.hpp"
+#include "hpcontact/model/axis.hpp"
 #include "hpcontact/model/expression.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
 
@@ -73,6 +76,7 @@ Body make_body(const ProblemSpec& spec, int b) {
     xy[a] = curves.back().curve->point(0.0);
     xy[bb] = curves.back().curve->point(1.0);
   }
+  if (bs.material.plane == PlaneMode::axisymmetric) snap_to_axis(xy);
   mesh::Mesh mesh(xy, bs.node_ids, quads, bs.element_ids, curves, ctx);
 
   const DiscretizationSpec& ds = spec.discretization;
@@ -193,7 +197,27 @@ void prescribe_edge(const Body& body, int e, int comp, const Expression& g, Disc
   for (int k = 2; k <= p; ++k) set(body.dofs.edge_mode(e, k), a(k - 2));
 }
 
+/// The radial dofs of an axisymmetric body's axis: the vertex modes of its nodes on the axis and
+/// the edge modes of its edges along it, as (dof, node or edge) for messages; none otherwise.
+std::vector<std::pair<int, std::string>> axis_radial_dofs(const Body& body) {
+  std::vector<std::pair<int, std::string>> dofs;
+  if (!body.axisymmetric()) return dofs;
+  for (int v : axis_nodes(body.mesh))
+    dofs.emplace_back(body.dof_offset + 2 * body.dofs.vertex_mode(v),
+                      "node " + std::to_string(body.mesh.node_id(v)));
+  for (int e = 0; e < body.mesh.n_edges(); ++e) {
+    if (!edge_on_axis(body.mesh, e) || body.dofs.lagrange()) continue;
+    const auto& edge = body.mesh.edge(e);
+    for (int k = 2; k <= body.dofs.edge_degree(e); ++k)
+      dofs.emplace_back(body.dof_offset + 2 * body.dofs.edge_mode(e, k),
+                        "edge " + std::to_string(body.mesh.node_id(edge.v0)) + "-" +
+                            std::to_string(body.mesh.node_id(edge.v1)));
+  }
+  return dofs;
+}
+
 void apply_constraints(const BodySpec& bs, const Body& body, Discretization& d) {
+  const auto axis = axis_radial_dofs(body);
   for (const auto& c : bs.constraints) {
     const std::string where = c.where.str();
     for (int comp = 0; comp < 2; ++comp) {
@@ -209,8 +233,35 @@ void apply_constraints(const BodySpec& bs, const Body& body, Discretization& d) 
         d.free_index[dof] = -1;
         d.prescribed(dof) = g(body.mesh.node(v).x(), body.mesh.node(v).y());
       }
+      // The axis cannot move radially: it would open a hole, or pass through itself.
+      if (comp == 0)
+        for (const auto& [dof, what] : axis)
+          HPC_REQUIRE(d.free_index[dof] != -1 || d.prescribed(dof) == 0, InputError, where,
+                      ".ux: prescribes u_r = ", d.prescribed(dof), " at ", what, " of body '",
+                      body.name, "' on the axis r = 0 of an axisymmetric body, where only u_r = 0 "
+                      "is a solid of revolution (a point of the axis moved radially would open a "
+                      "hole or pass through itself)");
     }
   }
+}
+
+/// A warning for an axisymmetric body whose nodes on the axis are free to move radially: the
+/// hoop strain u_r / r is unbounded there unless u_r = 0, so the discrete solution's u_r there
+/// is a discretisation error (it goes to 0 with refinement, slowly).
+std::optional<std::string> axis_left_free(const ProblemSpec& spec, int b, const Body& body,
+                                          const Discretization& d) {
+  std::vector<int> free;
+  for (int v : axis_nodes(body.mesh))
+    if (d.free_index[body.dof_offset + 2 * body.dofs.vertex_mode(v)] != -1)
+      free.push_back(body.mesh.node_id(v));
+  if (free.empty() || !body.axisymmetric()) return std::nullopt;
+  std::ostringstream os;
+  os << body_context(spec, b) << ": " << free.size() << " node(s) on the axis r = 0 (";
+  for (size_t i = 0; i < free.size() && i < 8; ++i) os << (i ? ", " : "") << free[i];
+  if (free.size() > 8) os << ", ...";
+  os << ") may move radially: u_r = 0 there is what a solid of revolution needs (the hoop strain "
+        "u_r / r is unbounded otherwise); add a constraint {edges: [the axis' edges], ux: 0}";
+  return os.str();
 }
 
 double load_shape(LoadShape shape, double t) {
@@ -374,6 +425,7 @@ Discretization discretize(const ProblemSpec& spec) {
     const BodySpec& bs = spec.bodies[b];
     const Body& body = d.bodies[b];
     apply_constraints(bs, body, d);
+    if (const auto w = axis_left_free(spec, static_cast<int>(b), body, d)) d.warnings.push_back(*w);
     for (const auto& ls : bs.edge_loads) apply_edge_load(ls, body, d);
     for (const auto& nf : bs.nodal_forces) {
       const int v = body.mesh.node_index(nf.node);

@@ -71,6 +71,9 @@ struct Discretization {
   std::vector<int> free_index;  ///< per dof: its index among the free ones, or -1 if prescribed
   Eigen::VectorXd prescribed;   ///< per dof: its prescribed value (0 where free)
   Eigen::VectorXd load;         ///< external load per dof (edge loads, nodal forces, body force)
+  /// What the input allows but a user should know (each names the file, the place and the
+  /// cause): `check` and `run` print them, summary.json lists them.
+  std::vector<std::string> warnings;
 
   /// Whether a body is of finite strain (then the problem is nonlinear even without contact).
   bool finite_strain() const {
