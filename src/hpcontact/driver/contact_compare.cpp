@@ -77,6 +77,9 @@ ReferenceCurve read_reference(const std::string& path, const std::string& where)
       v.push_back(std::strtod(c.c_str(), &end));
       HPC_REQUIRE(end != c.c_str(), InputError, where, ".reference: '", path, "' line ", row,
                   ": not a number: '", c, "'");
+      HPC_REQUIRE(std::isfinite(v.back()), InputError, where, ".reference: '", path, "' line ", row,
+                  ", column ", v.size(), ": '", c, "' is not a finite number (a reference curve "
+                  "is a pressure at each x)");
     }
     HPC_REQUIRE(static_cast<int>(v.size()) > std::max(ix, ip), InputError, where, ".reference: '",
                 path, "' line ", row, ": too few columns");

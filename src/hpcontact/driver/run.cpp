@@ -663,7 +663,13 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     model::LinearSolveOptions lo;
     lo.condense = spec.discretization.condense;
     lo.solver = solve::linear_solver_kind(spec.solver.linear, spec.solver.where.str() + ".linear");
-    const auto sol = model::solve_linear(d, lo);
+    const auto sol = [&] {
+      try {
+        return model::solve_linear(d, lo);
+      } catch (const NumericalError& e) {  // named as the nonlinear solve's failures are
+        throw NumericalError(spec.file + ": the solver stopped: " + e.what());
+      }
+    }();
     std::ostringstream os;
     os << "solved: system of " << sol.n_system << " unknowns, assembly " << sol.assembly_seconds
        << " s, factorisation and solve " << sol.solve_seconds << " s";

@@ -2,6 +2,7 @@
 #include "hpcontact/mesh/mesh.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "hpcontact/core/error.hpp"
@@ -94,6 +95,7 @@ Mesh::Mesh(std::vector<Vec2> nodes, std::vector<int> node_ids, std::vector<std::
       quad_edge_reversed_[q][e] = a > b;
     }
   }
+  refuse_stacked_elements();
   for (const auto& c : curves) {
     const int e = find_edge(c.a, c.b);
     HPC_REQUIRE(e >= 0, MeshError, context_, ": a curve is given between nodes ", node_ids_[c.a],
@@ -122,6 +124,32 @@ int Mesh::node_index(int id) const {
 int Mesh::quad_index(int id) const {
   auto it = quad_of_id_.find(id);
   return it == quad_of_id_.end() ? -1 : it->second;
+}
+
+void Mesh::refuse_stacked_elements() const {
+  // Corners on a grid of a round-off of the mesh's size: elements of distinct nodes at the same
+  // points have the same key (the same corners by node number are refused above).
+  const double h = kCornerTolerance * size();
+  std::map<std::array<long long, 8>, int> seen;
+  for (int q = 0; q < n_quads(); ++q) {
+    std::array<std::pair<long long, long long>, 4> corners;
+    for (int k = 0; k < 4; ++k)
+      corners[k] = {std::llround(nodes_[quads_[q][k]].x() / h), std::llround(nodes_[quads_[q][k]].y() / h)};
+    std::sort(corners.begin(), corners.end());
+    std::array<long long, 8> key;
+    for (int k = 0; k < 4; ++k) {
+      key[2 * k] = corners[k].first;
+      key[2 * k + 1] = corners[k].second;
+    }
+    const auto [it, inserted] = seen.emplace(key, q);
+    HPC_REQUIRE(inserted, MeshError, context_, ": elements ", quad_ids_[it->second], " and ",
+                quad_ids_[q], " lie on one another (their corners are at the same points, nodes ",
+                node_ids_[quads_[it->second][0]], ", ", node_ids_[quads_[it->second][1]], ", ",
+                node_ids_[quads_[it->second][2]], ", ", node_ids_[quads_[it->second][3]], " and ",
+                node_ids_[quads_[q][0]], ", ", node_ids_[quads_[q][1]], ", ", node_ids_[quads_[q][2]],
+                ", ", node_ids_[quads_[q][3]], "): an element given twice, or nodes repeated "
+                "under other numbers");
+  }
 }
 
 double Mesh::size() const {

@@ -67,6 +67,9 @@ public:
   double size() const;
 
 private:
+  /// MeshError for two elements whose corners lie at the same points (distinct node numbers).
+  void refuse_stacked_elements() const;
+
   std::vector<Vec2> nodes_;
   std::vector<int> node_ids_;
   std::vector<std::array<int, 4>> quads_;

@@ -71,6 +71,30 @@ std::vector<contact::ContactPoint> chained_contact_points(const Body& body, std:
   return points;
 }
 
+/// Two exactly enforced pairs of one body against parallel planes on a shared edge: where both
+/// are active their constraints repeat one another (one of them is what the other says, or
+/// contradicts it), and the multiplier system is singular.
+void refuse_repeated_planes(const ProblemSpec& spec, const std::vector<ContactPair>& pairs) {
+  for (size_t i = 0; i < pairs.size(); ++i)
+    for (size_t j = i + 1; j < pairs.size(); ++j) {
+      const ContactPair& a = pairs[i];
+      const ContactPair& b = pairs[j];
+      if (a.body != b.body || !a.constraints || !b.constraints) continue;
+      const auto& oa = spec.contact[i].obstacle;
+      const auto& ob = spec.contact[j].obstacle;
+      if (oa.kind != ObstacleKind::plane || ob.kind != ObstacleKind::plane) continue;
+      const Vec2 na = Vec2(oa.normal[0], oa.normal[1]).normalized();
+      const Vec2 nb = Vec2(ob.normal[0], ob.normal[1]).normalized();
+      if (std::abs(na.dot(nb)) < 1 - 1e-12) continue;
+      for (int e : a.edges)
+        HPC_REQUIRE(std::find(b.edges.begin(), b.edges.end(), e) == b.edges.end(), InputError,
+                    spec.contact[j].where.str(), ".edges: shares contact edges with contact[", i,
+                    "] (both of body '", spec.contact[j].body, "', enforced exactly, against "
+                    "parallel planes): where both touch, their constraints repeat or contradict one "
+                    "another; give the two planes separate edge sets, or one plane");
+    }
+}
+
 }  // namespace
 
 std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discretization& d) {
@@ -183,6 +207,7 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
     }
     pairs.push_back(std::move(pair));
   }
+  refuse_repeated_planes(spec, pairs);
   return pairs;
 }
 

@@ -14,6 +14,7 @@
 
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/model/contact_system.hpp"
+#include "hpcontact/model/load_scale.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
 #include "hpcontact/solve/arc_length.hpp"
 
@@ -73,6 +74,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
                                 const StepFn& on_step) {
   const SolverSpec& ss = spec.solver;
   auto pairs = make_contact_pairs(spec, d);
+  if (!pairs.empty()) require_force_scale(spec, d, pairs.front().body, pairs.front().other);
   for (const auto& pair : pairs)
     HPC_REQUIRE(pair.other < 0 || ss.tangent == "analytic", InputError, ss.where.str(),
                 ".tangent: finite-difference is implemented for rigid obstacles only; contact "

@@ -138,6 +138,8 @@ void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, i
   for (int i = 0; i < nf; ++i)
     if (!(s_scale_(i) > 0)) s_scale_(i) = 1;
   S_.compute(s_scale_.cwiseInverse().asDiagonal() * S * s_scale_.cwiseInverse().asDiagonal());
+  HPC_REQUIRE(S.allFinite(), NumericalError, "the multiplier system is not finite (NaN or Inf): a "
+              "constraint or the tangent it couples to is not finite");
   const double rcond = S_.rcond();
   if (!(rcond > 1e-14)) {
     std::ostringstream os;
