@@ -15,9 +15,9 @@
 #include "hpcontact/analytic/lame_sphere.hpp"
 #include "hpcontact/driver/contact_compare.hpp"
 #include "hpcontact/driver/contact_history.hpp"
+#include "hpcontact/driver/solution_warnings.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/core/stop.hpp"
-#include "hpcontact/model/axis.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/linear_solve.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
@@ -277,21 +277,6 @@ void warn(const std::string& warning, const RunOptions& options, post::Summary& 
   if (options.warning) options.warning(warning);
 }
 
-/// Warnings about a solution: an axisymmetric section of linear elasticity whose deformed shape
-/// crosses its axis (a finite-strain body fails instead: its hoop stretch turns negative).
-void warn_about_solution(const model::ProblemSpec& spec, const model::Discretization& d,
-                         const Eigen::VectorXd& u, const RunOptions& options, post::Summary& s) {
-  for (size_t b = 0; b < d.bodies.size(); ++b) {
-    const auto& body = d.bodies[b];
-    if (!body.axisymmetric() || body.finite_strain()) continue;
-    if (const auto where = model::crosses_axis(body, u))
-      warn(spec.file + ": bodies[" + std::to_string(b) + "] (" + body.name + "): the deformed " +
-               "section crosses the axis r = 0 (" + *where + "): displacements of the order of the " +
-               "radius are beyond linear elasticity (material.model: neo-hooke follows them)",
-           options, s);
-  }
-}
-
 void post_process(const model::ProblemSpec& spec, const SolvedState& st, const std::string& out_dir,
                   const RunOptions& options, const Comparisons& comparisons, RunResult& r) {
   namespace fs = std::filesystem;
@@ -310,7 +295,7 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
               st.u.cwiseAbs().maxCoeff(), "): a load, prescribed displacement, length or material "
               "value of the input is too large for double precision");
   s.error = exact_error(spec, disc, st.u, s.strain_energy);
-  warn_about_solution(spec, disc, st.u, options, s);
+  for (const auto& w : solution_warnings(spec, disc, st.u, st.pairs, st.contact)) warn(w, options, s);
   s.extra["units"] = units_note(spec);
   // The p-version's shape space: its default depends on the adaptivity (docs/input.md).
   if (spec.discretization.method == model::Method::p)

@@ -15,6 +15,7 @@
 #include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/fem/elasticity.hpp"
 #include "hpcontact/fem/element_values.hpp"
+#include "hpcontact/mesh/element_shape.hpp"
 #include "hpcontact/model/axis.hpp"
 #include "hpcontact/model/expression.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
@@ -407,6 +408,21 @@ void find_free_rigid_motions(Discretization& d) {
   }
 }
 
+/// The mesh edges of a body that some contact pair names, as its own edges or as its obstacle's.
+std::vector<int> contact_edges_of(const ProblemSpec& spec, const Body& body) {
+  std::vector<int> edges;
+  auto add = [&](const std::vector<std::string>& names) {
+    for (const auto& name : names)
+      if (const auto it = body.edge_sets.find(name); it != body.edge_sets.end())
+        edges.insert(edges.end(), it->second.begin(), it->second.end());
+  };
+  for (const auto& cs : spec.contact) {
+    if (cs.body == body.name) add(cs.edge_sets);
+    if (cs.obstacle.kind == ObstacleKind::body && cs.obstacle.body == body.name) add(cs.obstacle.edge_sets);
+  }
+  return edges;
+}
+
 }  // namespace
 
 Discretization discretize(const ProblemSpec& spec) {
@@ -448,6 +464,12 @@ Discretization discretize(const ProblemSpec& spec) {
     }
   }
   find_free_rigid_motions(d);
+  for (size_t b = 0; b < d.bodies.size(); ++b) {
+    const Body& body = d.bodies[b];
+    const auto shapes = mesh::shape_warnings(body.mesh, body.maps, contact_edges_of(spec, body),
+                                             body_context(spec, static_cast<int>(b)));
+    d.warnings.insert(d.warnings.end(), shapes.begin(), shapes.end());
+  }
   // Free numbering: external modes of all bodies first, then internal modes.
   for (int pass = 0; pass < 2; ++pass) {
     for (const Body& body : d.bodies) {
