@@ -71,10 +71,11 @@ def test_an_axis_free_to_move_radially_is_warned(hpcontact, ball, tmp_path):
     assert "hpcontact: warning: " in r.stderr and "(1, 4, 7) may move radially" in r.stderr
     s = json.loads((tmp_path / "free" / "summary.json").read_text())
     assert len(s["warnings"]) == 1 and "(1, 4, 7) may move radially" in s["warnings"][0]
-    # held on the axis: no warning at all
+    # held on the axis: no warning about it (the coarse mesh's contact zone is another's)
     r = hpcontact("run", ball, "--out", tmp_path / "held", "-q", "--set", "adapt.method=none")
-    assert r.returncode == 0 and "warning" not in r.stderr, r.stderr
-    assert "warnings" not in json.loads((tmp_path / "held" / "summary.json").read_text())
+    assert r.returncode == 0 and "may move radially" not in r.stderr, r.stderr
+    s = json.loads((tmp_path / "held" / "summary.json").read_text())
+    assert not any("may move radially" in w for w in s.get("warnings", []))
 
 
 def test_a_section_pulled_across_the_axis_is_warned(hpcontact, sphere, tmp_path):
