@@ -70,7 +70,7 @@ def test_an_axis_free_to_move_radially_is_warned(hpcontact, ball, tmp_path):
     assert r.returncode == 0, r.stderr
     assert "hpcontact: warning: " in r.stderr and "(1, 4, 7) may move radially" in r.stderr
     s = json.loads((tmp_path / "free" / "summary.json").read_text())
-    assert len(s["warnings"]) == 1 and "(1, 4, 7) may move radially" in s["warnings"][0]
+    assert sum("(1, 4, 7) may move radially" in w for w in s["warnings"]) == 1
     # held on the axis: no warning about it (the coarse mesh's contact zone is another's)
     r = hpcontact("run", ball, "--out", tmp_path / "held", "-q", "--set", "adapt.method=none")
     assert r.returncode == 0 and "may move radially" not in r.stderr, r.stderr
