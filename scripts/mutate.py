@@ -7,14 +7,17 @@ Each entry of MUTATIONS below changes one line of the library (a wrong sign, fac
 bound someone could write). For each, the script replaces the line, rebuilds (incremental Ninja
 with ccache: one object and the links), runs the fast suite (what `make test` runs: `ctest -LE
 slow`), puts the file back and records which tests failed. The suite runs in two parts: the C++
-tests (unit, verification, fuzz replays; ~25 s on 2 cores), then the command-line and Python
-tests (labels cli, python; ~95 s) — the second part only when it can change the verdict (no
-property test has failed in the first, or the mutation's property tests are command-line ones),
-unless --full. Test processes run with a 4 GB address-space limit and a 120 s timeout (a mutant
-can loop or allocate without bound on a machine others share). The file is restored in
-a `finally` (also on Ctrl-C or SIGTERM), and a copy of the original is kept in
-DIR/mutate-backup/ while a mutation is applied, so that a run killed outright is repaired by the
-next start. At the end the build is brought back to the sources as they are.
+tests (unit, verification, fuzz replays) with the docs, install and slurm tests (~2 min on 2
+cores), then the command-line and Python tests (labels cli, python: one ctest test per pytest
+file; 2-5 min) — the second part only when it can change the verdict (no property test has
+failed in the first, or the mutation's property tests are command-line ones), unless --full. A
+failed pytest file counts as the pytest tests that failed in it. Test processes run with a 4 GB
+address-space limit and a 120 s timeout (the pytest files: their own, and the second part
+stops after 15 min), since a mutant can loop or allocate without bound on a machine others
+share. The file is restored in a `finally` (also on Ctrl-C or SIGTERM), and a copy of the
+original is kept in DIR/mutate-backup/ while a mutation is applied, so that a run killed
+outright is repaired by the next start. At the end the build is brought back to the sources as
+they are.
 
 Every mutation names the tests that check a property it breaks (`expect`: a closed form, a patch
 test, a convergence rate, a symmetry, a tangent against differences); it counts as caught only
@@ -656,6 +659,18 @@ def limit_memory():
     resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
 
 
+# Each pytest file is a ctest test of its own with its own time limit (tests/CMakeLists.txt:
+# 900 s, for a busy machine), so a mutant that makes every run hang would hold the end-to-end
+# part for hours; unmutated it takes 2-5 minutes on 2 cores. ctest stops all its tests at this.
+END_TO_END_SECONDS = 900
+
+
+def stop_time(seconds):
+    """ctest --stop-time's argument for `seconds` from now: local time of day (ctest adds its
+    zone itself and ignores a time that has one; a time already past means the next day)."""
+    return time.strftime("%H:%M:%S", time.localtime(time.time() + seconds))
+
+
 def run(cmd, cwd, log, limited=False):
     """Runs cmd in its own process group, appends its output to log; returns (exit status,
     output). If this script is interrupted meanwhile, the group it started (ctest and the tests
@@ -677,7 +692,9 @@ def run(cmd, cwd, log, limited=False):
 
 
 def failed_tests(output):
-    """ctest's failed tests, with the failing pytest node ids inside the cli and python tests."""
+    """ctest's failed tests; a failed pytest test (the per-file cli/test_x, docs/test_x, the
+    python suite) stands for the pytest node ids that failed or errored inside it, named
+    "cli:tests/cli/test_x.py::test_y" (the ctest name when none is found: a timeout, a crash)."""
     names = []
     section = output.split("The following tests FAILED:", 1)
     if len(section) == 2:
@@ -686,14 +703,24 @@ def failed_tests(output):
             if m:
                 names.append(m.group(1))
     # pytest -q's summary lines, e.g. "FAILED ../../tests/cli/test_x.py::test_y - AssertionError"
+    # (ERROR: a fixture failed, e.g. the run a module's tests share)
     pytest = sorted({m.group(1) for m in re.finditer(
-        r"^FAILED (?:\.\./)*(tests/(?:cli|python)/\S+?)(?: - .*)?$", output, re.M)})
-    for group in ("cli", "python"):
-        if group in names:
-            names.remove(group)
-            inner = [f"{group}:{n}" for n in pytest if n.startswith(f"tests/{group}/")]
-            names.extend(inner or [group])
-    return names
+        r"^(?:FAILED|ERROR) (?:\.\./)*(tests/(?:cli|python|docs)/\S+?)(?: - .*)?$", output, re.M)})
+    out = []
+    for name in names:
+        group, _, file = name.partition("/")
+        if name == "python":
+            prefix = "tests/python/"
+        elif group in ("cli", "docs") and file:  # cli/test_x and cli/test_x:slow: test_x.py
+            prefix = f"tests/{group}/{file.split(':')[0]}.py::"
+        else:
+            out.append(name)
+            continue
+        inner = [f"{group}:{n}" for n in pytest if n.startswith(prefix)]
+        out.extend(inner or [name])
+    if "The stop time has been passed" in output:
+        out.append("(stopped at the stage's time limit: see mutate.log)")
+    return list(dict.fromkeys(out))  # cli/test_x and cli/test_x:slow both name test_x.py's
 
 
 def restore_leftovers(backup_dir):
@@ -756,8 +783,9 @@ def main():
     open(log, "w").close()
     # --timeout: for the tests without their own (the C++ ones: 12 s at most unmutated).
     ctest = ["ctest", "-j", str(args.jobs), "--timeout", "120", "--output-on-failure"]
-    cpp_tests = ctest + ["-LE", "slow|cli|python"]   # unit, verification, fuzz replays: ~25 s
-    end_to_end = ctest + ["-L", "cli|python", "-LE", "slow"]  # the command line, Python: ~95 s
+    # unit, verification, fuzz replays, and the docs, install and slurm tests: ~2 min
+    cpp_tests = ctest + ["-LE", "slow|cli|python"]
+    end_to_end = ctest + ["-L", "cli|python", "-LE", "slow"]  # the command line, Python: 2-5 min
     suite = ("ctest -LE 'slow|cli|python'" if args.quick else
              "ctest -LE slow" + ("" if args.full else " (cli, python only where needed: see --help)"))
     build = ["cmake", "--build", args.build, "-j", str(args.jobs)]
@@ -793,8 +821,10 @@ def main():
                         # The end-to-end tests only when they can decide the verdict: no property
                         # test has failed yet, or the mutation's property tests are among them.
                         if stage == 1 and not args.full and any(t in m.expect for t in failed) and \
-                                not any(t.startswith(("cli:", "python:")) for t in m.expect):
+                                not any(t.startswith(("cli:", "cli/", "python")) for t in m.expect):
                             break
+                        if stage == 1:
+                            cmd = cmd + ["--stop-time", stop_time(END_TO_END_SECONDS)]
                         status, out = run(cmd, args.build, log, limited=True)
                         found = failed_tests(out)
                         if status != 0 and not found:

@@ -9,6 +9,14 @@ import sys
 import pytest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.append(os.path.join(ROOT, "tests"))
+from timeouts import scaled_timeout  # noqa: E402  (the time limits, also the test files')
+
+
+def pytest_configure(config):
+    config.addinivalue_line("markers", "slow: long, and checking what a faster test also checks: "
+                            "a ctest test of its own labelled slow, which `make test` leaves out "
+                            "(tests/CMakeLists.txt)")
 
 
 def pytest_addoption(parser):
@@ -23,8 +31,9 @@ def hpcontact(request):
         pytest.fail(f"hpcontact executable not found at {path}")
 
     def run(*args, timeout=300):
+        """`hpcontact args...`, given `timeout` seconds (on a quiet machine) to finish."""
         return subprocess.run([path, *map(str, args)], capture_output=True, text=True,
-                              timeout=timeout)
+                              timeout=scaled_timeout(timeout))
 
     return run
 
@@ -63,7 +72,7 @@ def partial_slip_generator(root, *args):
     """scripts/partial_slip_mesh.py with these arguments (two cylinders, R = 10): the finished
     process, the problem file on its stdout."""
     return subprocess.run([sys.executable, os.path.join(root, "scripts", "partial_slip_mesh.py"), *args],
-                          capture_output=True, text=True, timeout=60)
+                          capture_output=True, text=True, timeout=scaled_timeout(60))
 
 
 def load_script(name):

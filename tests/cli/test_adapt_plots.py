@@ -5,12 +5,14 @@ import re
 import subprocess
 import sys
 
+from conftest import scaled_timeout
+
 PY = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
 
 
 def script(root, name, *args):
     return subprocess.run([PY, os.path.join(root, "scripts", name), *map(str, args)],
-                          capture_output=True, text=True, timeout=120)
+                          capture_output=True, text=True, timeout=scaled_timeout(120))
 
 
 def test_plot_adapt_draws_every_rp_iteration(hpcontact, root, tmp_path):

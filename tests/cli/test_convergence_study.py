@@ -13,6 +13,8 @@ import sys
 
 import pytest
 
+from conftest import scaled_timeout
+
 STUDY = os.path.join("examples", "hertz", "convergence.yaml")
 REQUIRED = ["method", "mesh", "p", "dofs", "strain_energy", "energy_rel_percent",
             "e_L2_hertz_percent", "wall_time_s"]
@@ -21,7 +23,7 @@ REQUIRED = ["method", "mesh", "p", "dofs", "strain_energy", "energy_rel_percent"
 def study_script(root, exe, *args, timeout=120):
     return subprocess.run([sys.executable, os.path.join(root, "scripts", "convergence_study.py"),
                            *map(str, args), "--hpcontact", exe], capture_output=True, text=True,
-                          timeout=timeout)
+                          timeout=scaled_timeout(timeout))
 
 
 @pytest.fixture(scope="module")

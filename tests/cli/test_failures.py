@@ -7,6 +7,8 @@ import subprocess
 
 import pytest
 
+from conftest import scaled_timeout
+
 BLOCK = "examples/neumann/block.yaml"  # two p-elements, condensed, no contact
 HERTZ = "examples/hertz/p5.yaml"
 
@@ -62,7 +64,7 @@ def test_memory_running_out_is_reported_not_a_crash(exe, root, tmp_path):
             resource.setrlimit(resource.RLIMIT_AS, (mb << 20, mb << 20))
         out = tmp_path / f"out-{mb}"
         r = subprocess.run([exe, *args, "--out", str(out)], capture_output=True, text=True,
-                           timeout=120, preexec_fn=limit)
+                           timeout=scaled_timeout(120), preexec_fn=limit)
         assert r.returncode in (0, 1), (mb, r.returncode, r.stderr)
         if r.returncode == 1:
             # libgomp ends the process itself (exit 1) when it cannot start its threads.

@@ -10,6 +10,8 @@ import subprocess
 import pytest
 import yaml
 
+from conftest import scaled_timeout
+
 GMSH = "/usr/bin/gmsh"
 EXAMPLE = "examples/gmsh"
 needs_gmsh = pytest.mark.skipif(not os.path.exists(GMSH), reason=f"{GMSH} not installed")
@@ -20,7 +22,8 @@ def make_mesh(root, folder, order, name):
     geo = folder / "hertz.geo"
     shutil.copy(os.path.join(root, EXAMPLE, "hertz.geo"), geo)
     r = subprocess.run([GMSH, "-2", "-order", str(order), "-format", "msh41", str(geo), "-o",
-                        str(folder / name)], capture_output=True, text=True, timeout=120)
+                        str(folder / name)], capture_output=True, text=True,
+                       timeout=scaled_timeout(120))
     assert r.returncode == 0, r.stdout + r.stderr
     return folder / name
 
@@ -133,7 +136,7 @@ def test_triangles_are_refused_with_the_fix(hpcontact, root, tmp_path):
     geo.write_text('SetFactory("OpenCASCADE");\nDisk(1) = {0, 0, 0, 1};\n'
                    'Physical Surface("disc") = {1};\nPhysical Curve("rim") = {1};\n')
     r = subprocess.run([GMSH, "-2", "-format", "msh41", str(geo), "-o", str(tmp_path / "disc.msh")],
-                       capture_output=True, text=True, timeout=120)
+                       capture_output=True, text=True, timeout=scaled_timeout(120))
     assert r.returncode == 0, r.stdout + r.stderr
     case = tmp_path / "disc.yaml"
     case.write_text("case: disc\nbodies:\n  - name: disc\n    material: {E: 1, nu: 0.3}\n"

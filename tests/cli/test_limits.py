@@ -8,6 +8,8 @@ import subprocess
 
 import pytest
 
+from conftest import scaled_timeout
+
 BLOCK = "examples/neumann/block.yaml"
 HERTZ = "examples/hertz/p5.yaml"
 
@@ -15,8 +17,8 @@ HERTZ = "examples/hertz/p5.yaml"
 def limited(exe, *args, timeout=60):
     def limit():
         resource.setrlimit(resource.RLIMIT_AS, (2 << 30, 2 << 30))
-    return subprocess.run([exe, *map(str, args)], capture_output=True, text=True, timeout=timeout,
-                          preexec_fn=limit)
+    return subprocess.run([exe, *map(str, args)], capture_output=True, text=True,
+                          timeout=scaled_timeout(timeout), preexec_fn=limit)
 
 
 @pytest.mark.parametrize("key, value, limit", [

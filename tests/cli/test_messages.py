@@ -6,6 +6,8 @@ import subprocess
 
 import pytest
 
+from conftest import scaled_timeout
+
 HERTZ = "examples/hertz/p5.yaml"
 BLOCK = "examples/neumann/block.yaml"
 LAME = "examples/lame/thick-cylinder.yaml"
@@ -167,7 +169,7 @@ def test_closed_stdout_does_not_kill_the_run(exe, root, tmp_path):
     p.stdout.readline()
     p.stdout.close()  # as head does
     err = p.stderr.read().decode()
-    assert p.wait(timeout=120) == 0, err
+    assert p.wait(timeout=scaled_timeout(120)) == 0, err
     assert "the standard output was closed during the run; the run went on" in err, err
     assert (out / "summary.json").exists()
 

@@ -9,7 +9,7 @@ import subprocess
 import sys
 
 import pytest
-from conftest import load_script
+from conftest import load_script, scaled_timeout
 
 
 @pytest.fixture(scope="module")
@@ -81,7 +81,8 @@ def test_study_script_writes_csv_and_png(exe, root, tmp_path):
     summary.json columns plus shape, beta.csv and convergence.png."""
     r = subprocess.run([sys.executable, os.path.join(root, "scripts", "neumann_study.py"),
                         "--quick", "--study", "quarter-circle", "--hpcontact", exe,
-                        "--out", str(tmp_path)], capture_output=True, text=True, timeout=120)
+                        "--out", str(tmp_path)], capture_output=True, text=True,
+                       timeout=scaled_timeout(120))
     assert r.returncode == 0, r.stdout + r.stderr
     out = tmp_path / "quarter-circle"
     with open(out / "convergence.csv") as f:

@@ -125,6 +125,11 @@ def test_what_does_not_apply_is_refused(hpcontact, root, tmp_path):
         assert not (tmp_path / "x" / "summary.json").exists()
 
 
+# slow (23 s of CPU, 40-80 s on a busy machine: 8 load steps per rp iteration at finite strain):
+# that rp puts a node on each zone end is checked by test_rp_two_ends.py and test_rp.py's
+# test_rp5_reaches_gamma_star, and the stresses' pressure against the multipliers' by
+# test_stress_pressure_is_the_multipliers above, in seconds.
+@pytest.mark.slow
 def test_rp_puts_a_node_on_each_zone_end(hpcontact, root, tmp_path):
     """With the default 8 load steps, rp (adapt.method rp) moves a vertex onto each end of the
     contact zone and the kink of the pressure there leaves the elements: the multipliers'

@@ -11,6 +11,8 @@ import time
 
 import pytest
 
+from conftest import scaled_timeout
+
 LAME = "examples/lame/thick-cylinder.yaml"
 HERTZ = "examples/hertz/p5.yaml"
 # Hertz at p = 15 by penalty in 400 load steps: long enough (seconds) to be caught while it
@@ -79,7 +81,7 @@ def test_folder_holding_the_problem_file_is_refused(exe, root, tmp_path):
     before = snapshot(tmp_path)
     for case, out in (("input.yaml", "."), ("sub/case.yaml", ".")):
         r = subprocess.run([exe, "run", case, "--out", out, "-q"], cwd=tmp_path,
-                           capture_output=True, text=True, timeout=60)
+                           capture_output=True, text=True, timeout=scaled_timeout(60))
         assert r.returncode == 1, r.stderr
         assert "holds the problem file" in r.stderr and case in r.stderr, r.stderr
         assert_untouched(tmp_path, before)
@@ -140,14 +142,14 @@ def test_user_files_and_earlier_results_survive_every_run(hpcontact, exe, root, 
     # converged, if a load step had, would be in last-good/: test_stop_signal.py).
     p = start(exe, "run", os.path.join(root, LONG[0]), "--out", out, *LONG[1:])
     p.send_signal(signal.SIGTERM)
-    assert p.wait(timeout=60) == -signal.SIGTERM
+    assert p.wait(timeout=scaled_timeout(60)) == -signal.SIGTERM
     assert {k: v for k, v in results(out).items() if not k.startswith("last-good/")} == first
     assert not any(name.startswith(".hpcontact-staging-") for name in os.listdir(out))
 
     # Killed outright (SIGKILL): nothing changes; its staging folder is left for the next run.
     p = start(exe, "run", os.path.join(root, LONG[0]), "--out", out, *LONG[1:])
     p.send_signal(signal.SIGKILL)
-    assert p.wait(timeout=60) == -signal.SIGKILL
+    assert p.wait(timeout=scaled_timeout(60)) == -signal.SIGKILL
     assert {k: v for k, v in results(out).items() if not k.startswith("last-good/")} == first
     assert any(name.startswith(".hpcontact-staging-") for name in os.listdir(out))
 
@@ -226,11 +228,11 @@ def test_a_write_that_fails_fails_the_run(exe, root, tmp_path):
     reason; the folder's earlier results stay and nothing claims success."""
     out = tmp_path / "out"
     run = [exe, "run", os.path.join(root, BLOCK), "--out", out, "-q", "--set", f"{PRESS}=-0.5"]
-    r = subprocess.run(run, capture_output=True, text=True, timeout=60)
+    r = subprocess.run(run, capture_output=True, text=True, timeout=scaled_timeout(60))
     assert r.returncode == 0, r.stderr
     first = results(out)
     for limit, name in ((100, "path.csv"), (1000, "solution.vtu")):
-        r = subprocess.run(run, capture_output=True, text=True, timeout=60,
+        r = subprocess.run(run, capture_output=True, text=True, timeout=scaled_timeout(60),
                            preexec_fn=limit_file_size(limit))
         assert r.returncode == 1, (limit, r.stderr)
         assert f"{name}: cannot write the file: File too large" in r.stderr, r.stderr
@@ -285,7 +287,7 @@ def start_long_study(exe, root, tmp_path, labels, **popen):
     out = tmp_path / "out"
     p = subprocess.Popen([exe, "study", study, "--out", out, "-j", "2", "-q"],
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, **popen)
-    deadline = time.monotonic() + 30
+    deadline = time.monotonic() + scaled_timeout(30)
     while len(children_of(p.pid)) < 2 and time.monotonic() < deadline:
         time.sleep(0.05)
     runs = children_of(p.pid)
@@ -300,7 +302,7 @@ def test_study_passes_signals_to_its_runs(exe, root, tmp_path, sig):
     p, out, runs = start_long_study(exe, root, tmp_path, "abc")
     time.sleep(0.3)  # the runs are solving
     p.send_signal(sig)
-    _, err = p.communicate(timeout=60)
+    _, err = p.communicate(timeout=scaled_timeout(60))
     assert p.returncode == -sig, err
     assert "study stopped by" in err, err
     assert not any(alive(pid) for pid in runs)
@@ -322,7 +324,7 @@ def test_ctrl_c_on_a_study_keeps_what_its_runs_had_converged(exe, root, tmp_path
     p, out, _ = start_long_study(exe, root, tmp_path, "ab", start_new_session=True)
     time.sleep(1.5)  # the runs have converged load steps
     os.killpg(p.pid, signal.SIGINT)
-    _, err = p.communicate(timeout=60)
+    _, err = p.communicate(timeout=scaled_timeout(60))
     assert p.returncode == -signal.SIGINT, err
     for label in ("01-a", "02-b"):
         kept = json.loads((out / "runs" / label / "last-good" / "summary.json").read_text())

@@ -10,14 +10,14 @@ import subprocess
 import numpy as np
 import pytest
 
-from conftest import load_script
+from conftest import load_script, scaled_timeout
 
 PYTHON = "/usr/bin/python3"
 
 
 def run_script(root, name, *args):
     return subprocess.run([PYTHON, os.path.join(root, "scripts", name), *map(str, args)],
-                          capture_output=True, text=True, timeout=120)
+                          capture_output=True, text=True, timeout=scaled_timeout(120))
 
 
 def test_contact_and_field_plots_of_the_tutorial_punch(hpcontact, root, tmp_path):

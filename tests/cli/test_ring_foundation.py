@@ -4,12 +4,14 @@ import csv
 import os
 import subprocess
 
+from conftest import scaled_timeout
+
 
 def test_arc_length_path_reaches_the_load_in_equilibrium(exe, root, tmp_path):
     out = tmp_path / "path"
     r = subprocess.run(["/usr/bin/python3", os.path.join(root, "scripts/ring_foundation_study.py"),
                         "--hpcontact", exe, "--out", out], capture_output=True, text=True,
-                       timeout=300)
+                       timeout=scaled_timeout(300))
     assert r.returncode == 0, r.stdout + r.stderr
     with open(out / "path.csv") as f:
         rows = list(csv.DictReader(f))

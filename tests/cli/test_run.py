@@ -7,6 +7,8 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
+from conftest import scaled_timeout
+
 LAME = "examples/lame/thick-cylinder.yaml"
 
 
@@ -200,7 +202,7 @@ def test_pressure_plot(hpcontact, root, tmp_path):
     r = hpcontact("run", os.path.join(root, "examples/hertz/p5.yaml"), "--out", tmp_path, "-q")
     assert r.returncode == 0, r.stderr
     p = subprocess.run(["/usr/bin/python3", os.path.join(root, "scripts", "plot_pressure.py"),
-                        str(tmp_path)], capture_output=True, text=True, timeout=120)
+                        str(tmp_path)], capture_output=True, text=True, timeout=scaled_timeout(120))
     assert p.returncode == 0, p.stderr
     png = (tmp_path / "pressure.png").read_bytes()
     assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 20000

@@ -11,6 +11,8 @@ import time
 
 import pytest
 
+from conftest import scaled_timeout
+
 PARTIAL_SLIP = os.path.join("examples", "partial-slip")
 
 
@@ -31,7 +33,7 @@ def run_until(exe, case, out, marker, sig, *sets, again=None):
                 time.sleep(again)
                 p.send_signal(sig)
             break
-    _, err = p.communicate(timeout=120)
+    _, err = p.communicate(timeout=scaled_timeout(120))
     assert seen and seen[-1].strip().startswith(marker), "the marker line never came: " + err
     return p.returncode, err, seen
 
@@ -75,7 +77,7 @@ def test_a_stopped_hp_loop_keeps_its_best_step(exe, root, tmp_path):
     case = os.path.join(root, PARTIAL_SLIP, "hp-tolerance.yaml")
     out = tmp_path / "r"
     done = subprocess.run([exe, "run", case, "--out", str(out), "-q", "--set", "adapt.tolerance=2e-2"],
-                          capture_output=True, text=True, timeout=300)
+                          capture_output=True, text=True, timeout=scaled_timeout(300))
     assert done.returncode == 0, done.stderr
     before = (out / "summary.json").read_text()
     code, err, seen = run_until(exe, case, out, "hp step 1: estimated error", signal.SIGTERM,

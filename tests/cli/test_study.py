@@ -9,13 +9,15 @@ import sys
 
 import yaml
 
+from conftest import scaled_timeout
+
 STUDY = os.path.join("tests", "cli", "data", "study-small.yaml")
 
 
 def study_script(root, exe, *args):
     return subprocess.run([sys.executable, os.path.join(root, "scripts", "study_table.py"),
                            *map(str, args), "--hpcontact", exe], capture_output=True, text=True,
-                          timeout=120)
+                          timeout=scaled_timeout(120))
 
 
 def table_cells(md):

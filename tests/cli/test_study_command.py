@@ -6,6 +6,8 @@ import os
 import subprocess
 import sys
 
+from conftest import scaled_timeout
+
 
 def write_study(tmp_path, root, body):
     path = tmp_path / "study.yaml"
@@ -101,10 +103,10 @@ def test_zip_links_the_load_and_the_closed_forms_force(hpcontact, root, tmp_path
     png = tmp_path / "b.png"
     r = subprocess.run(plot + ["--x", "contact.hertz_half_width", "--y", "contact.half_width",
                                "--y", "contact.p_max", "--log", "--out", str(png)],
-                       capture_output=True, text=True, timeout=120)
+                       capture_output=True, text=True, timeout=scaled_timeout(120))
     assert r.returncode == 0 and r.stdout.strip() == f"wrote {png}", r.stdout + r.stderr
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     r = subprocess.run(plot + ["--x", "dofs", "--y", "contact.nothing"], capture_output=True,
-                       text=True, timeout=120)
+                       text=True, timeout=scaled_timeout(120))
     assert r.returncode == 1 and "study.csv: no column 'contact.nothing'" in r.stderr, r.stderr
     assert "contact.half_width" in r.stderr

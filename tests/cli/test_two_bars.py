@@ -11,7 +11,7 @@ import sys
 
 import numpy as np
 import pytest
-from conftest import load_script
+from conftest import load_script, scaled_timeout
 
 SUBDIVISIONS = 32
 
@@ -134,13 +134,13 @@ def test_command_line(exe, root, tmp_path):
     out = tmp_path / "quick"
     proc = subprocess.run([sys.executable, script, "--hpcontact", exe, "--out", str(out),
                            "--subdivisions", "8", "--set", "discretization.degree=[6, 2]"],
-                          capture_output=True, text=True, timeout=120)
+                          capture_output=True, text=True, timeout=scaled_timeout(120))
     assert proc.returncode == 0, proc.stderr
     for name in ("two-bars.md", "two-bars.csv", "interface-strains.png", "coulomb-tractions.png"):
         assert str(out / name) in proc.stdout
     proc = subprocess.run([sys.executable, script, "--hpcontact", exe, "--out",
                            str(tmp_path / "bad"), "--set", "discretization.degree=[0, 2]"],
-                          capture_output=True, text=True, timeout=120)
+                          capture_output=True, text=True, timeout=scaled_timeout(120))
     assert proc.returncode == 1
     assert "monolithic run failed" in proc.stderr and "degree" in proc.stderr, proc.stderr
 

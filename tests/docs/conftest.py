@@ -1,10 +1,13 @@
 """Fixtures of the documentation tests: the repository root, its tracked files, the program."""
 import os
 import subprocess
+import sys
 
 import pytest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.append(os.path.join(ROOT, "tests"))
+from timeouts import scaled_timeout  # noqa: E402,F401  (the test files' time limits)
 
 
 def pytest_addoption(parser):

@@ -9,6 +9,8 @@ import subprocess
 
 import pytest
 
+from conftest import scaled_timeout
+
 PYTHON = "/usr/bin/python3"
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCRIPTS = sorted(p for p in glob.glob(os.path.join(ROOT, "scripts", "*.py"))
@@ -41,8 +43,8 @@ def parser_of(path, monkeypatch):
 def test_help_names_and_explains_every_argument(path, monkeypatch):
     if path.endswith(os.path.join("python", "hertz.py")) and importlib.util.find_spec("hpcontact") is None:
         pytest.skip("the Python module is not built (PYTHONPATH=build/python)")
-    r = subprocess.run([PYTHON, path, "--help"], capture_output=True, text=True, timeout=60,
-                       cwd=ROOT)
+    r = subprocess.run([PYTHON, path, "--help"], capture_output=True, text=True,
+                       timeout=scaled_timeout(60), cwd=ROOT)
     assert r.returncode == 0, r.stderr
     assert r.stdout.startswith("usage: "), r.stdout[:200]
     parser = parser_of(path, monkeypatch)

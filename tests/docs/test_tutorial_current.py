@@ -8,7 +8,7 @@ import subprocess
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, scaled_timeout
 
 PYTHON = "/usr/bin/python3"
 SCRIPT = os.path.join(ROOT, "scripts", "regenerate_docs.py")
@@ -26,7 +26,7 @@ def test_the_tutorial_matches_a_rerun_of_its_commands(exe):
     if importlib.util.find_spec("hpcontact") is None and not os.path.isdir(module_dir):
         pytest.skip("the Python module is not built: the tutorial's Python session cannot run")
     r = subprocess.run([PYTHON, SCRIPT, "--check", "--hpcontact", exe, "--python-path", module_dir],
-                       capture_output=True, text=True, timeout=900)
+                       capture_output=True, text=True, timeout=scaled_timeout(900))
     assert r.returncode == 0, (
         "the tutorial no longer shows what the program does; run scripts/regenerate_docs.py:\n"
         + r.stdout[-6000:] + r.stderr[-3000:])

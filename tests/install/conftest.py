@@ -1,9 +1,12 @@
 """Options of the install tests: the build folder to install from."""
 import os
+import sys
 
 import pytest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.append(os.path.join(ROOT, "tests"))
+from timeouts import scaled_timeout  # noqa: E402,F401  (the test files' time limits)
 
 
 def pytest_addoption(parser):

@@ -8,12 +8,15 @@ import sys
 
 import pytest
 
+from conftest import scaled_timeout
+
 PYTHON = "/usr/bin/python3"
 LAME = os.path.join("share", "hpcontact", "examples", "lame", "thick-cylinder.yaml")
 
 
 def run(cmd, timeout=300, **kw):
-    r = subprocess.run([str(c) for c in cmd], capture_output=True, text=True, timeout=timeout, **kw)
+    r = subprocess.run([str(c) for c in cmd], capture_output=True, text=True,
+                       timeout=scaled_timeout(timeout), **kw)
     assert r.returncode == 0, f"{' '.join(map(str, cmd))}: exit {r.returncode}\n{r.stdout}\n{r.stderr}"
     return r
 

@@ -1,12 +1,15 @@
 """Fixtures of the Python module's tests: the repository root, the command-line program (for
 comparing with its files) and runs shared by several tests."""
 import os
+import sys
 
 import pytest
 
 import hpcontact
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.append(os.path.join(ROOT, "tests"))
+from timeouts import scaled_timeout  # noqa: E402,F401  (the test files' time limits)
 
 
 @pytest.fixture(scope="session")

@@ -12,6 +12,7 @@ import pytest
 import yaml
 
 import hpcontact
+from conftest import scaled_timeout
 
 # Lamé: a = 10, b = 20 mm, internal pressure 100 N/mm², E = 200000, nu = 0.3, plane strain.
 A_IN, B_OUT, P, E, NU = 10.0, 20.0, 100.0, 200000.0, 0.3
@@ -154,7 +155,7 @@ def test_contact_arrays_equal_contact_csv(hertz_p5, hertz_p5_file, hpcontact_exe
     assert (table["state"] == "contact").sum() == closed.sum() > 0
 
     r = subprocess.run([hpcontact_exe, "run", hertz_p5_file, "--out", str(tmp_path), "-q"],
-                       capture_output=True, text=True, timeout=300)
+                       capture_output=True, text=True, timeout=scaled_timeout(300))
     assert r.returncode == 0, r.stderr
     rows = read_csv(tmp_path / "contact.csv")
     assert list(rows[0]) == list(table)  # same columns, same order
@@ -257,7 +258,7 @@ def test_example_hertz_script(root, tmp_path):
                                                     env.get("PYTHONPATH")) if p)
     r = subprocess.run([sys.executable, os.path.join(root, "examples", "python", "hertz.py"),
                         "--out", str(tmp_path)], capture_output=True, text=True, env=env,
-                       timeout=300)
+                       timeout=scaled_timeout(300))
     assert r.returncode == 0, r.stderr
     png = tmp_path / "hertz-pressure.png"
     assert png.exists() and png.stat().st_size > 10_000
@@ -325,7 +326,8 @@ for problem, cause in ((block, "static condensation"), (overflow, "the solution 
     except hpcontact.SolverError as e:
         print("SolverError:", cause in str(e), str(e))
 """
-    r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120,
+    r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                       timeout=scaled_timeout(120),
                        env=dict(os.environ, PYTHONPATH=os.path.dirname(hpcontact.__file__)))
     assert r.returncode == 0, r.stderr
     lines = r.stdout.splitlines()

@@ -9,11 +9,15 @@ import os
 import shutil
 import socket
 import subprocess
+import sys
 import time
 
 import pytest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.append(os.path.join(ROOT, "tests"))
+from timeouts import scaled_timeout  # noqa: E402  (the time limits, also the test files')
+# Bounds of the waits on a quiet machine (scaled_timeout stretches them on a busy one).
 START_SECONDS = 60     # the node must be idle within this
 STOP_SECONDS = 20      # a daemon must end within this of SIGTERM (then SIGKILL)
 COMMAND_SECONDS = 30   # any one client command
@@ -94,7 +98,7 @@ class Cluster:
 
     def run(self, *args, check=True):
         r = subprocess.run(list(args), env=self.env, capture_output=True, text=True,
-                           timeout=COMMAND_SECONDS)
+                           timeout=scaled_timeout(COMMAND_SECONDS))
         if check and r.returncode != 0:
             raise AssertionError(f"{' '.join(args)}: exit {r.returncode}: {r.stderr}\n{self.logs()}")
         return r
@@ -106,7 +110,8 @@ class Cluster:
                                                   stdin=subprocess.DEVNULL)
 
     def wait_idle(self):
-        deadline = time.monotonic() + START_SECONDS
+        seconds = scaled_timeout(START_SECONDS)
+        deadline = time.monotonic() + seconds
         state = ""
         while time.monotonic() < deadline:
             for name, p in self.daemons.items():
@@ -117,13 +122,13 @@ class Cluster:
             if r.returncode == 0 and state == "idle":
                 return
             time.sleep(0.5)
-        pytest.fail(f"the node is not idle {START_SECONDS} s after the start (sinfo: '{state}'):\n"
+        pytest.fail(f"the node is not idle {seconds:.0f} s after the start (sinfo: '{state}'):\n"
                     f"{self.logs()}")
 
     def cancel_all(self):
         """Cancels every job of the cluster and waits (bounded) for the queue to empty."""
         self.run("scancel", "--full", "--user", pwd.getpwuid(os.getuid()).pw_name, check=False)
-        deadline = time.monotonic() + STOP_SECONDS
+        deadline = time.monotonic() + scaled_timeout(STOP_SECONDS)
         while time.monotonic() < deadline:
             r = self.run("squeue", "-h", "-o", "%i", check=False)
             if r.returncode != 0 or not r.stdout.strip():
@@ -137,10 +142,10 @@ class Cluster:
                 continue
             p.terminate()  # by its process id
             try:
-                p.wait(timeout=STOP_SECONDS)
+                p.wait(timeout=scaled_timeout(STOP_SECONDS))
             except subprocess.TimeoutExpired:
                 p.kill()
-                p.wait(timeout=STOP_SECONDS)
+                p.wait(timeout=scaled_timeout(STOP_SECONDS))
 
 
 def require_slurm():

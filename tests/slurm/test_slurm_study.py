@@ -10,10 +10,12 @@ import time
 
 import pytest
 
+from conftest import scaled_timeout
+
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 P5 = os.path.join(ROOT, "examples", "hertz", "p5.yaml")
 P15 = os.path.join(ROOT, "examples", "hertz", "p15.yaml")
-STUDY_SECONDS = 120
+STUDY_SECONDS = 120  # a study's bound on a quiet machine (scaled_timeout stretches it)
 # Columns that differ between two executions of the same runs: times and paths.
 VARYING = {"wall_time_s", "run_dir", "case"}
 
@@ -36,7 +38,7 @@ columns: [contact.hertz_half_width]
 
 def hpcontact(exe, cluster, *args, timeout=STUDY_SECONDS, env=None):
     return subprocess.run([exe, *map(str, args)], env=env or cluster.env, capture_output=True,
-                          text=True, timeout=timeout)
+                          text=True, timeout=scaled_timeout(timeout))
 
 
 def table(folder):
@@ -80,16 +82,18 @@ def test_slurm_study_gives_the_local_table(exe, cluster, tmp_path):
 
 
 def wait_running(cluster, task, seconds=60):
+    seconds = scaled_timeout(seconds)
     deadline = time.monotonic() + seconds
     while time.monotonic() < deadline:
         r = cluster.run("squeue", "-h", "-r", "-j", task, "-o", "%T", check=False)
         if r.stdout.strip() == "RUNNING":
             return
         time.sleep(0.1)
-    pytest.fail(f"task {task} did not start within {seconds} s:\n{cluster.logs()}")
+    pytest.fail(f"task {task} did not start within {seconds:.0f} s:\n{cluster.logs()}")
 
 
 def wait_submitted(folder, seconds=60):
+    seconds = scaled_timeout(seconds)
     deadline = time.monotonic() + seconds
     while time.monotonic() < deadline:
         path = os.path.join(folder, "slurm", "submission.json")
@@ -98,7 +102,7 @@ def wait_submitted(folder, seconds=60):
             if jobs:
                 return jobs[-1]
         time.sleep(0.1)
-    pytest.fail(f"no job submitted into {folder} within {seconds} s")
+    pytest.fail(f"no job submitted into {folder} within {seconds:.0f} s")
 
 
 def lock_held(path):
@@ -117,9 +121,10 @@ def wait_unlocked(run_dir, seconds=60):
     task CANCELLED when it signals it, and the run it killed may live on for a moment (up to
     KillWait) holding its folder; a run started there meanwhile is refused, as it should be."""
     path = os.path.join(run_dir, ".hpcontact-lock")
+    seconds = scaled_timeout(seconds)
     deadline = time.monotonic() + seconds
     while os.path.exists(path) and lock_held(path):
-        assert time.monotonic() < deadline, f"{path} still locked after {seconds} s"
+        assert time.monotonic() < deadline, f"{path} still locked after {seconds:.0f} s"
         time.sleep(0.2)
 
 
@@ -129,10 +134,11 @@ def wait_locked(run_dir, seconds=60):
     run from the scheduler's view (its script killed while the run was being started), and that
     run then ends, committed, after the task was reported CANCELLED."""
     path = os.path.join(run_dir, ".hpcontact-lock")
+    seconds = scaled_timeout(seconds)
     deadline = time.monotonic() + seconds
     while not (os.path.exists(path) and lock_held(path)):
         if time.monotonic() > deadline:
-            pytest.fail(f"no run held {path} within {seconds} s")
+            pytest.fail(f"no run held {path} within {seconds:.0f} s")
         time.sleep(0.05)
 
 
@@ -155,7 +161,7 @@ runs:
         wait_running(cluster, f"{job}_1")
         wait_locked(str(out / "runs" / "02-slow"))
         cluster.run("scancel", f"{job}_1")
-        stdout, stderr = p.communicate(timeout=STUDY_SECONDS)
+        stdout, stderr = p.communicate(timeout=scaled_timeout(STUDY_SECONDS))
     finally:
         if p.poll() is None:
             p.kill()
