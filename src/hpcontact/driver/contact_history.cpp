@@ -18,8 +18,9 @@ ContactHistoryRow contact_history_row(int step, const model::NonlinearSolution::
   r.pair = k;
   r.body = body;
   r.resultant = result.resultant;
-  r.normal_force = result.resultant.dot(pair.normal());
-  r.tangential_force = result.resultant.dot(pair.tangent);
+  const Vec2 n = pair.force_normal(result.resultant);
+  r.normal_force = result.resultant.dot(n);
+  r.tangential_force = pair.force_direction ? result.resultant.dot(Vec2(n.y(), -n.x())) : 0.0;
   r.contact_length = result.contact_length;
   r.pressure_max = result.pressure_max;
   r.traction_max = result.p_max;

@@ -117,6 +117,10 @@ struct SolvedState {
   }
 };
 
+/// The contact zone's extent along the pair's surface: its ends as frame coordinates (arc
+/// length), the points there (undeformed), and their angles on a circular surface.
+nlohmann::json zone_json(const model::ContactPair& pair, const model::ContactResult& c);
+
 nlohmann::json points_json(const std::vector<Vec2>& points) {
   nlohmann::json j = nlohmann::json::array();
   for (const auto& g : points) j.push_back({g.x(), g.y()});
@@ -194,18 +198,30 @@ nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureCompa
   cj["obstacle"] = pair.other >= 0 ? "body '" + st.d->bodies[pair.other].name + "'"
                                    : pair.obstacle->describe();
   cj["enforcement"] = pair.constraints ? "augmented-lagrangian" : "penalty";
-  cj["half_width"] = c.half_width;
+  cj["surface"] = pair.frame->describe();
+  if (c.half_width) cj["half_width"] = *c.half_width;
   cj["contact_length"] = c.contact_length;
+  if (c.zone) cj["zone"] = zone_json(pair, c);
   cj["gamma_star"] = points_json(c.gamma_star);
   cj["gamma_star_deformed"] = points_json(c.gamma_star_deformed);
+  if (pair.frame->angle(Vec2::Zero())) {
+    nlohmann::json angles = nlohmann::json::array();
+    for (const Vec2& g : c.gamma_star) angles.push_back(*pair.frame->angle(g));
+    cj["gamma_star_angles"] = angles;
+  }
   if (pair.other >= 0) cj["gamma_star_other"] = points_json(c.other_zone_ends.X);
   cj["p_max"] = c.p_max;
   cj["traction_max"] = c.p_max;
   cj["pressure_max"] = c.pressure_max;
   cj["resultant"] = {c.resultant.x(), c.resultant.y()};
-  cj["normal_force"] = c.resultant.dot(pair.normal());
-  cj["tangential_force"] = c.resultant.dot(pair.tangent);
-  cj["tangent"] = {pair.tangent.x(), pair.tangent.y()};  // what tangential_force is along
+  const Vec2 n = pair.force_normal(c.resultant);
+  cj["normal_direction"] = {n.x() + 0.0, n.y() + 0.0};
+  cj["normal_force"] = c.resultant.dot(n);
+  if (pair.force_direction) {
+    const Vec2 t(n.y(), -n.x());
+    cj["tangential_force"] = c.resultant.dot(t);
+    cj["tangent"] = {t.x() + 0.0, t.y() + 0.0};  // what tangential_force is along (+ 0.0: no -0)
+  }
   cj["max_penetration"] = c.max_penetration;
   if (pair.friction.active()) {
     // Stick and slip along the interface: counts, the largest |t_T| / (mu p_N) of each state,
@@ -255,6 +271,12 @@ nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureCompa
   if (comparison)
     cj.update(comparison->measure(*st.d, pair, c, st.u, csv_path, st.multipliers_of(k)));
   return cj;
+}
+
+nlohmann::json zone_json(const model::ContactPair& pair, const model::ContactResult& c) {
+  const auto [lo, hi] = *c.zone;
+  nlohmann::json z = {{"from", lo}, {"to", hi}, {"length", hi - lo}};
+  return z;
 }
 
 /// Every pair's figures (summary.json "contact_pairs").

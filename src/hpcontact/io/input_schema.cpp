@@ -372,6 +372,17 @@ const std::vector<KeySpec>& input_schema() {
               "of the answer; absent: E/(1 - nu²) p²/h at each node (E of the body, p and h of "
               "the node's contact edge).",
        .lower = greater_than(0)},
+      {.path = "contact[].normal_direction", .type = T::point,
+       .doc = "The direction the pair's normal force (summary.json normal_force) is measured "
+              "along, [dx, dy], non-zero (normalised when read): the component of the contact "
+              "resultant on the body along it, positive when the force pushes the body along "
+              "it; tangential_force is the component along it turned clockwise (dy, −dx). Default: "
+              "the normal of the surface the pair is reported along when that is a line (a "
+              "plane obstacle; another body's straight edges; the common tangent of two bodies "
+              "that touch over a zone small against their radii, a cylinder on a cylinder; a "
+              "curve obstacle's tangent at its point); on a circle (a pin in a hole, a shaft in a "
+              "hub: conforming surfaces) the resultant's own direction, normal_force then being "
+              "its magnitude, with no tangential force."},
       {.path = "contact[].quadrature", .type = T::integer, .default_yaml = "50",
        .doc = "Gauss points per contact edge, independent of p (seed: 50).",
        .lower = at_least(1), .upper = at_most(200)},

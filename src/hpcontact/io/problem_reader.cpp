@@ -697,10 +697,45 @@ class SpecBuilder {
                            c.friction.law + " with enforcement: penalty)");
         if (fr["penalty"]) c.friction.penalty = number(fr["penalty"]);
       }
+      if (const YAML::Node nd = node["normal_direction"]) {
+        const auto v = point(nd);
+        const double largest = std::max(std::abs(v[0]), std::abs(v[1]));
+        if (largest == 0)
+          source_.fail(nd, item_path + ".normal_direction",
+                       "must be non-zero (got " + shown_value(nd) + ")");
+        const double length = std::hypot(v[0] / largest, v[1] / largest);
+        c.normal_direction = {v[0] / largest / length, v[1] / largest / length};
+      }
       c.where = source_.where(node, item_path);
       pairs.push_back(std::move(c));
     }
     return pairs;
+  }
+
+  /// Keys with a default that mean nothing for an obstacle of this type, refused when given a
+  /// value other than the default (the effective input lists every default): obstacle.point but
+  /// for a plane or a curve, normal but for a plane, center and inside but for a circle.
+  void refuse_inapplicable(const YAML::Node& node, const std::string& path, ObstacleKind kind,
+                           const std::string& type) {
+    struct Key {
+      const char* name;
+      std::array<double, 2> standard;
+      bool applies;
+    };
+    const Key keys[] = {
+        {"point", {0, 0}, kind == ObstacleKind::plane || kind == ObstacleKind::curve},
+        {"normal", {0, 1}, kind == ObstacleKind::plane},
+        {"center", {0, 0}, kind == ObstacleKind::circle},
+    };
+    for (const Key& k : keys)
+      if (!k.applies && point(node[k.name]) != k.standard)
+        source_.fail(node[k.name], path + "." + k.name,
+                     "does nothing for type: " + type + " (it applies to " +
+                         (std::string(k.name) == "point" ? "plane and curve" : std::string(k.name) == "normal" ? "plane" : "circle") +
+                         " obstacles); leave it out (got " + shown_value(node[k.name]) + ")");
+    if (kind != ObstacleKind::circle && boolean(node["inside"]))
+      source_.fail(node["inside"], path + ".inside",
+                   "does nothing for type: " + type + " (it applies to circle obstacles); leave it out");
   }
 
   ObstacleSpec obstacle(const YAML::Node& node, const std::string& path,
@@ -728,6 +763,7 @@ class SpecBuilder {
     }
     o.point = point(node["point"]);
     o.normal = point(node["normal"]);
+    refuse_inapplicable(node, path, o.kind, type);
     // Normalised; scaled by its largest component first so that huge components cannot overflow.
     const double largest = std::max(std::abs(o.normal[0]), std::abs(o.normal[1]));
     if (largest == 0)

@@ -127,28 +127,47 @@ int Mesh::quad_index(int id) const {
 }
 
 void Mesh::refuse_stacked_elements() const {
-  // Corners on a grid of a round-off of the mesh's size: elements of distinct nodes at the same
-  // points have the same key (the same corners by node number are refused above).
-  const double h = kCornerTolerance * size();
-  std::map<std::array<long long, 8>, int> seen;
+  // Elements of distinct nodes at the same points (the same corners by node number are refused
+  // above): every corner of one within a round-off of its size of a corner of the other. By
+  // centroid along x, each against those whose centroid is as close (the tolerance is relative
+  // to the element, so that the tiny elements of a geometric grading are compared at their
+  // own scale).
+  struct Shape {
+    double cx, diameter;
+    int q;
+  };
+  std::vector<Shape> shapes;
   for (int q = 0; q < n_quads(); ++q) {
-    std::array<std::pair<long long, long long>, 4> corners;
-    for (int k = 0; k < 4; ++k)
-      corners[k] = {std::llround(nodes_[quads_[q][k]].x() / h), std::llround(nodes_[quads_[q][k]].y() / h)};
-    std::sort(corners.begin(), corners.end());
-    std::array<long long, 8> key;
+    Vec2 c = Vec2::Zero();
+    double diameter = 0;
     for (int k = 0; k < 4; ++k) {
-      key[2 * k] = corners[k].first;
-      key[2 * k + 1] = corners[k].second;
+      c += 0.25 * nodes_[quads_[q][k]];
+      for (int m = k + 1; m < 4; ++m)
+        diameter = std::max(diameter, (nodes_[quads_[q][k]] - nodes_[quads_[q][m]]).norm());
     }
-    const auto [it, inserted] = seen.emplace(key, q);
-    HPC_REQUIRE(inserted, MeshError, context_, ": elements ", quad_ids_[it->second], " and ",
-                quad_ids_[q], " lie on one another (their corners are at the same points, nodes ",
-                node_ids_[quads_[it->second][0]], ", ", node_ids_[quads_[it->second][1]], ", ",
-                node_ids_[quads_[it->second][2]], ", ", node_ids_[quads_[it->second][3]], " and ",
-                node_ids_[quads_[q][0]], ", ", node_ids_[quads_[q][1]], ", ", node_ids_[quads_[q][2]],
-                ", ", node_ids_[quads_[q][3]], "): an element given twice, or nodes repeated "
-                "under other numbers");
+    shapes.push_back({c.x(), diameter, q});
+  }
+  std::sort(shapes.begin(), shapes.end(), [](const Shape& a, const Shape& b) { return a.cx < b.cx; });
+  auto same_corners = [&](int a, int b, double tol) {
+    for (int k = 0; k < 4; ++k) {
+      bool found = false;
+      for (int m = 0; m < 4 && !found; ++m)
+        found = (nodes_[quads_[a][k]] - nodes_[quads_[b][m]]).norm() <= tol;
+      if (!found) return false;
+    }
+    return true;
+  };
+  for (size_t i = 0; i < shapes.size(); ++i) {
+    const double tol = kCornerTolerance * shapes[i].diameter;
+    for (size_t j = i + 1; j < shapes.size() && shapes[j].cx - shapes[i].cx <= tol; ++j) {
+      const int a = shapes[i].q, b = shapes[j].q;
+      HPC_REQUIRE(!same_corners(a, b, tol), MeshError, context_, ": elements ", quad_ids_[a], " and ",
+                  quad_ids_[b], " lie on one another (their corners are at the same points, nodes ",
+                  node_ids_[quads_[a][0]], ", ", node_ids_[quads_[a][1]], ", ", node_ids_[quads_[a][2]],
+                  ", ", node_ids_[quads_[a][3]], " and ", node_ids_[quads_[b][0]], ", ",
+                  node_ids_[quads_[b][1]], ", ", node_ids_[quads_[b][2]], ", ", node_ids_[quads_[b][3]],
+                  "): an element given twice, or nodes repeated under other numbers");
+    }
   }
 }
 

@@ -95,6 +95,47 @@ void refuse_repeated_planes(const ProblemSpec& spec, const std::vector<ContactPa
     }
 }
 
+/// A body's contact edges, undeformed, as a surface (contact::surface_of).
+contact::SurfaceFramePtr undeformed_surface(const Body& body, const std::vector<int>& edges,
+                                            const Vec2& origin) {
+  auto boundary = std::make_shared<contact::DeformableBoundary>(body.mesh, body.dofs, body.maps, edges);
+  boundary->set_displacement(Eigen::VectorXd::Zero(body.dofs.n_dofs()));
+  return contact::surface_of(boundary, origin);
+}
+
+/// The common tangent of the linear theory, the line through reference_point along tangent:
+/// where two surfaces touch over a zone small against their radii.
+contact::SurfaceFramePtr common_tangent(const ContactPair& pair) {
+  return contact::line_frame(pair.reference_point, pair.tangent);
+}
+
+/// The frame against a rigid circle: the circle where the body's contact edges are an arc
+/// conforming with it (a pin in a rigid hole), angles from the middle of its contact edges;
+/// otherwise the circle's tangent at the foot of that middle (a block under a roller).
+contact::SurfaceFramePtr circle_frame(const Body& body, const ContactPair& pair, const Vec2& centre,
+                                      double radius, bool inside) {
+  const Vec2 middle = pair.points[pair.points.size() / 2].X;
+  const auto own = undeformed_surface(body, pair.edges, middle)->circle();
+  if (own && contact::conforming(*own, {centre, radius}))
+    return contact::arc_frame(centre, radius, middle, inside);
+  const Vec2 radial = (middle - centre).normalized();
+  const Vec2 foot = centre + radius * radial, n = inside ? Vec2(-radial) : radial;
+  Vec2 t(n.y(), -n.x());
+  if (t.x() < -1e-12 || (std::abs(t.x()) <= 1e-12 && t.y() < 0)) t = -t;
+  return contact::line_frame(foot, t, n);
+}
+
+/// The frame against another body: its undeformed contact boundary where that is a line, or
+/// an arc conforming with the pair's own (a pin in a hole); otherwise the common tangent.
+contact::SurfaceFramePtr body_frame(const Body& body, const Body& other, const ContactPair& pair) {
+  const auto partner = undeformed_surface(other, pair.other_edges, pair.reference_point);
+  if (partner->straight()) return partner;
+  const auto own = undeformed_surface(body, pair.edges, pair.reference_point)->circle();
+  if (const auto theirs = partner->circle(); theirs && own && contact::conforming(*own, *theirs))
+    return partner;
+  return common_tangent(pair);
+}
+
 }  // namespace
 
 std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discretization& d) {
@@ -130,6 +171,8 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       pair.obstacle = std::make_shared<contact::RigidPlane>(p, nrm);
       pair.reference_point = p;
       pair.tangent = Vec2(nrm.y(), -nrm.x()).normalized();
+      pair.frame = contact::line_frame(p, pair.tangent, nrm.normalized());
+      pair.force_direction = nrm.normalized();
     } else if (o.kind == ObstacleKind::curve) {
       std::vector<Vec2> points;
       for (const auto& p : o.points) points.emplace_back(p[0], p[1]);
@@ -141,10 +184,13 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       const auto& spline = curve->spline();
       pair.tangent = spline.derivative(spline.closest_parameter(pair.reference_point)).normalized();
       pair.obstacle = curve;
+      pair.frame = contact::line_frame(pair.reference_point, pair.tangent);
+      pair.force_direction = pair.normal();
     } else if (o.kind == ObstacleKind::circle) {
       pair.obstacle = std::make_shared<contact::RigidCircle>(Vec2(o.center[0], o.center[1]),
                                                              o.radius, o.inside);
       pair.reference_point = Vec2(o.center[0], o.center[1]);
+      pair.frame = circle_frame(body, pair, Vec2(o.center[0], o.center[1]), o.radius, o.inside);
     } else {
       const Body& other = body_named(d, o.body, cs.where, &pair.other);
       HPC_REQUIRE(pair.other != pair.body, InputError, cs.where.str(),
@@ -174,6 +220,8 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
         if (pair.tangent.x() < -1e-12 || (std::abs(pair.tangent.x()) <= 1e-12 && pair.tangent.y() < 0))
           pair.tangent = -pair.tangent;  // the sense of x (of y for a tangent along y)
       }
+      pair.frame = body_frame(body, other, pair);
+      if (pair.frame->straight()) pair.force_direction = pair.frame->normal(pair.reference_point);
     }
     if (exact) {
       pair.constraints = make_pair_constraints(cs, body, chain, pair.points, pair.other >= 0);
@@ -200,6 +248,7 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       pair.moving->set_load_factor(0);
       pair.obstacle = pair.moving;
     }
+    if (cs.normal_direction) pair.force_direction = Vec2((*cs.normal_direction)[0], (*cs.normal_direction)[1]);
     if (pair.friction.active() && !exact) {
       pair.memory = std::make_shared<ContactPair::FrictionMemory>();
       pair.memory->points.resize(pair.points.size());

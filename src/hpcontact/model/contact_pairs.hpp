@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "hpcontact/contact/deformable_boundary.hpp"
 #include "hpcontact/contact/obstacle.hpp"
 #include "hpcontact/contact/penalty.hpp"
+#include "hpcontact/contact/surface_frame.hpp"
 #include "hpcontact/model/contact_multipliers.hpp"
 #include "hpcontact/model/discretization.hpp"
 
@@ -44,16 +46,30 @@ struct ContactPair {
     std::vector<contact::FrictionHistory> points_before, other_points_before;
   };
   std::shared_ptr<FrictionMemory> memory;
-  Vec2 reference_point = Vec2::Zero();  ///< obstacle point positions are measured from
-  /// The direction positions are measured along: a plane's; a curve's tangent at the foot of
-  /// reference_point (the common tangent of the linear theory); x for a circle and another body.
+  /// The surface the pair's results are reported along (contact.csv's s and pressure, the
+  /// zone's ends and extent): a plane, the circle, the other body's undeformed contact boundary
+  /// (a line or a circle where its edges lie on one); a curve obstacle's common tangent.
+  contact::SurfaceFramePtr frame;
+  /// The direction the normal force is measured along (the input's normal_direction, a plane's
+  /// normal, a curve's at `reference_point`); none: the resultant's own.
+  std::optional<Vec2> force_direction;
+  /// The normal force's direction for a resultant R on the body: force_direction, else R's.
+  Vec2 force_normal(const Vec2& resultant) const {
+    if (force_direction) return *force_direction;
+    return resultant.norm() > 0 ? Vec2(resultant.normalized()) : Vec2(0, 1);
+  }
+
+  /// The linear theory's common tangent, what closed forms (compare) measure positions along:
+  /// a line through reference_point along `tangent` (a plane's; a curve's tangent at the foot
+  /// of reference_point; for another body its tangent at the foot of reference_point; x for a
+  /// circle).
+  Vec2 reference_point = Vec2::Zero();
   Vec2 tangent = Vec2(1, 0);
-  /// Coordinate of a point along the obstacle: (X − reference point)·tangent.
+  /// Coordinate of a point along the common tangent: (X − reference point)·tangent.
   double coordinate(const Vec2& X) const { return (X - reference_point).dot(tangent); }
   /// d coordinate / dh of the point X + h dX at h = 0 (dX a direction, e.g. dX/dt of a boundary).
   double coordinate_rate(const Vec2& /*X*/, const Vec2& dX) const { return tangent.dot(dX); }
-  /// The pair's normal direction for resultants: left of `tangent` (a plane's normal; y for
-  /// a circle and another body).
+  /// The common tangent turned left (a plane's normal; y for a circle and another body).
   Vec2 normal() const { return Vec2(-tangent.y(), tangent.x()); }
 };
 

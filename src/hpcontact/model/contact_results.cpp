@@ -88,11 +88,11 @@ std::pair<Vec2, Vec2> zone_end(const Body& body, const contact::Obstacle& obstac
 }
 
 /// What the stresses say at local edge parameter t of element q of a contact boundary, and the
-/// boundary's position and length per unit length along the obstacle.
+/// boundary's position and length per unit length along a surface frame.
 struct SideValues {
   Vec2 X;                     ///< the undeformed point
-  double s = 0;               ///< position along the obstacle (of the undeformed point)
-  double length_ratio = 1;    ///< dS/ds: undeformed boundary length per unit length along the obstacle
+  double s = 0;               ///< position along the frame (of the undeformed point)
+  double length_ratio = 1;    ///< dS/ds: undeformed boundary length per unit length along the frame
   double minus_sigma_nn = 0;  ///< −n·σ·n, n the outward normal (under finite strain the deformed one)
   double pressure_from_stress = 0;  ///< n_o·(P N) dS/ds
   double shear_from_stress = 0;     ///< −τ_o·(P N) dS/ds, τ_o = friction_tangent(n_o)
@@ -107,7 +107,8 @@ struct SideValues {
 /// the traction λ n_o − λ_T τ_o per unit undeformed length from the multipliers (penalty: p_N,
 /// t_T), so the two projections are what the stresses say λ and λ_T are.
 SideValues side_values(const Body& body, const ContactPair& pair, const contact::Obstacle& obstacle,
-                       int q, int le, double t, const Eigen::VectorXd& u) {
+                       const contact::SurfaceFrame& frame, int q, int le, double t,
+                       const Eigen::VectorXd& u) {
   Vec2 N;
   double dS_dt = 0;
   const Vec2 X = fem::edge_geometry(body.maps[q], le, t, &N, &dS_dt);
@@ -119,7 +120,7 @@ SideValues side_values(const Body& body, const ContactPair& pair, const contact:
   sigma << ps.stress(0), ps.stress(2), ps.stress(2), ps.stress(1);
   SideValues v;
   v.X = X;
-  v.s = pair.coordinate(X);
+  v.s = frame.coordinate(X);
   const Vec2 n = body.finite_strain() ? Vec2(ps.F.inverse().transpose() * N).normalized() : N;
   v.minus_sigma_nn = -n.dot(sigma * n);
   const Vec2 PN = body.finite_strain()
@@ -140,7 +141,7 @@ SideValues side_values(const Body& body, const ContactPair& pair, const contact:
   }
   // ds/dS along the boundary's unit tangent; where the boundary runs across the obstacle the
   // ratio is capped (no pressure there).
-  const double ds_dS = std::abs(pair.coordinate_rate(X, Vec2(N.y(), -N.x())));
+  const double ds_dS = std::abs(frame.rate(X, Vec2(N.y(), -N.x())));
   v.length_ratio = 1 / std::max(ds_dS, 1e-12);
   v.pressure_from_stress = n_o.dot(PN) * v.length_ratio;
   v.shear_from_stress = -contact::friction_tangent(n_o).dot(PN) * v.length_ratio;
@@ -180,9 +181,9 @@ std::optional<std::tuple<int, int, double>> node_stress_point(const Body& body, 
 void mark_outer_ends(ZoneEnds& z, const ContactPair& pair, double lo, double hi) {
   int below = -1, above = -1;
   for (int k = 0; k < static_cast<int>(z.X.size()); ++k) {
-    const double c = pair.coordinate(z.X[k]);
-    if (c <= lo && (below < 0 || c > pair.coordinate(z.X[below]))) below = k;
-    if (c >= hi && (above < 0 || c < pair.coordinate(z.X[above]))) above = k;
+    const double c = pair.frame->coordinate(z.X[k]);
+    if (c <= lo && (below < 0 || c > pair.frame->coordinate(z.X[below]))) below = k;
+    if (c >= hi && (above < 0 || c < pair.frame->coordinate(z.X[above]))) above = k;
   }
   if (below >= 0) z.outer.push_back(below);
   if (above >= 0 && above != below) z.outer.push_back(above);
@@ -223,8 +224,8 @@ ZoneEnds zone_ends(const Body& body, const std::vector<contact::ContactPoint>& p
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (size_t i = 0; i < points.size(); ++i)
     if (states[i].gap < 0) {
-      lo = std::min(lo, pair.coordinate(points[i].X));
-      hi = std::max(hi, pair.coordinate(points[i].X));
+      lo = std::min(lo, pair.frame->coordinate(points[i].X));
+      hi = std::max(hi, pair.frame->coordinate(points[i].X));
     }
   mark_outer_ends(z, pair, lo, hi);
   return z;
@@ -283,8 +284,8 @@ ZoneEnds node_zone_ends(const Body& body, const ContactPair& pair,
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const auto& n : nodes)
     if (n.active) {
-      lo = std::min(lo, pair.coordinate(n.X));
-      hi = std::max(hi, pair.coordinate(n.X));
+      lo = std::min(lo, pair.frame->coordinate(n.X));
+      hi = std::max(hi, pair.frame->coordinate(n.X));
     }
   mark_outer_ends(z, pair, lo, hi);
   return z;
@@ -383,6 +384,40 @@ std::vector<int> other_point_edges(const ContactPair& pair) {
   return edges;
 }
 
+/// Zone ends closer than `tol` to one before them are one end (the feet of two edges' ends at a
+/// shared vertex, found from both edges); the outer ends' indices follow.
+void remove_repeated_ends(ZoneEnds& z, double tol) {
+  std::vector<int> index(z.X.size(), -1);
+  ZoneEnds kept;
+  for (size_t k = 0; k < z.X.size(); ++k) {
+    for (size_t j = 0; j < kept.X.size() && index[k] < 0; ++j)
+      if ((kept.X[j] - z.X[k]).norm() <= tol) index[k] = static_cast<int>(j);
+    if (index[k] >= 0) continue;
+    index[k] = static_cast<int>(kept.X.size());
+    kept.X.push_back(z.X[k]);
+    if (k < z.x.size()) kept.x.push_back(z.x[k]);
+  }
+  for (const int o : z.outer)
+    if (std::find(kept.outer.begin(), kept.outer.end(), index[o]) == kept.outer.end())
+      kept.outer.push_back(index[o]);
+  z = std::move(kept);
+}
+
+/// The zone's half width where it means what its name says: along a straight surface, a zone
+/// [lo, hi] (frame coordinates) symmetric about the frame's origin to 1e-3 of its length, or a
+/// half model's zone that starts at the origin where the contact boundary itself ends (the
+/// model's symmetry line). None otherwise: on a curved surface, or an asymmetric zone.
+std::optional<double> half_width(const ContactPair& pair, double lo, double hi,
+                                 const std::vector<double>& s) {
+  if (!pair.frame->straight() || !(hi > lo) || s.empty()) return std::nullopt;
+  const double width = hi - lo, tol = 1e-3 * width;
+  if (std::abs(lo + hi) <= tol) return 0.5 * width;
+  const auto [first, last] = std::minmax_element(s.begin(), s.end());
+  if (std::abs(lo) <= tol && std::abs(*first) <= tol) return hi;    // from the origin up
+  if (std::abs(hi) <= tol && std::abs(*last) <= tol) return -lo;    // from the origin down
+  return std::nullopt;
+}
+
 ContactResult contact_result(const Discretization& d, const ContactPair& pair,
                              const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers,
                              const Eigen::VectorXd* step_slips, const Eigen::VectorXd* total_slips) {
@@ -454,8 +489,9 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       res.states.push_back(ps);
       SideValues sv;
       if (const auto at = node_stress_point(body, pair, j))
-        sv = side_values(body, pair, *pair.obstacle, std::get<0>(*at), std::get<1>(*at), std::get<2>(*at), u);
-      own_side.add(n.X, pair.coordinate(n.X), n.pressure * sv.length_ratio, sv);
+        sv = side_values(body, pair, *pair.obstacle, *pair.frame, std::get<0>(*at), std::get<1>(*at),
+                         std::get<2>(*at), u);
+      own_side.add(n.X, pair.frame->coordinate(n.X), n.pressure * sv.length_ratio, sv);
     }
     if (slips && c.friction.kind == contact::FrictionLaw::Kind::coulomb) {
       res.stick_slip = stick_slip_points(body, pair, res.nodes, u, multipliers->head(c.size()),
@@ -495,9 +531,10 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
           Vec2 N;
           double dS_dt = 0;
           const Vec2 Xb = fem::edge_geometry(body.maps[edge.quads[0]], edge.local_edge[0], foot.t, &N, &dS_dt);
-          ratio = 1 / std::max(std::abs(pair.coordinate_rate(Xb, Vec2(N.y(), -N.x()))), 1e-12);
+          ratio = 1 / std::max(std::abs(pair.frame->rate(Xb, Vec2(N.y(), -N.x()))), 1e-12);
         }
-        const SideValues sv = side_values(other, pair, *pair.boundary, cp.element, cp.local_edge, cp.t, u);
+        const SideValues sv = side_values(other, pair, *pair.boundary, *pair.frame, cp.element,
+                                          cp.local_edge, cp.t, u);
         res.other_states.push_back(ps);
         other_side.add(X, sv.s, ps.pressure * ratio, sv);
       }
@@ -513,7 +550,8 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
     }
     for (size_t i = 0; i < pair.points.size(); ++i) {
       const auto& cp = pair.points[i];
-      const SideValues sv = side_values(body, pair, *pair.obstacle, cp.element, cp.local_edge, cp.t, u);
+      const SideValues sv = side_values(body, pair, *pair.obstacle, *pair.frame, cp.element,
+                                        cp.local_edge, cp.t, u);
       own_side.add(cp.X, sv.s, res.states[i].pressure * sv.length_ratio, sv);
       res.normal_traction_total += cp.weight * res.states[i].pressure;
       res.tangential_traction_total += cp.weight * res.states[i].t_t;
@@ -522,7 +560,8 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
       const Body& other = d.bodies[pair.other];
       for (size_t i = 0; i < pair.other_points.size(); ++i) {
         const auto& cp = pair.other_points[i];
-        const SideValues sv = side_values(other, pair, *pair.boundary, cp.element, cp.local_edge, cp.t, u);
+        const SideValues sv = side_values(other, pair, *pair.boundary, *pair.frame, cp.element,
+                                          cp.local_edge, cp.t, u);
         other_side.add(cp.X, sv.s, res.other_states[i].pressure * sv.length_ratio, sv);
       }
     }
@@ -532,6 +571,7 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
   for (const double p : res.pressure) res.pressure_max = std::max(res.pressure_max, p);
   ZoneEnds own = pair.constraints ? node_zone_ends(body, pair, res.nodes, u, multipliers->head(pair.constraints->size()))
                                   : zone_ends(body, pair.points, res.states, *pair.obstacle, pair, u);
+  remove_repeated_ends(own, 1e-10 * body.mesh.size());
   res.gamma_star = std::move(own.X);
   res.gamma_star_deformed = std::move(own.x);
   res.outer_ends = std::move(own.outer);
@@ -543,9 +583,7 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
     res.other_zone_ends = feet_on_other(pair, res.gamma_star_deformed);
     res.other_zone_ends.outer = res.outer_ends;
   }
-  for (const Vec2& g : res.gamma_star)
-    res.half_width = std::max(res.half_width, std::abs(pair.coordinate(g)));
-  // The extent of the contact zone along the obstacle: its outer ends and the points in contact.
+  // The extent of the contact zone along the surface: its outer ends and the points in contact.
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (size_t i = 0; i < res.states.size(); ++i)
     if (pair.constraints ? res.nodes[i].active : res.states[i].gap < 0) {
@@ -554,10 +592,12 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
     }
   if (hi >= lo) {
     for (const int k : res.outer_ends) {
-      lo = std::min(lo, pair.coordinate(res.gamma_star[k]));
-      hi = std::max(hi, pair.coordinate(res.gamma_star[k]));
+      lo = std::min(lo, pair.frame->coordinate(res.gamma_star[k]));
+      hi = std::max(hi, pair.frame->coordinate(res.gamma_star[k]));
     }
+    res.zone = {lo, hi};
     res.contact_length = hi - lo;
+    res.half_width = half_width(pair, lo, hi, res.s);
   }
   return res;
 }
@@ -582,7 +622,9 @@ std::vector<double> BoundaryPressureProbe::edge_ends() const {
 BoundaryPressureProbe::BoundaryPressureProbe(const Discretization& d, const ContactPair& pair,
                                              const Eigen::VectorXd& u,
                                              const Eigen::VectorXd* multipliers)
-    : d_(d), pair_(pair), u_(u), multipliers_(multipliers), coord_(pair.edges.size()) {
+    : d_(d), pair_(pair), u_(u), multipliers_(multipliers),
+      common_tangent_(contact::line_frame(pair.reference_point, pair.tangent)),
+      coord_(pair.edges.size()) {
   if (pair.other >= 0) {  // the other body's deformed boundary is the obstacle: at this state
     const Body &a = d.bodies[pair.body], &b = d.bodies[pair.other];
     pair.boundary->set_displacement(u.segment(a.dof_offset, a.dofs.n_dofs()));
@@ -640,7 +682,7 @@ std::optional<BoundaryPressure> BoundaryPressureProbe::operator()(double s) cons
       const int q = edge.quads[0], le = edge.local_edge[0];
       BoundaryPressure bp;
       bp.traction = traction(static_cast<int>(k), t);
-      const SideValues sv = side_values(body, pair_, *pair_.obstacle, q, le, t, u_);
+      const SideValues sv = side_values(body, pair_, *pair_.obstacle, *common_tangent_, q, le, t, u_);
       bp.X = sv.X;
       bp.pressure = bp.traction * sv.length_ratio;
       bp.pressure_from_stress = sv.pressure_from_stress;

@@ -50,8 +50,9 @@ struct ContactResult {
   /// undeformed boundary length) and penetration.
   double p_max = 0, max_penetration = 0;
   double pressure_max = 0;  ///< the largest `pressure` (force per unit length along the obstacle)
-  /// The extent of the contact zone along the obstacle: from its first to its last end (a zone
-  /// end, or the last point in contact where the contact boundary ends in contact).
+  /// The extent of the contact zone along the surface (arc length along the frame): from its
+  /// first to its last end (a zone end, or the last point in contact where the contact boundary
+  /// ends in contact).
   double contact_length = 0;
   /// Ends of the contact zone (Pegasus on the gap, seed §4.7) on the undeformed boundary: the
   /// points a node is moved to (rp) and where the closed forms of the linear theory put them.
@@ -62,8 +63,12 @@ struct ContactResult {
   /// nodes to. Sign changes between them are islands of opening inside the contact zone, which
   /// the penalty traction's oscillation produces on coarse discretisations.
   std::vector<int> outer_ends;
-  /// Largest |coordinate(Γ*)|, Γ* undeformed (along the obstacle: ContactPair::coordinate).
-  double half_width = 0;
+  /// The zone's extent [lo, hi] along the pair's surface frame (ContactPair::frame: arc length
+  /// from its origin, undeformed points), if any point is in contact.
+  std::optional<std::pair<double, double>> zone;
+  /// Half the zone's length where that is its half width: a straight surface and a zone
+  /// symmetric about the frame's origin (or a half model's, starting at it); none otherwise.
+  std::optional<double> half_width;
   /// Against another body: the states of its points and the zone ends on its boundary. Under
   /// exact enforcement the other body's points carry the multiplier at their feet on this body.
   std::vector<contact::PointState> other_states;
@@ -144,6 +149,7 @@ private:
   const ContactPair& pair_;
   const Eigen::VectorXd& u_;
   const Eigen::VectorXd* multipliers_;
+  contact::SurfaceFramePtr common_tangent_;  ///< the line of the pair's common tangent
   std::vector<std::array<double, kSamples + 1>> coord_;  ///< per edge, at t = -1 + 2i/kSamples
   std::vector<std::pair<double, double>> range_;        ///< per edge, the least and largest of them
   double coordinate(int edge_index, double t) const;

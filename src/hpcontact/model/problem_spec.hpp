@@ -241,6 +241,9 @@ struct ContactPairSpec {
   int quadrature = 50;  ///< Gauss points per contact edge, independent of p (seed: 50)
   std::optional<PressureCompareSpec> compare;
   FrictionSpec friction;
+  /// The direction the pair's normal force is measured along (unit; the force on the body,
+  /// positive along it); none: a plane's normal, else the resultant's direction.
+  std::optional<std::array<double, 2>> normal_direction;
   SourceRef where;
 };
 

@@ -112,8 +112,9 @@ Vec2 body_frame(const Vec2& x, double angle) {
 
 // The zone ends of a state shall be the roots x₁, x₂ of its gap on the undeformed boundary (to
 // the root finder's tolerance on the gap, 1e-14 (1 + |x|): 2e-11 in position here), moved by the
-// displacement there on the deformed one; both are the outer ends, the half width is the larger
-// coordinate; a root on the node between two edges (x₁ = 1) is found as well. The pressure from
+// displacement there on the deformed one; both are the outer ends, and the zone's extent along
+// the plane runs between them (no half width: the zone is not symmetric about the plane's
+// point); a root on the node between two edges (x₁ = 1) is found as well. The pressure from
 // the stresses at each contact point shall be −E' b X, the closed form, and the penalty pressure
 // ε_N ⟨−g⟩. On the block as given and turned by 0.4 rad (where −n·σ·n takes all three stresses).
 TEST(ContactResult, ZoneEndsAndStressPressureOfAKnownField) {
@@ -139,7 +140,12 @@ TEST(ContactResult, ZoneEndsAndStressPressureOfAKnownField) {
         EXPECT_NEAR(x.x(), X.x() + f.ux_bottom(X.x()), 1e-14) << "root " << roots[k];
         EXPECT_NEAR(x.y(), f.gap(X.x()), 1e-14);
       }
-      EXPECT_NEAR(r.half_width, body_frame(r.gamma_star[1], angle).x(), 1e-14);
+      EXPECT_FALSE(r.half_width) << "an asymmetric zone has no half width";
+      ASSERT_TRUE(r.zone);
+      const double a = body_frame(r.gamma_star[0], angle).x(), b = body_frame(r.gamma_star[1], angle).x();
+      EXPECT_NEAR(r.zone->first, std::min(a, b), 1e-14);
+      EXPECT_NEAR(r.zone->second, std::max(a, b), 1e-14);
+      EXPECT_NEAR(r.contact_length, std::abs(b - a), 1e-14);
       const auto& points = pairs.front().points;
       ASSERT_EQ(r.minus_sigma_nn.size(), points.size());
       ASSERT_EQ(r.pressure.size(), points.size());
