@@ -551,6 +551,16 @@ MUTATIONS = [
              "(void)X;",
              "the other body's stick–slip points left out of what rp and hp adapt to",
              ["cli:tests/cli/test_stick_slip_rp.py::test_rp_moves_a_node_of_each_bar_onto_the_stick_slip_point"]),
+    Mutation("stick-slip-cone-loose", "contact", S + "contact/friction.cpp",
+             "const bool on_cone = std::abs(t_t) >= (1 - 1e-9) * law.mu * p_n;",
+             "const bool on_cone = std::abs(t_t) >= (1 - 1e-3) * law.mu * p_n;",
+             "a point within 1e-3 of Coulomb's cone counted as slipping (the test's tolerance a thousandth)",
+             ["StickOrSlip.CoulombsConeToARelative1em9", "ReturnMap.ClassifiesItsTrialByTheCone"]),
+    Mutation("stick-slip-cone-signed", "contact", S + "contact/friction.cpp",
+             "const bool on_cone = std::abs(t_t) >= (1 - 1e-9) * law.mu * p_n;",
+             "const bool on_cone = t_t >= (1 - 1e-9) * law.mu * p_n;",
+             "a point on Coulomb's cone with a negative traction counted as sticking",
+             ["StickOrSlip.CoulombsConeToARelative1em9", "ReturnMap.ClassifiesItsTrialByTheCone"]),
 ]
 
 
