@@ -561,6 +561,18 @@ MUTATIONS = [
              "const bool on_cone = t_t >= (1 - 1e-9) * law.mu * p_n;",
              "a point on Coulomb's cone with a negative traction counted as sticking",
              ["StickOrSlip.CoulombsConeToARelative1em9", "ReturnMap.ClassifiesItsTrialByTheCone"]),
+    Mutation("hoop-cauchy-one-stretch", "material", S + "material/hyperelastic_hoop.cpp",
+             "if (hoop) *hoop = F_hoop * F_hoop * state.S(3) / state.J;",
+             "if (hoop) *hoop = F_hoop * state.S(3) / state.J;",
+             "the axisymmetric finite-strain hoop stress σ_θθ = F_θθ S_θθ / J, a factor F_θθ lost",
+             ["HoopHyperelastic.DiagonalStretchClosedForms",
+              "AxisymmetricFiniteStrain.UniformRadialExpansionIsHomogeneous"]),
+    Mutation("hoop-row-without-stretch", "fem", S + "fem/axisymmetric_finite_strain.cpp",
+             "B.block(4 * k + 3, 0, 1, n) = (F_hoop(k) * inv_R(k)) * ev.N.col(k).transpose();",
+             "B.block(4 * k + 3, 0, 1, n) = inv_R(k) * ev.N.col(k).transpose();",
+             "the axisymmetric finite-strain element's hoop row δE_θθ = N_a / R δu_r, the factor F_θθ lost",
+             ["AxisymmetricFiniteStrain.UniformRadialExpansionIsHomogeneous",
+              "AxisymmetricFiniteStrainElement.TangentAndForceAgreeWithFiniteDifferences"]),
 ]
 
 
