@@ -573,6 +573,11 @@ MUTATIONS = [
              "the axisymmetric finite-strain element's hoop row δE_θθ = N_a / R δu_r, the factor F_θθ lost",
              ["AxisymmetricFiniteStrain.UniformRadialExpansionIsHomogeneous",
               "AxisymmetricFiniteStrainElement.TangentAndForceAgreeWithFiniteDifferences"]),
+    Mutation("estimate-quadrature-short", "adapt", S + "adapt/error_estimate.cpp",
+             "const auto& rule = basis::gauss_legendre(p + 3);",
+             "const auto& rule = basis::gauss_legendre(p);",
+             "the estimate's traction integrals one Gauss point short of exact (p points for (t − t⁺)² of degree 2p)",
+             ["ErrorEstimate.TractionIntegralsAreExact"]),
 ]
 
 
