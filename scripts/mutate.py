@@ -578,6 +578,21 @@ MUTATIONS = [
              "const auto& rule = basis::gauss_legendre(p);",
              "the estimate's traction integrals one Gauss point short of exact (p points for (t − t⁺)² of degree 2p)",
              ["ErrorEstimate.TractionIntegralsAreExact"]),
+    Mutation("reference-force-never-refused", "driver", S + "driver/contact_compare.cpp",
+             "HPC_REQUIRE(std::abs(2 * carried - force) <= 1e-2 * force, InputError",
+             "HPC_REQUIRE(std::abs(2 * carried - force) <= 1e2 * force, InputError",
+             "compare.reference of another load accepted (its force checked to 100 times, not 1 %)",
+             ["cli:tests/cli/test_compare_reference.py::test_a_reference_of_another_load_is_refused[above-plane]",
+              "cli:tests/cli/test_compare_reference.py::test_a_reference_of_another_load_is_refused[below-plane]",
+              "cli:tests/cli/test_compare_reference.py::test_a_reference_of_another_load_is_refused[above-axisymmetric]",
+              "cli:tests/cli/test_compare_reference.py::test_a_reference_of_another_load_is_refused[below-axisymmetric]"]),
+    Mutation("reference-ring-weight-doubled", "driver", S + "driver/contact_compare.cpp",
+             "const double wb = in_.axisymmetric ? std::numbers::pi * x[i + 1] : 1.0;",
+             "const double wb = in_.axisymmetric ? 2 * std::numbers::pi * x[i + 1] : 1.0;",
+             "the force an axisymmetric compare.reference carries with a ring weight 2 pi r at one end of each piece",
+             ["cli:tests/cli/test_compare_reference.py::test_a_reference_of_the_runs_load_is_compared[axisymmetric]",
+              "cli:tests/cli/test_compare_reference.py::test_a_reference_of_another_load_is_refused[above-axisymmetric]",
+              "cli:tests/cli/test_compare_reference.py::test_a_reference_of_another_load_is_refused[below-axisymmetric]"]),
 ]
 
 
