@@ -593,6 +593,17 @@ MUTATIONS = [
              ["cli:tests/cli/test_compare_reference.py::test_a_reference_of_the_runs_load_is_compared[axisymmetric]",
               "cli:tests/cli/test_compare_reference.py::test_a_reference_of_another_load_is_refused[above-axisymmetric]",
               "cli:tests/cli/test_compare_reference.py::test_a_reference_of_another_load_is_refused[below-axisymmetric]"]),
+    Mutation("facing-degrees-one-sweep", "adapt", S + "adapt/facing_degrees.cpp",
+             "        changed = true;",
+             "        changed = false;",
+             "facing contact edges matched in one sweep: an element facing two of different degrees leaves the first at the smaller",
+             ["FacingDegrees.AnElementFacingTwoTakesTheLargestAndSoDoBoth"]),
+    Mutation("hp-min-degree-ignored", "adapt", S + "adapt/hp.cpp",
+             "  o.min_degree = adapt.min_degree;",
+             "  o.min_degree = 1;",
+             "hp's degrees start from 1 at the refinement centres whatever adapt.min_degree says",
+             ["HpMesh.EveryStepKeepsTheMinimumDegreeAndEqualFacingDegrees",
+              "cli:tests/cli/test_two_bars.py::test_coulomb_hp_traction_without_oscillation"]),
 ]
 
 
