@@ -1,7 +1,10 @@
 """Fixtures of the command-line tests: the path of the built hpcontact program, and the
-scripts/ modules loaded for tests of their functions."""
+scripts/ modules loaded for tests of their functions; helpers shared by them (a refused run,
+a CSV's rows, hp's rules of degrees on a run's output)."""
 import csv
 import importlib.util
+import json
+import math
 import os
 import subprocess
 import sys
@@ -81,3 +84,82 @@ def load_script(name):
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
+
+
+def _element_degrees(inp, mesh, body):
+    """Every element's degree (the larger of p_xi, p_eta) of one body of mesh.yaml, those without
+    an entry of degrees at the body's or discretization's degree of input.yaml."""
+    def larger(p):
+        return max(p) if isinstance(p, list) else p
+    spec = next(b for b in inp["bodies"] if b["name"] == body)
+    default = larger(spec.get("degree", inp["discretization"]["degree"]))
+    given = mesh[body].get("degrees", {})
+    return {e: larger(given[e]) if e in given else default for e in mesh[body]["elements"]}
+
+
+def _facing(e, f):
+    """Whether the contact edge f faces e (each ((x0, y0), (x1, y1))): the part of f whose
+    projection falls on e covers more than half of the shorter edge, and f's midpoint lies within
+    half the shorter length of e's line (adapt/facing_degrees.hpp)."""
+    (ax, ay), (bx, by) = e
+    (cx, cy), (dx, dy) = f
+    le, lf = math.hypot(bx - ax, by - ay), math.hypot(dx - cx, dy - cy)
+    tx, ty = (bx - ax) / le, (by - ay) / le
+    s0, s1 = tx * (cx - ax) + ty * (cy - ay), tx * (dx - ax) + ty * (dy - ay)
+    overlap = min(le, max(s0, s1)) - max(0.0, min(s0, s1))
+    shorter = min(le, lf)
+    mx, my = 0.5 * (cx + dx) - ax, 0.5 * (cy + dy) - ay
+    return overlap > 0.5 * shorter and abs(tx * my - ty * mx) < 0.5 * shorter
+
+
+def _contact_edges(mesh, body, sets, degrees):
+    """The edges of the named edge sets of one body of mesh.yaml: (its end points, its element's
+    degree)."""
+    b = mesh[body]
+    out = []
+    for name in sets:
+        for n0, n1 in b["edge_sets"][name]:
+            element = next(e for e, nodes in b["elements"].items() if n0 in nodes and n1 in nodes)
+            out.append(((tuple(b["nodes"][n0]), tuple(b["nodes"][n1])), degrees[element]))
+    return out
+
+
+def assert_hp_degree_rules(out):
+    """hp's rules of degrees on the run in the folder `out` (summary.json, input.yaml, mesh.yaml):
+    with degrees set by hp (rising or goal), no element below adapt.min_degree at any recorded
+    step after the input's (each step's degree_range) nor on the result's mesh, and on that mesh
+    the facing contact edges of two bodies under an exactly enforced pair with friction of equal
+    degree (the larger of the two, adapt/facing_degrees.hpp; every step's mesh:
+    HpMesh.EveryStepKeepsTheMinimumDegreeAndEqualFacingDegrees). Returns how many facing
+    couples there were."""
+    import yaml  # Debian's python3-yaml, as the tests that read mesh.yaml
+    with open(os.path.join(out, "summary.json")) as f:
+        a = json.load(f)["adapt"]
+    assert a["method"] == "hp", a["method"]
+    if a["degree"] == "constant":
+        return 0
+    low = a["min_degree"]
+    for h in a["history"][1:]:  # step 0 is the input's mesh, with the input's degrees
+        assert h["degree_range"][0] >= low, (h["step"], h["degree_range"], low)
+    with open(os.path.join(out, "input.yaml")) as f:
+        inp = yaml.safe_load(f)
+    with open(os.path.join(out, "mesh.yaml")) as f:
+        mesh = yaml.safe_load(f)
+    degrees = {b: _element_degrees(inp, mesh, b) for b in mesh}
+    for b, d in degrees.items():
+        if a["result_step"] > 0:
+            assert min(d.values()) >= low, (b, sorted(d.items(), key=lambda kv: kv[1])[:3], low)
+    couples = 0
+    for pair in inp.get("contact", []):
+        obstacle = pair["obstacle"]
+        if (obstacle["type"] != "body" or pair.get("friction", {}).get("law", "none") == "none"
+                or pair["enforcement"] != "augmented-lagrangian"):
+            continue
+        ours = _contact_edges(mesh, pair["body"], pair["edges"], degrees[pair["body"]])
+        theirs = _contact_edges(mesh, obstacle["body"], obstacle["edges"], degrees[obstacle["body"]])
+        for e, p in ours:
+            for f, q in theirs:
+                if _facing(e, f) or _facing(f, e):
+                    couples += 1
+                    assert p == q, (pair["body"], e, p, obstacle["body"], f, q)
+    return couples

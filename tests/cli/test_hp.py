@@ -8,6 +8,8 @@ import os
 import numpy as np
 import pytest
 
+from conftest import assert_hp_degree_rules
+
 HERTZ = "examples/hertz"
 
 
@@ -16,6 +18,7 @@ def runs(hpcontact, root, tmp_path_factory):
     out = tmp_path_factory.mktemp("hp")
     r = hpcontact("run", os.path.join(root, HERTZ, "hp.yaml"), "--out", out / "hp", "-q")
     assert r.returncode == 0, r.stderr
+    assert_hp_degree_rules(out / "hp")
     r = hpcontact("run", os.path.join(root, HERTZ, "reference.yaml"), "--out", out / "ref", "-q",
                   "--set", "output.vtu=false")
     assert r.returncode == 0, r.stderr

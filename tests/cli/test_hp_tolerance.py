@@ -9,15 +9,20 @@ import os
 import pytest
 import yaml
 
+from conftest import assert_hp_degree_rules
+
 HERTZ = "examples/hertz"
 
 
 def run(hpcontact, root, out, *sets, name="hp-tolerance.yaml", ok=True):
+    """The run; one that succeeds also has hp's degrees by their rules (assert_hp_degree_rules)."""
     args = ["run", os.path.join(root, HERTZ, name), "--out", out, "-q"]
     for s in sets:
         args += ["--set", s]
     r = hpcontact(*args)
     assert (r.returncode == 0) == ok, r.stderr
+    if ok:
+        assert_hp_degree_rules(out)
     return r
 
 
@@ -213,6 +218,7 @@ def test_two_bodies_from_gmsh_meshes_reach_the_tolerance(hpcontact, root, tmp_pa
     r = hpcontact("run", os.path.join(root, "examples/roller-block/roller-block-gmsh.yaml"),
                   "--out", out, "-q")
     assert r.returncode == 0, r.stderr
+    assert_hp_degree_rules(out)
     s = summary(out)
     a, c = s["adapt"], s["contact"]
     assert a["stopped"] == "tolerance reached" and a["estimated_error"]["pressure_rel_L2"] <= 1e-3

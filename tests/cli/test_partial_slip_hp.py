@@ -15,7 +15,7 @@ import re
 import pytest
 import yaml
 
-from conftest import csv_rows, load_script, partial_slip_generator
+from conftest import assert_hp_degree_rules, csv_rows, load_script, partial_slip_generator
 
 compare = load_script("partial_slip_compare")
 CASE = os.path.join("examples", "partial-slip", "hp-tolerance.yaml")
@@ -28,6 +28,7 @@ def run(hpcontact, root, tmp_path_factory):
     r = hpcontact("run", os.path.join(root, CASE), "--out", out, "-q",
                   "--set", f"adapt.tolerance={TOLERANCE}")
     assert r.returncode == 0, r.stderr
+    assert_hp_degree_rules(out)
     return out, json.load(open(out / "summary.json"))
 
 
@@ -72,6 +73,7 @@ def finer(hpcontact, root, tmp_path_factory):
     out = tmp_path_factory.mktemp("partial-slip-hp-finer")
     r = hpcontact("run", os.path.join(root, CASE), "--out", out, "-q", "--set", "adapt.tolerance=3e-3")
     assert r.returncode == 0, r.stderr
+    assert_hp_degree_rules(out)
     return out
 
 
@@ -125,6 +127,7 @@ def test_under_force_control_every_step_has_goal_oriented_weights(hpcontact, roo
     r = hpcontact("run", os.path.join(root, CASE), "--out", out, "-q",
                   "--set", "solver.target_resultant={value: 7}", "--set", f"adapt.tolerance={TOLERANCE}")
     assert r.returncode == 0, r.stderr
+    assert_hp_degree_rules(out)
     a = json.load(open(out / "summary.json"))["adapt"]
     assert a["converged"]
     learnt = [h["degrees"] for h in a["history"] if "degrees" in h]
@@ -157,6 +160,7 @@ def test_pressed_only_the_tolerance_holds_the_pressure(hpcontact, root, tmp_path
                   "--set", "solver.stages=[{displacements: 1, loads: 0, steps: 1}]",
                   "--set", f"adapt.tolerance={tolerance}")
     assert r.returncode == 0, r.stderr
+    assert_hp_degree_rules(out)
     a = json.load(open(out / "summary.json"))["adapt"]
     assert a["converged"] and a["stopped"] == "tolerance reached"
     assert larger(a["estimated_error"]) <= tolerance

@@ -11,7 +11,7 @@ import sys
 
 import numpy as np
 import pytest
-from conftest import load_script, scaled_timeout
+from conftest import assert_hp_degree_rules, load_script, scaled_timeout
 
 SUBDIVISIONS = 32
 
@@ -170,6 +170,7 @@ def test_coulomb_hp_traction_without_oscillation(hpcontact, root, tmp_path):
     r = hpcontact("run", os.path.join(root, "examples/two-bars/coulomb-hp.yaml"),
                   "--out", tmp_path, "-q")
     assert r.returncode == 0, r.stderr
+    assert assert_hp_degree_rules(tmp_path) >= 10  # the bars' contact edges face each other
     s = json.load(open(tmp_path / "summary.json"))
     friction = s["contact"]["friction"]
     # the upper bar got refined: its slip zone has many nodes (one node on the unrefined bar)
@@ -200,6 +201,7 @@ def test_coulomb_hp_step_that_loses_the_point_goes_on(hpcontact, root, tmp_path)
     r = hpcontact("run", os.path.join(root, "examples/two-bars/coulomb-hp.yaml"),
                   "--out", tmp_path, "-q", "--set", "adapt.min_degree=1")
     assert r.returncode == 0, r.stderr
+    assert_hp_degree_rules(tmp_path)
     s = json.load(open(tmp_path / "summary.json"))
     history = s["adapt"]["history"]
     assert s["adapt"]["stopped"] == "steps done" and len(history) == 5

@@ -1,7 +1,8 @@
 // Finite strain in axisymmetry (material.plane: axisymmetric with a hyperelastic model): a solid
-// cylinder stretched axially with a free lateral surface is a homogeneous state, reproduced to
-// round-off on straight and curved elements touching the axis; and at a tiny load the thick
-// sphere is the linear axisymmetric one.
+// cylinder stretched axially with a free lateral surface, and one expanded radially (a hoop
+// stress equal to the radial one), are homogeneous states, reproduced to round-off on straight
+// and curved elements touching the axis; and at a tiny load the thick sphere is the linear
+// axisymmetric one.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -109,6 +110,45 @@ double top_force(const model::Discretization& d, const Eigen::VectorXd& u) {
   return force;
 }
 
+/// The force on the lateral surface R = 2 along r: the work of the internal forces on the
+/// virtual field δu_r = 1 on that side (its vertex modes 1, every other mode 0), as top_force.
+double lateral_force(const model::Discretization& d, const Eigen::VectorXd& u) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(d.n_dofs);
+  model::FiniteStrainForces(d).add(u, f, nullptr, nullptr);
+  const auto& body = d.bodies[0];
+  double force = 0;
+  for (int v = 0; v < body.mesh.n_nodes(); ++v)
+    if (std::abs(body.mesh.node(v).x() - 2) < 1e-12) force += f(body.dof_offset + 2 * body.dofs.vertex_mode(v));
+  return force;
+}
+
+/// The homogeneous state F = diag(1 + ε, 1, 1 + ε) (r, z, θ) of a uniform radial expansion
+/// u_r = ε R with u_z = 0, from the laws' closed forms (not the library's), λ = 1 + ε, J = λ²:
+///  - St. Venant–Kirchhoff: E_rr = E_θθ = e = (λ² − 1)/2, E_zz = 0; S_rr = S_θθ = 2Λ e + 2μ e,
+///    S_zz = 2Λ e, W = 2Λ e² + 2μ e².
+///  - Neo-Hooke: S_rr = S_θθ = μ (1 − λ⁻²) + Λ ln J λ⁻², S_zz = Λ ln J,
+///    W = μ (2λ² + 1 − 3)/2 − μ ln J + Λ (ln J)²/2.
+/// σ_rr = σ_θθ = λ² S_rr / J, σ_zz = S_zz / J.
+struct RadialExpansion {
+  double S_rr = 0, S_zz = 0, W = 0;
+};
+RadialExpansion radial_expansion(const std::string& law, double E, double nu, double eps) {
+  const double mu = E / (2 * (1 + nu)), L = E * nu / ((1 + nu) * (1 - 2 * nu));
+  const double lambda = 1 + eps, lnJ = 2 * std::log(lambda);
+  RadialExpansion s;
+  if (law == "saint-venant-kirchhoff") {
+    const double e = (lambda * lambda - 1) / 2;
+    s.S_rr = 2 * L * e + 2 * mu * e;
+    s.S_zz = 2 * L * e;
+    s.W = 2 * L * e * e + 2 * mu * e * e;
+    return s;
+  }
+  s.S_rr = mu * (1 - 1 / (lambda * lambda)) + L * lnJ / (lambda * lambda);
+  s.S_zz = L * lnJ;
+  s.W = 0.5 * mu * (2 * lambda * lambda - 2) - mu * lnJ + 0.5 * L * lnJ * lnJ;
+  return s;
+}
+
 std::vector<std::array<double, 2>> sample_points() {
   return {{-0.9, -0.7}, {0.0, 0.0}, {0.3, -0.5}, {0.77, 0.61}, {-1.0, -1.0}, {-1.0, 0.4}, {1.0, 1.0}};
 }
@@ -149,6 +189,52 @@ TEST(AxisymmetricFiniteStrain, StretchedCylinderIsHomogeneous) {
         EXPECT_LT(stress_error, curved ? 1e-9 : 1e-10) << what;
         const double force = kPi * a * a * lambda * exact.S_zz;
         EXPECT_NEAR(top_force(d, sol.u), force, 1e-10 * force) << what;
+        const double U = exact.W * kPi * a * a * h;
+        EXPECT_NEAR(post::strain_energy(d, sol.u), U, 1e-10 * U) << what;
+      }
+}
+
+// The cylinder of StretchedCylinderIsHomogeneous expanded radially instead: u_r = ε R on the
+// lateral surface R = 2 (ε = 0.1), u_z = 0 on both ends, free to slide radially, u_r = 0 on the
+// axis: the homogeneous state F = diag(1.1, 1, 1.1), whose hoop stress equals the radial one
+// (equilibrium of a homogeneous ring needs σ_θθ = σ_rr). At every sample point u = (ε R, 0) to
+// 1e-10 of |u|max, σ_rr = σ_θθ and σ_zz the closed forms and σ_rz = 0 to 1e-10 of σ_rr (1e-9 on
+// the parabolic edges); the radial force on the lateral surface 2π a h λ S_rr and the energy
+// W π a² h to 1e-10 relative. The element's hoop row (δE_θθ = F_θθ N_a / R δu_r) carries a hoop
+// stress here, which the stretched cylinder's S_θθ = 0 does not. Straight elements p = 1…6,
+// parabolic edges p = 2…6; both laws.
+TEST(AxisymmetricFiniteStrain, UniformRadialExpansionIsHomogeneous) {
+  const double eps = 0.1, a = 2, h = 2;
+  for (bool curved : {false, true})
+    for (const char* law : kLaws)
+      for (int p = curved ? 2 : 1; p <= 6; ++p) {
+        auto spec = stretched_cylinder(p, law, 1.0, curved);  // the ends held at u_z = 0
+        model::ConstraintSpec lateral;
+        lateral.edge_sets = {"right"};
+        lateral.ux = std::to_string(eps * a);
+        spec.bodies[0].constraints.push_back(lateral);
+        const auto d = model::discretize(spec);
+        const auto sol = model::solve_contact(spec, d);
+        ASSERT_TRUE(sol.converged) << sol.message;
+        const auto& body = d.bodies[0];
+        const auto exact = radial_expansion(law, body.material.youngs_modulus, body.material.poisson_ratio, eps);
+        const double lambda = 1 + eps, J = lambda * lambda;
+        const double sigma_rr = lambda * lambda * exact.S_rr / J, sigma_zz = exact.S_zz / J;
+        const std::string what = std::string(law) + (curved ? " curved" : " straight") + " p " +
+                                 std::to_string(p);
+        double u_error = 0, stress_error = 0;
+        for (int q = 0; q < body.mesh.n_quads(); ++q)
+          for (auto [xi, eta] : sample_points()) {
+            const auto r = post::evaluate(body, q, xi, eta, sol.u);
+            u_error = std::max(u_error, (r.u - Vec2(eps * r.x.x(), 0)).norm() / (eps * a));
+            const Eigen::Vector4d s(r.stress(0) - sigma_rr, r.stress(1) - sigma_zz, r.stress(2),
+                                    r.stress_zz - sigma_rr);
+            stress_error = std::max(stress_error, s.norm() / sigma_rr);
+          }
+        EXPECT_LT(u_error, 1e-10) << what;
+        EXPECT_LT(stress_error, curved ? 1e-9 : 1e-10) << what;
+        const double force = 2 * kPi * a * h * lambda * exact.S_rr;
+        EXPECT_NEAR(lateral_force(d, sol.u), force, 1e-10 * force) << what;
         const double U = exact.W * kPi * a * a * h;
         EXPECT_NEAR(post::strain_energy(d, sol.u), U, 1e-10 * U) << what;
       }

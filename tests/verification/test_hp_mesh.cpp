@@ -6,6 +6,7 @@
 #include <random>
 #include <string>
 
+#include "hpcontact/adapt/facing_degrees.hpp"
 #include "hpcontact/adapt/geometric_refinement.hpp"
 #include "hpcontact/adapt/hp.hpp"
 #include "hpcontact/core/error.hpp"
@@ -129,4 +130,53 @@ TEST(HpMesh, AdaptiveDegreesRiseByOnePerLayer) {
     deepest = std::max(deepest, layer);
   }
   EXPECT_GE(deepest, 3);
+}
+
+namespace {
+
+/// The degree (the larger of p_xi, p_eta) of the element with user id `id` of body b.
+int element_degree(const model::ProblemSpec& spec, size_t b, int id) {
+  const auto& body = spec.bodies[b];
+  const auto it = body.element_degrees.find(id);
+  const auto p = it != body.element_degrees.end() ? it->second : body.degree.value_or(spec.discretization.degree);
+  return std::max(p[0], p[1]);
+}
+
+}  // namespace
+
+// hp's rules of degrees hold on the mesh of every step it builds, not only on the last: with
+// goal-oriented degrees (a tolerance), whose corrections lower degrees but never below it, no
+// element lies below adapt.min_degree, and the facing contact edges of the two bars, an exactly
+// enforced pair with Coulomb friction, have equal degrees (matching them again changes none).
+// examples/two-bars/coulomb-hp.yaml (min_degree 3) to a tolerance of 1e-2, two steps at most;
+// step 0 is the input's mesh and degrees.
+TEST(HpMesh, EveryStepKeepsTheMinimumDegreeAndEqualFacingDegrees) {
+  const auto spec = io::read_problem(std::string(HPC_SOURCE_DIR) + "/examples/two-bars/coulomb-hp.yaml",
+                                     {"adapt.tolerance=1e-2", "adapt.steps=2", "output.vtu=false"});
+  const int low = spec.adapt.min_degree;
+  ASSERT_GE(low, 2);
+  const adapt::HpOptions o = adapt::hp_options(spec.adapt);
+  ASSERT_EQ(o.degree, model::HpDegree::goal);
+  int steps = 0, lowered = 0;
+  adapt::refine_towards_zone_ends(spec, o, {}, [&](const adapt::HpIteration& it, const adapt::Solved& s) {
+    lowered += it.degrees_lowered;
+    if (it.step == 0) return;
+    ++steps;
+    for (size_t b = 0; b < s.spec.bodies.size(); ++b)
+      for (const int id : s.spec.bodies[b].element_ids) {
+        const auto& body = s.spec.bodies[b];
+        const auto given = body.element_degrees.find(id);
+        const auto p = given != body.element_degrees.end() ? given->second
+                                                           : body.degree.value_or(s.spec.discretization.degree);
+        EXPECT_GE(std::min(p[0], p[1]), low) << "step " << it.step << " body " << b << " element " << id;
+      }
+    model::ProblemSpec again = s.spec;
+    adapt::match_facing_degrees(again);
+    for (size_t b = 0; b < s.spec.bodies.size(); ++b)
+      for (const int id : s.spec.bodies[b].element_ids)
+        EXPECT_EQ(element_degree(again, b, id), element_degree(s.spec, b, id))
+            << "step " << it.step << " body " << b << " element " << id;
+  });
+  EXPECT_EQ(steps, 2);
+  EXPECT_GT(lowered, 0);  // the corrections lowered degrees (31 measured)
 }

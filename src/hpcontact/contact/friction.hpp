@@ -45,6 +45,14 @@ inline Mat2 tangent_rotation() { return (Mat2() << 0, 1, -1, 0).finished(); }
 /// Stick or slip at one point.
 enum class StickSlip { open, stick, slip };
 
+/// Where the tangential traction t_T of a point in contact, pressed by p_N >= 0, lies against
+/// Coulomb's cone |t_T| = μ p_N: inside it the point sticks; on it, to a relative 1e-9, it
+/// slips (either sign), so that a slipping point, whose traction lies on the cone only to the
+/// round-off of its solve, reads as slipping. At the cone's apex (p_N = 0 or μ = 0) every
+/// traction slips, zero included. Under the stick law (Kind::stick) every point sticks. The
+/// one test of the return mapping and of the exactly enforced pairs' points and nodes.
+StickSlip stick_or_slip(const FrictionLaw& law, double t_t, double p_n);
+
 /// The tangential traction t_T (along τ, acting on the other side; the point's body receives
 /// −t_T τ), the slip after the return mapping, and the derivatives of t_T that the consistent
 /// tangent needs: ∂t_T/∂u = dt_dgt ∂g_T/∂u + dt_dp ∂p_N/∂u.
@@ -56,10 +64,11 @@ struct Tangential {
   double dt_dp = 0;   ///< μ sign(t_T) in slip, 0 in stick
 };
 
-/// Trial t_T = ε_T (g_T − g_s,n); stick if |t_T| < μ p_N or t_T = 0 (always with Kind::stick), otherwise
-/// slip: t_T = μ p_N sign(trial), g_s = g_T − t_T / ε_T. A trial on the cone (to a relative
-/// 1e-9) counts as slip, so that a converged state evaluated again after its slips were
-/// committed maps to the same states (its slipping points lie exactly on the cone then).
+/// Trial t_T = ε_T (g_T − g_s,n); stick where stick_or_slip puts the trial (inside the cone, or
+/// always with Kind::stick) or where the trial is zero, otherwise slip: t_T = μ p_N sign(trial),
+/// g_s = g_T − t_T / ε_T. A trial on the cone (to a relative 1e-9) counts as slip, so that a
+/// converged state evaluated again after its slips were committed maps to the same states (its
+/// slipping points lie exactly on the cone then).
 Tangential return_map(const FrictionLaw& law, double g_t, double slip_n, double p_n);
 
 }  // namespace hpcontact::contact

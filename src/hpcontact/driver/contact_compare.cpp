@@ -129,8 +129,8 @@ void PressureComparison::check_reference_force(double force) const {
     }
   HPC_REQUIRE(std::abs(2 * carried - force) <= 1e-2 * force, InputError, in_.where, ".reference: '",
               reference_name_, "' carries F = ", 2 * carried,
-              in_.axisymmetric ? " (its integral over 2 pi r dr) but " : " (twice its integral over x >= 0) but "
-              "the closed forms are computed for F = ", force,
+              in_.axisymmetric ? " (its integral over 2 pi r dr)" : " (twice its integral over x >= 0)",
+              " but the closed forms are computed for F = ", force,
               ": a reference of another load (or of the pressure on the body's own normal, "
               "pressure.csv of hpcontact before force per unit length along the obstacle)");
 }

@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "hpcontact/basis/quadrature.hpp"
+#include "hpcontact/contact/friction.hpp"
 #include "hpcontact/contact/point_gap.hpp"
 #include "hpcontact/model/contact_pairs.hpp"
 
@@ -246,11 +247,7 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
       ps.g_t = slip_q;
       ps.traction -= ps.t_t * pg.tangent;
       s.resultant -= lambda_t_q * pg.tangent;
-      if (ps.pressure > 0)
-        ps.stick_slip = c.friction.kind == contact::FrictionLaw::Kind::coulomb &&
-                                std::abs(ps.t_t) >= (1 - 1e-9) * c.friction.mu * ps.pressure
-                            ? contact::StickSlip::slip
-                            : contact::StickSlip::stick;
+      if (ps.pressure > 0) ps.stick_slip = contact::stick_or_slip(c.friction, ps.t_t, ps.pressure);
     }
     if (R) {
       for (size_t i = 0; i < pg.dofs.size(); ++i) (*R)(pg.dofs[i]) -= lambda_q * pg.dg(i);

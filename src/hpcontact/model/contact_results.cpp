@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 
+#include "hpcontact/contact/friction.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/core/roots.hpp"
 #include "hpcontact/fem/edge_load.hpp"
@@ -480,11 +481,7 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
         if (n.active) ps.g_t = n.step_slip;  // an open node has no slip this step
         ps.slip = n.slip;                    // but keeps what it slipped before it opened
         ps.traction -= n.tangential * ps.tau;
-        if (n.active)
-          ps.stick_slip = c.friction.kind == contact::FrictionLaw::Kind::coulomb &&
-                                  std::abs(n.tangential) >= (1 - 1e-9) * c.friction.mu * n.pressure
-                              ? contact::StickSlip::slip
-                              : contact::StickSlip::stick;
+        if (n.active) ps.stick_slip = contact::stick_or_slip(c.friction, n.tangential, n.pressure);
       }
       res.states.push_back(ps);
       SideValues sv;

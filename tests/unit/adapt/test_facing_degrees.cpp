@@ -115,3 +115,21 @@ TEST(FacingDegrees, OnlyPairsWithFrictionEnforcedExactly) {
   adapt::match_facing_degrees(spec);
   EXPECT_EQ(degree(spec.bodies[1], 1), 8);
 }
+
+// One element facing two of different degrees: the upper strip's one element (length 2) lies on
+// two lower elements of degrees 3 and 6, and faces both (each covers all of itself, the shorter).
+// All three end with the largest degree, 6: the couple met first (degrees 4 and 3) is matched
+// before the upper element takes 6 from the second, and must be matched again.
+TEST(FacingDegrees, AnElementFacingTwoTakesTheLargestAndSoDoBoth) {
+  model::ProblemSpec spec;
+  model::BodySpec upper = strip("upper", 1, 0, 0, false, {4});
+  // stretch the one element over two lower ones: its right nodes (2 and 4) to x = 2
+  for (size_t i = 0; i < upper.node_ids.size(); ++i)
+    if (upper.nodes[i][0] == 1) upper.nodes[i][0] = 2;
+  spec.bodies = {upper, strip("lower", 2, 0, -1, true, {3, 6})};
+  spec.contact = {pair_between("upper", "lower")};
+  adapt::match_facing_degrees(spec);
+  EXPECT_EQ(degree(spec.bodies[0], 1), 6);
+  EXPECT_EQ(degree(spec.bodies[1], 1), 6);
+  EXPECT_EQ(degree(spec.bodies[1], 2), 6);
+}

@@ -107,3 +107,44 @@ TEST(ReturnMap, StickLawNeverSlips) {
     EXPECT_EQ(r.dt_dgt, 50);
   }
 }
+
+// Coulomb's cone, the one stick–slip test of the return mapping and of the exactly enforced
+// pairs: at μ p_N = 0.6, a traction of (1 − 1e-4) μ p_N sticks, one of μ p_N (or beyond, or
+// within the test's 1e-9 of it) slips, of either sign; at the apex (p_N = 0) every traction
+// slips, zero included; under the stick law nothing slips.
+TEST(StickOrSlip, CoulombsConeToARelative1em9) {
+  const FrictionLaw law = coulomb(0.3, 1);
+  const double p = 2, bound = 0.6;
+  for (double sign : {1.0, -1.0}) {
+    EXPECT_EQ(stick_or_slip(law, sign * (1 - 1e-4) * bound, p), StickSlip::stick) << sign;
+    EXPECT_EQ(stick_or_slip(law, sign * (1 - 1e-8) * bound, p), StickSlip::stick) << sign;
+    EXPECT_EQ(stick_or_slip(law, sign * (1 - 1e-10) * bound, p), StickSlip::slip) << sign;
+    EXPECT_EQ(stick_or_slip(law, sign * bound, p), StickSlip::slip) << sign;
+    EXPECT_EQ(stick_or_slip(law, sign * 2 * bound, p), StickSlip::slip) << sign;
+    EXPECT_EQ(stick_or_slip(law, sign * 1e-3, 0.0), StickSlip::slip) << sign;
+  }
+  EXPECT_EQ(stick_or_slip(law, 0.0, p), StickSlip::stick);
+  EXPECT_EQ(stick_or_slip(law, 0.0, 0.0), StickSlip::slip);
+  FrictionLaw stick = law;
+  stick.kind = FrictionLaw::Kind::stick;
+  for (double t : {0.0, bound, -2 * bound}) EXPECT_EQ(stick_or_slip(stick, t, p), StickSlip::stick) << t;
+}
+
+// The return mapping classifies its trial by that test: a trial (1 − 1e-4) μ p_N sticks and
+// keeps it, one of μ p_N slips at the bound with the sign of the trial; a zero trial sticks
+// even at p_N = 0 (held by ε_T), unlike a zero traction on the apex of the cone.
+TEST(ReturnMap, ClassifiesItsTrialByTheCone) {
+  const FrictionLaw law = coulomb(0.3, 10);
+  const double p = 2, bound = 0.6;
+  for (double sign : {1.0, -1.0}) {
+    const Tangential inside = return_map(law, sign * (1 - 1e-4) * bound / 10, 0, p);
+    EXPECT_EQ(inside.state, StickSlip::stick) << sign;
+    EXPECT_NEAR(inside.traction, sign * (1 - 1e-4) * bound, 1e-15) << sign;
+    const Tangential on = return_map(law, sign * bound / 10, 0, p);
+    EXPECT_EQ(on.state, StickSlip::slip) << sign;
+    EXPECT_EQ(on.traction, sign * bound) << sign;
+  }
+  const Tangential apex = return_map(law, 0.1, 0.1, 0.0);
+  EXPECT_EQ(apex.state, StickSlip::stick);
+  EXPECT_EQ(apex.dt_dgt, 10);
+}
