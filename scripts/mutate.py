@@ -630,6 +630,12 @@ MUTATIONS = [
              "(void)X;",
              "the other body's stick–slip points left out of what rp and hp adapt to",
              ["cli:tests/cli/test_stick_slip_rp.py::test_rp_moves_a_node_of_each_bar_onto_the_stick_slip_point"]),
+    # analytic: Persson's pin in a hole
+    Mutation("pin-kernel-constant", "analytic", S + "analytic/pin_in_hole.cpp",
+             "- 0.5 * (1 - beta) * (1 + 0.5 * std::cos(x))",
+             "- 0.5 * (1 + beta) * (1 + 0.5 * std::cos(x))",
+             "the closed-form kernel's constant and cos x terms with 1 + β for 1 − β",
+             ["PinInHole.GapClosesOnTheArcAndOpensOutside"]),
 ]
 
 
