@@ -687,6 +687,12 @@ MUTATIONS = [
              "hp's degrees start from 1 at the refinement centres whatever adapt.min_degree says",
              ["HpMesh.EveryStepKeepsTheMinimumDegreeAndEqualFacingDegrees",
               "cli:tests/cli/test_two_bars.py::test_coulomb_hp_traction_without_oscillation"]),
+    # analytic: Persson's pin in a hole
+    Mutation("pin-kernel-constant", "analytic", S + "analytic/pin_in_hole.cpp",
+             "- 0.5 * (1 - beta) * (1 + 0.5 * std::cos(x))",
+             "- 0.5 * (1 + beta) * (1 + 0.5 * std::cos(x))",
+             "the closed-form kernel's constant and cos x terms with 1 + β for 1 − β",
+             ["PinInHole.GapClosesOnTheArcAndOpensOutside"]),
 ]
 
 
