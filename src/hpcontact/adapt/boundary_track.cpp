@@ -54,6 +54,18 @@ BoundaryTrack::BoundaryTrack(const model::ProblemSpec& spec, int body, int node_
   }
   HPC_REQUIRE(neighbours.size() == 2, AdaptError, who, " is not a node of the boundary with two "
               "boundary edges (it has ", neighbours.size(), "); it cannot slide along the boundary");
+  // An edge set that holds one of the node's boundary edges and not the other ends at the node
+  // (the contact edges, a loaded or held part): moving the node would change what it covers.
+  for (const auto& set : b.edge_sets) {
+    auto holds = [&](int other) {
+      return std::any_of(set.edges.begin(), set.edges.end(), [&](const auto& e) {
+        return key(e[0], e[1]) == key(node_id, other);
+      });
+    };
+    HPC_REQUIRE(holds(neighbours[0]) == holds(neighbours[1]), AdaptError, who, " ends edge set '",
+                set.name, "' (between nodes ", neighbours[0], " and ", neighbours[1],
+                "); moving it would change what the set covers");
+  }
   const Vec2 X = node_position(b, node_id);
   const Vec2 A = node_position(b, neighbours[0]), B = node_position(b, neighbours[1]);
   const model::CurveSpec* ca = curve_of(b, node_id, neighbours[0]);

@@ -51,8 +51,11 @@ DeformableBoundary::DeformableBoundary(const mesh::Mesh& mesh, const fem::DofMap
   for (size_t k = 0; k < edges_.size(); ++k)
     for (int end = 0; end < 2; ++end)
       for (size_t j = 0; j < edges_.size(); ++j)
-        if (j != k && (end_vertex[j][0] == end_vertex[k][end] || end_vertex[j][1] == end_vertex[k][end]))
-          edges_[k].shared_end[end] = true;
+        for (int other = 0; other < 2; ++other)
+          if (j != k && end_vertex[j][other] == end_vertex[k][end]) {
+            edges_[k].shared_end[end] = true;
+            edges_[k].neighbour[end] = {static_cast<int>(j), other};
+          }
 }
 
 const DeformableBoundary::Sample* DeformableBoundary::samples_of(int k) const {
@@ -201,6 +204,20 @@ bool DeformableBoundary::project(const Vec2& x, BoundaryPoint& foot) const {
     }
   };
   auto shared_vertex = [&](int k, double end) { return edges_[k].shared_end[end > 0 ? 1 : 0]; };
+  // x lies beyond end `end` (0: t = −1, 1: t = +1) of edge k: the distance falls towards it.
+  auto beyond = [&](int k, int end) {
+    const Sample& at = samples_of(k)[end == 0 ? 0 : kSamples];
+    const double f_end = (x - at.x).dot(at.dx_dt);
+    return end == 0 ? f_end < 0 : f_end > 0;
+  };
+  // A shared vertex is a foot where x lies beyond the ends of both edges that meet there (the
+  // distance has its minimum at the corner): beyond this edge's end alone, x may lie beyond the
+  // other edge's far end too, past a free end of the boundary, where it has no foot at all.
+  auto corner_foot = [&](int k, double end) {
+    const int e = end > 0 ? 1 : 0;
+    const auto [j, other] = edges_[k].neighbour[e];
+    return edges_[k].shared_end[e] && j >= 0 && beyond(j, other);
+  };
   // A point level with a free end of the boundary (to round-off of the edge's size) has its
   // foot there: a node of the other body over the end of a matching boundary.
   auto level_with_free_end = [&](int k, double end, double f_end, const Sample& at) {
@@ -210,7 +227,7 @@ bool DeformableBoundary::project(const Vec2& x, BoundaryPoint& foot) const {
     const Sample* s = samples_of(k);
     auto f_sample = [&](int i) { return (x - s[i].x).dot(s[i].dx_dt); };
     double ta = -1, fa = f_sample(0);
-    if ((fa < 0 && shared_vertex(k, -1)) || level_with_free_end(k, -1, fa, s[0])) consider(k, -1);
+    if ((fa < 0 && corner_foot(k, -1)) || level_with_free_end(k, -1, fa, s[0])) consider(k, -1);
     for (int i = 1; i <= kSamples; ++i) {
       const double tb = -1 + 2.0 * i / kSamples, fb = f_sample(i);
       if (fa > 0 && fb <= 0) {
@@ -221,7 +238,7 @@ bool DeformableBoundary::project(const Vec2& x, BoundaryPoint& foot) const {
       ta = tb;
       fa = fb;
     }
-    if ((fa > 0 && shared_vertex(k, 1)) || level_with_free_end(k, 1, fa, s[kSamples])) consider(k, 1);
+    if ((fa > 0 && corner_foot(k, 1)) || level_with_free_end(k, 1, fa, s[kSamples])) consider(k, 1);
   }
   return found;
 }

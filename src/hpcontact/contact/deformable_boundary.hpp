@@ -80,6 +80,8 @@ private:
     int element, local_edge;
     std::vector<int> local;  ///< element-local modes non-zero on the edge
     std::array<bool, 2> shared_end{false, false};  ///< t = −1, +1 on a vertex of another edge
+    /// For a shared end: the other edge there and which of its ends (0: t = −1, 1: t = +1).
+    std::array<std::pair<int, int>, 2> neighbour{std::pair{-1, 0}, std::pair{-1, 0}};
   };
   const mesh::Mesh& mesh_;
   const fem::DofMap& dofs_;

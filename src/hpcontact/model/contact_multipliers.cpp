@@ -182,6 +182,8 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
   const auto& points = c.segmented ? seg_points : c.points;
   const auto& coefficients = c.segmented ? seg_coefficients : c.coefficients;
   s.points.resize(points.size());
+  // Per node, Σ |a_qj| over the points of its support with a foot, and over all of them.
+  std::vector<double> covered(n, 0.0), support(n, 0.0);
   // The obstacle's displacement per unit factor, for ∂g/∂factor = −n·d of a moving obstacle.
   const Vec2 moving = pair.moving ? pair.moving->direction() : Vec2::Zero();
   for (size_t q = 0; q < points.size(); ++q) {
@@ -202,6 +204,10 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
     ps.foot = pg.foot;
     ps.foot_edge = pg.foot_edge;
     ps.foot_t = pg.foot_t;
+    for (const auto& [j, a] : coefficients[q]) {
+      support[j] += std::abs(a);
+      if (pg.found) covered[j] += std::abs(a);
+    }
     if (!pg.found) continue;
     // the multiplier at the point, times its weight: λ_q = Σ_j a_qj λ_j [force]
     double lambda_q = 0, w_q = 0, lambda_t_q = 0;
@@ -264,6 +270,16 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
         for (size_t b = 0; b < pg.dofs.size(); ++b)
           if (const double v = pg.ddt(a, b); v != 0.0) t->emplace_back(pg.dofs[a], pg.dofs[b], lambda_t_q * v);
   }
+  // The gap only where the partner is: a node beyond the other body's boundary — its own point
+  // without a foot there and less than half its support (by |a_qj|) over it — is out of contact,
+  // whatever the weighted gap of the part of its support that has a foot says (its Lagrange
+  // weights change sign there: a node past a hub's end read a penetration of the bore's
+  // extension). A node at a flush end, pushed a little past it, keeps its contact.
+  if (pair.other >= 0)
+    for (int j = 0; j < n; ++j)
+      if (s.found[j] && covered[j] < 0.5 * support[j] &&
+          !has_foot(c.node_points[j], ua, *pair.other_boundary))
+        s.found[j] = 0;
   if (gradients) {
     for (auto& g : s.dG) merge(g);
     for (auto& g : s.dGT) merge(g);
@@ -271,6 +287,15 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
   }
   if (c.segmented) s.segment_points = std::move(seg_points);
   return s;
+}
+
+bool has_foot(const contact::ContactPoint& cp, const Eigen::VectorXd& u,
+              const contact::DeformableBoundary& other) {
+  Vec2 x = cp.X;
+  for (size_t k = 0; k < cp.modes.size(); ++k)
+    x += cp.N(k) * Vec2(u(2 * cp.modes[k]), u(2 * cp.modes[k] + 1));
+  contact::BoundaryPoint foot;
+  return other.project(x, foot);
 }
 
 bool node_active(const PairConstraints& c, const ConstraintState& s, const Eigen::VectorXd& lambda,

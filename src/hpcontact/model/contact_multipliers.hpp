@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include "hpcontact/contact/deformable_boundary.hpp"
 #include "hpcontact/contact/multiplier_nodes.hpp"
 #include "hpcontact/contact/penalty.hpp"
 #include "hpcontact/model/discretization.hpp"
@@ -120,15 +121,20 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
                                      Eigen::VectorXd* R, std::vector<Eigen::Triplet<double>>* t,
                                      bool gradients, const FrictionInputs& friction = {});
 
-/// Whether node j is active: some point of it has a closest point and λ_j − κ_j G_j / W_j ≥ 0
-/// (the semi-smooth Newton's active set of the complementarity function
-/// C_j = λ_j − max(0, λ_j − κ_j ĝ_j), ĝ_j = G_j / W_j, whose zeros are g ≥ 0, λ ≥ 0, λ g = 0;
-/// a node touching without pressure counts as active, so a body that rests on its support is
-/// held from the first iteration).
 /// The multipliers of the passive nodes from their edges' others: dλ_h/dt = 0 at the node (the
 /// pressure of a solid of revolution is even in r at its axis).
 void fill_passive_multipliers(const PairConstraints& c, Eigen::VectorXd& lambda);
 
+/// Whether the deformed position of `cp` (u: its body's dofs) has a foot on the other body's
+/// boundary (its displacement set): false past the boundary's free ends.
+bool has_foot(const contact::ContactPoint& cp, const Eigen::VectorXd& u,
+              const contact::DeformableBoundary& other);
+
+/// Whether node j is active: its support has a closest point on the obstacle (between two
+/// bodies, its own point too) and λ_j − κ_j G_j / W_j ≥ 0 (the semi-smooth Newton's active set
+/// of the complementarity function C_j = λ_j − max(0, λ_j − κ_j ĝ_j), ĝ_j = G_j / W_j, whose
+/// zeros are g ≥ 0, λ ≥ 0, λ g = 0; a node touching without pressure counts as active, so a body
+/// that rests on its support is held from the first iteration).
 bool node_active(const PairConstraints& c, const ConstraintState& s, const Eigen::VectorXd& lambda,
                  int j);
 
