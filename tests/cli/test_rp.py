@@ -120,7 +120,8 @@ def test_rp_needs_contact(hpcontact, root, tmp_path):
 @pytest.mark.parametrize("example", ["rp5.yaml", "hp.yaml"])
 def test_no_node_that_can_move_keeps_the_first_solve(hpcontact, root, tmp_path, example):
     """Edge 2-3 made straight: every node of the contact edges sits where the boundary changes
-    from the circle to a straight edge (or at a corner), so no node can slide onto Γ*. The loop
+    from the circle to a straight edge or ends the contact edge set, so no node can slide onto
+    Γ* (moving an end would change what the set covers). The loop
     says which nodes and why, exits 1, writes no summary.json in the output folder, and keeps
     the first (successful) solve in last-good/ marked as not converged."""
     text = open(os.path.join(root, HERTZ, example)).read()
@@ -135,8 +136,11 @@ def test_no_node_that_can_move_keeps_the_first_solve(hpcontact, root, tmp_path, 
     r = hpcontact("run", path, "--out", out, "-q")
     assert r.returncode == 1
     assert "straight.yaml: no boundary node of body 'cylinder' can move onto the zone end" in r.stderr
-    for node in (1, 2, 3):
-        assert r.stderr.count(f"node {node} of body 'cylinder' sits where the boundary changes") == 1
+    # nodes 1 and 3 end edge sets (symmetry, contact), node 2 sits between the arc and the
+    # straight edge
+    for node in (1, 3):
+        assert r.stderr.count(f"node {node} of body 'cylinder' ends edge set '") == 1
+    assert r.stderr.count("node 2 of body 'cylinder' sits where the boundary changes") == 1
     # rp counts iterations, hp steps
     step = "iteration" if example.startswith("rp") else "step"
     assert f"the last good result ({step} 0) is in" in r.stderr

@@ -243,6 +243,21 @@ bool DeformableBoundary::project(const Vec2& x, BoundaryPoint& foot) const {
   return found;
 }
 
+bool DeformableBoundary::free_end(const Vec2& x, BoundaryPoint& end) const {
+  double best = std::numeric_limits<double>::infinity();
+  BoundaryPoint bp;
+  for (int k = 0; k < static_cast<int>(edges_.size()); ++k)
+    for (int e = 0; e < 2; ++e) {
+      if (edges_[k].shared_end[e]) continue;
+      evaluate(k, e == 0 ? -1.0 : 1.0, bp);
+      if (const double d = (x - bp.x).norm(); d < best) {
+        best = d;
+        end = bp;
+      }
+    }
+  return best < std::numeric_limits<double>::infinity();
+}
+
 double DeformableBoundary::gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const {
   if (dnormal_dx) dnormal_dx->setZero();
   BoundaryPoint foot;

@@ -45,6 +45,11 @@ public:
   /// foot inside an edge, or on a node shared by two edges); false if there is none.
   bool project(const Vec2& x, BoundaryPoint& foot) const;
 
+  /// The free end of the boundary (an edge end no other edge shares) nearest to x, as a foot:
+  /// edge, t = ±1, the deformed point, tangent and normal there; false if the boundary has none.
+  /// What a point beyond the boundary (project() false) is measured against.
+  bool free_end(const Vec2& x, BoundaryPoint& end) const;
+
   /// Signed gap (x − x_m)·n_m, n_m the boundary's outward normal at the closest point x_m;
   /// +∞ when x has no foot on the boundary. dnormal_dx is not provided (set to zero): the
   /// two-body terms use their own linearisation (two_body_contact).

@@ -46,6 +46,53 @@ PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const
   return pg;
 }
 
+namespace {
+
+/// A point beyond a free end x_e of the other boundary (normal n_e, unit tangent t_e there):
+/// g = (x − x_e)·n_e + |(x − x_e)·t_e| (the gap to the boundary's line, plus how far past its end:
+/// continuous at the end, positive beyond it by more than x lies below the line). Its gradient is
+/// taken as n_e alone, so that the force a multiplier puts on the point acts along the normal
+/// the resultant is reported along (the |·| term's n_e-free part is left out of the tangent:
+/// such points are open unless they touch the end's corner). The foot is the end, a material
+/// point of the other body; its normal and tangent held fixed (no second derivatives).
+PointGap beyond_free_end(const ContactPoint& cp, const Vec2& x, const BoundaryPoint& end,
+                         int offset_s, int offset_m) {
+  PointGap pg;
+  pg.x = x;
+  pg.found = true;
+  pg.beyond_end = true;
+  const Vec2 n = end.normal, t = end.dx_dt.normalized(), r = x - end.x;
+  const Vec2 d = n;
+  pg.g = r.dot(n) + std::abs(r.dot(t));
+  pg.normal = n;
+  pg.tangent = friction_tangent(n);
+  pg.foot = end.x;
+  pg.foot_edge = end.edge;
+  pg.foot_t = end.t;
+  const int ms = static_cast<int>(cp.modes.size()), mm = static_cast<int>(end.modes.size());
+  const int L = 2 * (ms + mm);
+  pg.dofs.resize(L);
+  pg.dg.resize(L);
+  pg.dt.resize(L);
+  for (int k = 0; k < ms; ++k)
+    for (int c = 0; c < 2; ++c) {
+      pg.dofs[2 * k + c] = offset_s + 2 * cp.modes[k] + c;
+      pg.dg(2 * k + c) = cp.N(k) * d(c);
+      pg.dt(2 * k + c) = cp.N(k) * pg.tangent(c);
+    }
+  for (int k = 0; k < mm; ++k)
+    for (int c = 0; c < 2; ++c) {
+      const int j = 2 * (ms + k) + c;
+      pg.dofs[j] = offset_m + 2 * end.modes[k] + c;
+      pg.dg(j) = -end.N(k) * d(c);
+      pg.dt(j) = -end.N(k) * pg.tangent(c);
+    }
+  pg.d2g = Eigen::MatrixXd::Zero(L, L);
+  return pg;
+}
+
+}  // namespace
+
 PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
                             const DeformableBoundary& master, int offset_s, int offset_m, bool second,
                             const DeformableBoundary* own, bool turning) {
@@ -54,7 +101,10 @@ PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
   pg.x = cp.X;
   for (int k = 0; k < ms; ++k) pg.x += cp.N(k) * Vec2(u_s(2 * cp.modes[k]), u_s(2 * cp.modes[k] + 1));
   BoundaryPoint foot;
-  if (!master.project(pg.x, foot)) return pg;
+  if (!master.project(pg.x, foot)) {
+    if (!master.free_end(pg.x, foot)) return pg;
+    return beyond_free_end(cp, pg.x, foot, offset_s, offset_m);
+  }
   pg.found = true;
   Vec2 n = foot.normal;
   const Vec2 t = foot.dx_dt;

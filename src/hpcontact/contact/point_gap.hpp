@@ -19,6 +19,10 @@ namespace hpcontact::contact {
 /// linearisation (two_body_contact).
 struct PointGap {
   bool found = false;  ///< false: the other body's boundary has no closest point to it
+  /// Two bodies: x lies beyond a free end of the other boundary (no closest point inside it);
+  /// g is then measured from that end: g = (x − x_e)·n_e + |(x − x_e)·t_e|, positive once x is
+  /// past the end by more than it lies below the boundary's line (DeformableBoundary::free_end).
+  bool beyond_end = false;
   double g = std::numeric_limits<double>::infinity();
   Vec2 x = Vec2::Zero();       ///< deformed position
   Vec2 normal = Vec2(0, 1);    ///< the obstacle's outward unit normal at the closest point

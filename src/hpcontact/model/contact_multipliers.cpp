@@ -206,7 +206,7 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
     ps.foot_t = pg.foot_t;
     for (const auto& [j, a] : coefficients[q]) {
       support[j] += std::abs(a);
-      if (pg.found) covered[j] += std::abs(a);
+      if (pg.found && !pg.beyond_end) covered[j] += std::abs(a);
     }
     if (!pg.found) continue;
     // the multiplier at the point, times its weight: λ_q = Σ_j a_qj λ_j [force]

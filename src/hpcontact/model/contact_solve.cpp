@@ -260,10 +260,15 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       }
       const std::string why = failure_reason(rep);
       // A tangent made singular by a body that only contact holds (its constraints leave a
-      // rigid motion free) stays singular on a shorter step: no cuts then.
+      // rigid motion free) stays singular on a shorter step when nothing has converged yet (no
+      // contact holds it at all): no cuts then. After converged steps a singular tangent in
+      // mid-Newton is a near-mechanism of this step (every point slipping on the way to a
+      // shear near the friction's capacity, an active set that lost its last node): cut.
       bool structural = false;
       for (const Body& body : d.bodies) structural = structural || !body.free_rigid_motions.empty();
-      if (cuts == ss.max_cuts || (rep.status == solve::SolveStatus::singular && structural)) {
+      const bool held_before = sol.load_steps > 0;
+      if (cuts == ss.max_cuts ||
+          (rep.status == solve::SolveStatus::singular && structural && !held_before)) {
         std::ostringstream os;
         os << "load step " << sol.load_steps + 1 << " (" << fn.describe() << ") failed after " << cuts
            << " cuts: " << why;
