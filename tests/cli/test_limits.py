@@ -3,6 +3,7 @@ end or exhaust memory is refused at once, naming the key, the limit and why; inp
 read only if they are regular files of a bounded size. Runs are given an address-space limit and a
 timeout, so that a regression fails the test instead of the machine."""
 import os
+import re
 import resource
 import subprocess
 
@@ -12,11 +13,25 @@ BLOCK = "examples/neumann/block.yaml"
 HERTZ = "examples/hertz/p5.yaml"
 
 
-def limited(exe, *args, timeout=60):
+# Address space in which an input must be refused: the program takes some 100 MB of it; the
+# trees the refused inputs would build take 500 MB to GBs, so a refusal within it came before.
+REFUSED_WITHIN = 256 << 20
+
+
+def limited(exe, *args, timeout=60, address_space=2 << 30):
     def limit():
-        resource.setrlimit(resource.RLIMIT_AS, (2 << 30, 2 << 30))
+        resource.setrlimit(resource.RLIMIT_AS, (address_space, address_space))
     return subprocess.run([exe, *map(str, args)], capture_output=True, text=True, timeout=timeout,
                           preexec_fn=limit)
+
+
+def strip(n):
+    """A strip of n x 1 elements given inline: 14 YAML values per element."""
+    nodes = "\n".join(f"      {i + 1}: [{i}, 0]\n      {n + 2 + i}: [{i}, 1]" for i in range(n + 1))
+    elements = "\n".join(f"      {i + 1}: [{i + 1}, {i + 2}, {n + 3 + i}, {n + 2 + i}]"
+                         for i in range(n))
+    return (f"case: strip\nbodies:\n  - name: strip\n    material: {{E: 1, nu: 0.3}}\n"
+            f"    nodes:\n{nodes}\n    elements:\n{elements}\n")
 
 
 @pytest.mark.parametrize("key, value, limit", [
@@ -88,3 +103,74 @@ def test_input_files_must_be_regular_and_bounded(exe, root, tmp_path):
                     "--set", f"contact[0].compare.reference={reference}", timeout=30)
         assert r.returncode == 1, r.stderr
         assert "contact[0].compare.reference: " in r.stderr and why in r.stderr, r.stderr
+
+
+def alias_bomb():
+    """One strip of 1000 elements and 1000 bodies that repeat its nodes and elements by alias:
+    14 million values from 140 kB (it took 0.9 GB before it was refused for want of supports)."""
+    text = strip(1000).replace("    nodes:\n", "    nodes: &n\n").replace("    elements:\n",
+                                                                            "    elements: &e\n")
+    return text + "".join(f"  - {{name: s{k}, material: {{E: 1, nu: 0.3}}, nodes: *n, elements: *e}}\n"
+                          for k in range(1000))
+
+
+# Texts past the limit, made when their test runs, where the refusal names and whether it names a
+# flow collection's bracket (counted from the text: yaml-cpp's scanner holds a flow list whole,
+# 280 bytes a value, before its parser reports any of it) or the value that passes the limit.
+FLOW = "has a flow list or map ([...] or {...}) starting here with more than the 1000000 YAML values"
+VALUES = "has more than the 1000000 YAML values"
+PAST_THE_LIMIT = {
+    # The densest YAML: a flow list, one value per 2 bytes (2 MB took 1 GB and 9 s before it was
+    # refused as not a string).
+    "flow-list": (lambda: "case: x\ndescription: [" + "0," * 1_000_000 + "0]\n", "2:14", FLOW),
+    # A flow map of keys alone, two values per 2 bytes (4 MB took 2.1 GB): as a key's value,
+    # yaml-cpp reports it as it reads, and it is refused at the value that passes the limit.
+    "flow-map": (lambda: "case: x\ndescription: {" + "a," * 600_000 + "a}\n", "2:1000010", VALUES),
+    # A flow list where a key could stand, which yaml-cpp holds whole before counting starts.
+    "flow-list-as-item": (lambda: "case: x\ndescription:\n  - [" + "0," * 1_500_000 + "0]\n", "3:5",
+                          FLOW),
+    # A mesh given inline, just past the limit: its value 1000001 is element 71330's id.
+    "inline-mesh": (lambda: strip(71_500), "214338:7", VALUES),
+    # The 71st body of aliases passes the limit with its elements.
+    "aliases": (lambda: alias_bomb(), "3079:51", VALUES),
+}
+
+
+@pytest.mark.parametrize("name", PAST_THE_LIMIT)
+def test_yaml_values_are_counted_before_the_tree_is_built(exe, tmp_path, name):
+    """yaml-cpp's tree takes some 500 bytes per value, up to 500 per byte of the file, and an
+    alias repeats a subtree for a few bytes: a 15.9 MB file took 2.4 GB. The values are counted
+    first (the parser's events, no tree) and a problem of more than 10^6 is refused at the value
+    that passes the limit, in an address space its tree would not fit into."""
+    text, where, what = PAST_THE_LIMIT[name]
+    case = tmp_path / f"{name}.yaml"
+    case.write_text(text())
+    r = limited(exe, "check", case, timeout=60, address_space=REFUSED_WITHIN)
+    assert r.returncode == 1, r.stderr[:300]
+    line = r.stderr.splitlines()[0]
+    assert f"{case}:{where}: the problem file {what}" in line, line
+    assert "give fewer elements" in line, line
+
+
+def test_an_alias_cycle_is_refused(exe, tmp_path):
+    """An alias inside what its anchor names is a cycle: a tree without end, refused as such."""
+    case = tmp_path / "cycle.yaml"
+    case.write_text("case: x\nbodies:\n  - &b {name: b, material: {E: 1, nu: 0.3}, curves: [*b]}\n")
+    r = limited(exe, "check", case, timeout=30, address_space=REFUSED_WITHIN)
+    assert r.returncode == 1, r.stderr
+    assert f"{case}:3:54: an alias inside the list or map its anchor names: a cycle" in r.stderr, r.stderr
+
+
+def test_set_values_are_bounded_as_files_are(exe, root, tmp_path):
+    """A --set value is YAML read as a file is: 100 aliases of a list of 10^4 values (60 kB, the
+    command line's limit for one argument is 128 kB) are refused as 10^6 values, before any tree."""
+    value = "[&a [" + ",".join(["0"] * 10_000) + "]" + ", *a" * 100 + "]"
+    r = limited(exe, "check", os.path.join(root, BLOCK), "--set", f"description={value}",
+                timeout=30, address_space=REFUSED_WITHIN)
+    assert r.returncode == 2, r.stderr  # from the command line
+    line = r.stderr.splitlines()[0]
+    # The 99th alias passes what the block's 124 other values leave.
+    column = value.find("*a") + 4 * 98 + 1
+    assert f"block.yaml: --set description=[&a [0,0,0,0,0,0,0,0...: at line 1, column {column}: " in line, line
+    assert re.search(r"the --set value has more than the \d+ YAML values the rest of the problem "
+                     "leaves it of the 1000000 an input may have", line), line
