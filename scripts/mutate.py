@@ -598,6 +598,22 @@ MUTATIONS = [
              "      if (false)",
              "the keys --set values create left out of the problem's values",
              ["YamlLimits.OverridesAreBoundedWithTheFile"]),
+    Mutation("gmsh-mesh-values-unbounded", "io", S + "io/gmsh_import.cpp",
+             "    if (*values + added > kMaxYamlValues)",
+             "    if (false)",
+             "a Gmsh mesh written into the problem's YAML tree whatever its values",
+             ["cli:tests/cli/test_limits.py::test_gmsh_meshes_are_bounded_before_they_are_read"]),
+    Mutation("gmsh-node-count-unbounded", "io", S + "io/gmsh_reader.cpp",
+             '    require_at_most(n_nodes, kMaxMeshNodes, "nodes");',
+             "    (void)n_nodes;",
+             "a .msh file's nodes read whatever its $Nodes header says",
+             ["GmshReader.RejectsBrokenFiles",
+              "cli:tests/cli/test_limits.py::test_gmsh_meshes_are_bounded_before_they_are_read"]),
+    Mutation("input-file-buffer-doubles", "io", S + "io/text_file.cpp",
+             "  std::string text(static_cast<std::size_t>(st.st_size) + 1, '\\0');",
+             "  std::string text(static_cast<std::size_t>(st.st_size), '\\0');",
+             "an input file's buffer grown to find its end, twice the file in memory",
+             ["cli:tests/cli/test_limits.py::test_gmsh_meshes_are_bounded_before_they_are_read"]),
 ]
 
 

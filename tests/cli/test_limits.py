@@ -34,6 +34,24 @@ def strip(n):
             f"    nodes:\n{nodes}\n    elements:\n{elements}\n")
 
 
+def grid_msh(nx, ny):
+    """An nx x ny grid of first-order quads on [0, nx] x [0, ny] in MSH 4.1, surface 'plate'."""
+    nn = (nx + 1) * (ny + 1)
+    quads = "".join(f"{j * nx + i + 1} {j * (nx + 1) + i + 1} {j * (nx + 1) + i + 2} "
+                    f"{(j + 1) * (nx + 1) + i + 2} {(j + 1) * (nx + 1) + i + 1}\n"
+                    for j in range(ny) for i in range(nx))
+    return ("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n2 1 \"plate\"\n"
+            f"$EndPhysicalNames\n$Entities\n0 0 1 0\n1 0 0 0 {nx} {ny} 0 1 1 0\n$EndEntities\n"
+            f"$Nodes\n1 {nn} 1 {nn}\n2 1 0 {nn}\n" + "".join(f"{k + 1}\n" for k in range(nn))
+            + "".join(f"{k % (nx + 1)} {k // (nx + 1)} 0\n" for k in range(nn))
+            + f"$EndNodes\n$Elements\n1 {nx * ny} 1 {nx * ny}\n2 1 3 {nx * ny}\n{quads}"
+            "$EndElements\n")
+
+
+MESH_PROBLEM = ("case: grid\nbodies:\n  - name: plate\n    material: {E: 1, nu: 0.3}\n"
+                "    gmsh: {file: mesh.msh, surface: plate}\n")
+
+
 @pytest.mark.parametrize("key, value, limit", [
     ("discretization.quadrature_extra", "10000000", "50"),
     ("output.vtu_subdivisions", "10000", "100"),
@@ -174,3 +192,32 @@ def test_set_values_are_bounded_as_files_are(exe, root, tmp_path):
     assert f"block.yaml: --set description=[&a [0,0,0,0,0,0,0,0...: at line 1, column {column}: " in line, line
     assert re.search(r"the --set value has more than the \d+ YAML values the rest of the problem "
                      "leaves it of the 1000000 an input may have", line), line
+
+
+def test_gmsh_meshes_are_bounded_before_they_are_read(exe, tmp_path):
+    """A Gmsh mesh becomes part of the problem's YAML tree: `check` of 10^6 elements took 5.4 GB.
+    The node and element counts of a .msh file are refused at their header line, before the
+    section is read, and a mesh that would pass the problem's 10^6 values before it is written
+    into the tree."""
+    (tmp_path / "case.yaml").write_text(MESH_PROBLEM)
+    head = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+    for section, count, most in (("Nodes", 800_001, 800_000), ("Elements", 200_001, 200_000)):
+        (tmp_path / "mesh.msh").write_text(head + f"${section}\n1 {count} 1 {count}\n")
+        r = limited(exe, "check", tmp_path / "case.yaml", timeout=30, address_space=REFUSED_WITHIN)
+        assert r.returncode == 1, r.stderr
+        assert (f"mesh.msh:5: the header says {count} {section.lower()}, more than the {most} a "
+                "mesh file may have") in r.stderr, r.stderr
+        assert "give a coarser mesh" in r.stderr, r.stderr
+    # A file of 100 MB is held once while it is read (its buffer grew to twice that to find its
+    # end), and refused at the header without reading the nodes.
+    (tmp_path / "mesh.msh").write_text(head + "$Nodes\n1 50000000 1 50000000\n" + "1\n" * 50_000_000)
+    r = limited(exe, "check", tmp_path / "case.yaml", timeout=30, address_space=REFUSED_WITHIN)
+    assert r.returncode == 1, r.stderr
+    assert "mesh.msh:5: the header says 50000000 nodes, more than the 800000" in r.stderr, r.stderr
+    # 316 x 316 quads: 4 values per node (100489) and 6 per element (99856), with the keys 1001100.
+    (tmp_path / "mesh.msh").write_text(grid_msh(316, 316))
+    r = limited(exe, "check", tmp_path / "case.yaml", timeout=60, address_space=REFUSED_WITHIN)
+    assert r.returncode == 1, r.stderr
+    assert ("case.yaml:5:11: bodies[0].gmsh: the mesh of " in r.stderr and
+            "mesh.msh (100489 corner nodes, 99856 elements) makes 1001100 YAML values, which with "
+            "the problem's " in r.stderr and "more than the 1000000 an input may have" in r.stderr), r.stderr

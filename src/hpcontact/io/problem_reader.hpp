@@ -30,7 +30,7 @@ struct ReadResult {
 };
 
 /// Parses problem-file text, bounded as a file is (yaml_limits.hpp: its bytes and values, then
-/// the values with the overrides). `file_label` names the file in messages
+/// the values with the overrides and the Gmsh meshes). `file_label` names the file in messages
 /// (and becomes spec.file); a body's gmsh.file is found relative to its folder (to the current
 /// directory if it has none).
 /// `overrides` are "key.path=value" strings (--set), applied in order to the YAML tree before

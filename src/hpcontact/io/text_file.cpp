@@ -43,7 +43,9 @@ std::string read_bounded_file(const std::string& path, const std::string& what,
                                 in_megabytes(max_bytes) + " it may have";
   if (static_cast<std::size_t>(st.st_size) > max_bytes)
     throw IoError(too_large + " (" + in_megabytes(static_cast<std::size_t>(st.st_size)) + ")");
-  std::string text(static_cast<std::size_t>(st.st_size), '\0');
+  // One byte more than the file has, so that the read that finds its end needs no larger buffer
+  // (growing the string would double its memory).
+  std::string text(static_cast<std::size_t>(st.st_size) + 1, '\0');
   std::size_t got = 0;
   for (;;) {
     if (got == text.size()) {

@@ -281,8 +281,8 @@ std::optional<YamlBound> exceeded_yaml_bound(std::string_view text, const std::s
                 std::to_string(kMaxYamlValues) + " an input may have";
   const std::string why =
       ": yaml-cpp keeps some 500 bytes of memory for each (a scalar, list, map or empty value; "
-      "an alias counts as what it repeats); a mesh takes about 4 per node and 6 per element: give "
-      "fewer elements (a p-FEM mesh needs few: raise the degree)";
+      "an alias counts as what it repeats); a mesh takes about 4 per node and 6 per element, "
+      "inline or from a Gmsh file: give fewer elements (a p-FEM mesh needs few: raise the degree)";
   if (const auto start = FlowScanner(text, 2 * most + 1).run())
     return YamlBound{*start, "the " + what + " has a flow list or map ([...] or {...}) starting "
                              "here with more than " + limit + why};

@@ -16,10 +16,11 @@ namespace hpcontact::io {
 /// 5 bytes of memory and 0.2 s per MB.
 constexpr std::size_t kMaxYamlBytes = 16u << 20;
 
-/// Most values of the YAML tree of a problem or study (file and --set values): every scalar, list, map and empty value counts one, an alias the values of what
+/// Most values of the YAML tree of a problem or study (file, --set values and the meshes of its
+/// Gmsh files): every scalar, list, map and empty value counts one, an alias the values of what
 /// it repeats. yaml-cpp keeps some 500 bytes of memory per value: `check` of a problem at the
-/// limit took 590 MB and 4.5 s of CPU. An inline mesh takes about 4 values per node and 6 per
-/// element, so some 10⁵ elements fit.
+/// limit took 590 MB and 4.5 s of CPU. An inline or Gmsh mesh takes about 4 values per node and
+/// 6 per element, so some 10⁵ elements fit.
 constexpr std::size_t kMaxYamlValues = 1'000'000;
 
 /// Why a YAML text is refused before its tree is built, and where.
