@@ -614,6 +614,16 @@ MUTATIONS = [
              "  std::string text(static_cast<std::size_t>(st.st_size), '\\0');",
              "an input file's buffer grown to find its end, twice the file in memory",
              ["cli:tests/cli/test_limits.py::test_gmsh_meshes_are_bounded_before_they_are_read"]),
+    Mutation("effective-input-values-unchecked", "io", S + "io/problem_reader.cpp",
+             "    if (const std::size_t values = count_yaml_values(root); values > kMaxYamlValues)",
+             "    if (const std::size_t values = count_yaml_values(root); false)",
+             "a problem whose defaults take it past the values limit read, its input.yaml then refused",
+             ["YamlLimits.TheEffectiveInputCanBeReadBack"]),
+    Mutation("effective-input-bytes-unchecked", "io", S + "io/problem_reader.cpp",
+             "    if (read.effective_yaml.size() > kMaxYamlBytes)",
+             "    if (false)",
+             "a problem whose defaults take it past 16 MB read, its input.yaml then refused",
+             ["cli:tests/cli/test_limits.py::test_the_effective_input_is_bounded_as_a_file_is"]),
 ]
 
 

@@ -221,3 +221,22 @@ def test_gmsh_meshes_are_bounded_before_they_are_read(exe, tmp_path):
     assert ("case.yaml:5:11: bodies[0].gmsh: the mesh of " in r.stderr and
             "mesh.msh (100489 corner nodes, 99856 elements) makes 1001100 YAML values, which with "
             "the problem's " in r.stderr and "more than the 1000000 an input may have" in r.stderr), r.stderr
+
+
+def test_the_effective_input_is_bounded_as_a_file_is(exe, tmp_path):
+    """input.yaml, the problem with its defaults filled in, is read back to reproduce a run: a
+    problem file of exactly 16 MB (a long description) whose defaults would take its effective
+    input past 16 MB is refused when read, not when its input.yaml is. (Its values:
+    test_yaml_limits.cpp.)"""
+    head = 'case: square\ndescription: "'
+    tail = ('"\nbodies:\n  - name: block\n    material: {E: 1000, nu: 0.25}\n'
+            "    nodes: {1: [0, 0], 2: [1, 0], 3: [1, 1], 4: [0, 1]}\n    elements: {1: [1, 2, 3, 4]}\n"
+            "    edge_sets: {bottom: [[1, 2]]}\n    constraints: [{edges: [bottom], ux: 0, uy: 0}]\n")
+    case = tmp_path / "long.yaml"
+    case.write_text(head + "x" * ((16 << 20) - len(head) - len(tail)) + tail)
+    assert case.stat().st_size == 16 << 20
+    r = limited(exe, "check", case, timeout=60)
+    assert r.returncode == 1, r.stderr[:300]
+    assert (f"{case}: the effective input (input.yaml, the problem with its defaults filled in) is "
+            "larger than the 16 MB a problem file may have (16 MB), so it could not be read back"
+            in r.stderr), r.stderr[:300]

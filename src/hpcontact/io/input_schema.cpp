@@ -720,15 +720,17 @@ std::string input_schema_markdown() {
         "- Files: the problem file and a study file are read only if they are regular files (not "
         "a device such as /dev/zero, a pipe or a folder) of at most "
      << (kMaxYamlBytes >> 20)
-     << " MB, as is a problem given to the Python module as text (`Problem.from_yaml`) and a "
-        "`--set` value (or `set=`); a .msh file of at most "
+     << " MB, as is a problem given to the Python module as text (`Problem.from_yaml`), a "
+        "`--set` value (or `set=`) and the effective input a run writes (input.yaml, the problem "
+        "with its defaults filled in: it is read back to reproduce the run, so a problem whose "
+        "effective input would pass a limit is refused when read); a .msh file of at most "
      << (kMaxMeshFileBytes >> 20) << " MB, with at most " << kMaxMeshNodes << " nodes and "
      << kMaxMeshElements
      << " elements (of every type, as its $Nodes and $Elements headers count them); a "
         "`compare.reference` curve of at most "
      << (kMaxReferenceBytes >> 20) << " MB.\n"
-        "- YAML values: the tree of a problem (the file, its `--set` values and the meshes of its "
-        "Gmsh files) or of a study holds at most "
+        "- YAML values: the tree of a problem (the file, its `--set` values, the meshes of its "
+        "Gmsh files and its defaults) or of a study holds at most "
      << kMaxYamlValues
      << " values: every scalar, list, map and empty value counts one, an alias what it repeats "
         "(an alias inside what it names, a cycle, is refused). The tree takes some 500 bytes "

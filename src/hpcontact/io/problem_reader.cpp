@@ -855,8 +855,23 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
     }
     const std::vector<std::string> gmsh_notes = expand_gmsh_meshes(root, source);
     check_and_fill_defaults(root, source);
-    return {SpecBuilder(source).problem(root),
-            effective_yaml(root, file_label, overrides, gmsh_notes)};
+    // The effective input is read back as a problem file (a run reproduced from its own
+    // output), so it is held to the same bounds, with its defaults.
+    const std::string effective =
+        ": the effective input (input.yaml, the problem with its defaults filled in) ";
+    if (const std::size_t values = count_yaml_values(root); values > kMaxYamlValues)
+      throw InputError(file_label + effective + "has " + std::to_string(values) +
+                       " YAML values, more than the " + std::to_string(kMaxYamlValues) +
+                       " a problem file may have, so it could not be read back: give fewer "
+                       "elements");
+    ReadResult read{SpecBuilder(source).problem(root),
+                    effective_yaml(root, file_label, overrides, gmsh_notes)};
+    if (read.effective_yaml.size() > kMaxYamlBytes)
+      throw InputError(file_label + effective + "is larger than the " +
+                       in_megabytes(kMaxYamlBytes) + " a problem file may have (" +
+                       in_megabytes(read.effective_yaml.size()) +
+                       "), so it could not be read back: give fewer elements or shorter texts");
+    return read;
   } catch (const YAML::Exception& e) {
     // The checks above should leave yaml-cpp nothing to object to; if it does, keep the promise
     // that bad input surfaces as a one-line InputError.

@@ -30,7 +30,8 @@ struct ReadResult {
 };
 
 /// Parses problem-file text, bounded as a file is (yaml_limits.hpp: its bytes and values, then
-/// the values with the overrides and the Gmsh meshes). `file_label` names the file in messages
+/// the values with the overrides and the Gmsh meshes, and the effective input's values and bytes,
+/// so that it can be read back). `file_label` names the file in messages
 /// (and becomes spec.file); a body's gmsh.file is found relative to its folder (to the current
 /// directory if it has none).
 /// `overrides` are "key.path=value" strings (--set), applied in order to the YAML tree before

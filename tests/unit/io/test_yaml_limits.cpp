@@ -186,3 +186,58 @@ TEST(YamlLimits, OverridesAreBoundedWithTheFile) {
               std::string::npos) << e.what();
   }
 }
+
+namespace {
+
+/// A one-element square with `loads` copies of one load, all but the first by alias.
+std::string square_with_loads(std::size_t loads, const std::string& description = "a square") {
+  std::string text = "case: square\ndescription: \"" + description + R"("
+bodies:
+  - name: block
+    material: {E: 1000, nu: 0.25}
+    nodes: {1: [0, 0], 2: [1, 0], 3: [1, 1], 4: [0, 1]}
+    elements: {1: [1, 2, 3, 4]}
+    edge_sets: {bottom: [[1, 2]], top: [[3, 4]]}
+    constraints: [{edges: [bottom], ux: 0, uy: 0}]
+    loads: [&l {edges: [top], pressure: 10})";
+  for (std::size_t i = 1; i < loads; ++i) text += ", *l";
+  return text + "]\n";
+}
+
+/// The InputError message of reading `text`, or "" if it is read.
+std::string refusal(const std::string& text) {
+  try {
+    hio::parse_problem(text, "square.yaml");
+  } catch (const hpcontact::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+// The effective input (the problem with its defaults filled in) is written next to the results
+// and read back to reproduce a run: a problem within the limits whose defaults would take it past
+// them shall be refused (its bytes: test_limits.py).
+TEST(YamlLimits, TheEffectiveInputCanBeReadBack) {
+  // Values: each load gets its defaults, and each alias counts them again.
+  const auto defaults = [](std::size_t loads) {
+    return values_of(hio::parse_problem_full(square_with_loads(loads), "square.yaml").effective_yaml) -
+           values_of(square_with_loads(loads));
+  };
+  const std::size_t per_load = defaults(2) - defaults(1);
+  ASSERT_GT(per_load, 0u);
+  const std::size_t load = values_of(square_with_loads(2)) - values_of(square_with_loads(1));
+  const std::size_t loads = (hio::kMaxYamlValues - values_of(square_with_loads(1))) / load + 1;
+  const std::string many = square_with_loads(loads);
+  const std::size_t values = values_of(many);
+  ASSERT_LE(values, hio::kMaxYamlValues);
+  const std::string message = refusal(many);
+  EXPECT_NE(message.find("square.yaml: the effective input (input.yaml, the problem with its "
+                         "defaults filled in) has " +
+                         std::to_string(values + defaults(1) + (loads - 1) * per_load) +
+                         " YAML values, more than the 1000000 a problem file may have, so it "
+                         "could not be read back"),
+            std::string::npos)
+      << message;
+}
