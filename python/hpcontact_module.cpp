@@ -309,7 +309,9 @@ Raises InputError (the message names the file, line and key) or Error (file not 
           R"(Builds a problem from YAML text (e.g. one a script composes).
 
 label: the name messages give the text; files the problem names (a gmsh mesh, a reference
-curve) are found relative to its folder. set: overrides, as for from_file().)")
+curve) are found relative to its folder. set: overrides, as for from_file(). The text and each
+set value are bounded as a problem file and --set values are (docs/input.md, Limits: 16 MB,
+10^6 YAML values, counted before the tree is built); InputError names the label otherwise.)")
       .def_property_readonly(
           "case", [](const Problem& p) { return p.read.spec.case_name; }, "The case name.")
       .def_property_readonly(

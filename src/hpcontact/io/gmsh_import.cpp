@@ -9,10 +9,12 @@
 #include <filesystem>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include "hpcontact/io/schema_check.hpp"
+#include "hpcontact/io/yaml_limits.hpp"
 
 namespace hpcontact::io {
 
@@ -436,6 +438,16 @@ ImportOptions read_options(const YAML::Node& g, const YAML::Node& body) {
   return o;
 }
 
+/// The YAML values write_mesh() adds for `m` at most (every key, list, map and scalar).
+std::size_t yaml_values(const ImportedMesh& m) {
+  std::size_t n = 2 + 4 * m.nodes.size();  // nodes: {id: [x, y], ...}
+  n += 2 + 6 * m.elements.size();          // elements: {id: [a, b, c, d], ...}
+  n += 2 + 15 * m.arcs.size();  // curves: [{nodes: [a, b], arc: {center: [x, y], radius: r, ccw: c}}]
+  n += 2;                       // edge_sets: {name: [[a, b], ...], ...}
+  for (const auto& set : m.edge_sets) n += 2 + 3 * set.second.size();
+  return n;
+}
+
 /// Writes the imported mesh into the body's tree: nodes, elements, curves and edge_sets.
 void write_mesh(YAML::Node body, const ImportedMesh& m, const std::string& path,
                 const std::string& origin, YamlSource& source) {
@@ -489,6 +501,7 @@ ImportedMesh import_gmsh_body(const GmshMesh& mesh, const ImportOptions& options
 
 std::vector<std::string> expand_gmsh_meshes(YAML::Node& root, YamlSource& source) {
   std::vector<std::string> notes;
+  std::optional<std::size_t> values;  // of the tree, counted at the first gmsh section
   const YAML::Node& view = root;
   const YAML::Node bodies = view["bodies"];
   if (!bodies || !bodies.IsSequence()) return notes;  // the schema check reports it
@@ -531,6 +544,21 @@ std::vector<std::string> expand_gmsh_meshes(YAML::Node& root, YamlSource& source
             source.fail(it->first, join_key(path + ".edge_sets", name),
                         "the 1D physical group '" + name + "' of " + mesh.file +
                             " makes an edge set of this name already; rename one of them");
+
+    // Its tree is bounded as the file's was, before it is built.
+    if (!values) values = count_yaml_values(root);
+    const std::size_t added = yaml_values(imported);
+    if (*values + added > kMaxYamlValues)
+      source.fail(g, gmsh_path,
+                  "the mesh of " + mesh.file + " (" + std::to_string(imported.nodes.size()) +
+                      " corner nodes, " + std::to_string(imported.elements.size()) +
+                      " elements) makes " + std::to_string(added) +
+                      " YAML values, which with the problem's " + std::to_string(*values) +
+                      " are more than the " + std::to_string(kMaxYamlValues) +
+                      " an input may have (some 500 bytes of memory each: about 4 per node and 6 "
+                      "per element): give a coarser mesh (a p-FEM mesh needs few elements: raise "
+                      "the degree)");
+    *values += added;
 
     // The mesh takes the place of the gmsh key: the keys after it are taken out and put back
     // after the mesh (curves and edge_sets stay where they are and receive the new entries).

@@ -66,7 +66,8 @@ ImportedMesh import_gmsh_body(const GmshMesh& mesh, const ImportOptions& options
 /// before the schema check) by the nodes, elements, curves and edge_sets it stands for; the
 /// .msh file is found relative to the folder of source.file(). Returns one line per body so made,
 /// for the header of the effective input. Throws InputError (IoError if the file cannot be read)
-/// naming the problem file's key and, for errors in the mesh, the .msh file and line.
+/// naming the problem file's key and, for errors in the mesh, the .msh file and line; also, before
+/// a mesh is written into the tree, if the tree would then hold more than kMaxYamlValues values.
 std::vector<std::string> expand_gmsh_meshes(YAML::Node& root, YamlSource& source);
 
 }  // namespace hpcontact::io

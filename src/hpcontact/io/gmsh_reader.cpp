@@ -28,6 +28,7 @@
 
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/io/text_file.hpp"
+#include "hpcontact/io/yaml_limits.hpp"
 #include "hpcontact/io/yaml_source.hpp"
 
 namespace hpcontact::io {
@@ -246,6 +247,16 @@ class Parser {
     return static_cast<int>(v);
   }
 
+  /// A section's header count against its bound, before anything of the section is read.
+  void require_at_most(std::uint64_t n, std::uint64_t most, const std::string& what) const {
+    if (n > most)
+      fail("the header says " + std::to_string(n) + " " + what + ", more than the " +
+           std::to_string(most) + " a mesh file may have: a body's mesh becomes part of the "
+           "problem's YAML tree, of at most " + std::to_string(kMaxYamlValues) +
+           " values (some 4 per node and 6 per element); give a coarser mesh (a p-FEM mesh needs "
+           "few elements: raise the degree)");
+  }
+
   int dimension(std::string_view token) const {
     const std::int64_t v = integer(token, "a dimension");
     if (v < 0 || v > 3) fail("expected a dimension 0 to 3 (got '" + shown(token) + "')");
@@ -356,6 +367,7 @@ class Parser {
     const int header_line = line_;
     const std::uint64_t n_blocks = count(header[0], "the number of entity blocks");
     const std::uint64_t n_nodes = count(header[1], "the number of nodes");
+    require_at_most(n_nodes, kMaxMeshNodes, "nodes");
     std::uint64_t n_read = 0;
     for (std::uint64_t b = 0; b < n_blocks; ++b) {
       const auto block = need_line("'entityDim entityTag parametric numNodesInBlock'");
@@ -406,6 +418,7 @@ class Parser {
     const int header_line = line_;
     const std::uint64_t n_blocks = count(header[0], "the number of entity blocks");
     const std::uint64_t n_elements = count(header[1], "the number of elements");
+    require_at_most(n_elements, kMaxMeshElements, "elements");
     std::uint64_t n_read = 0;
     for (std::uint64_t b = 0; b < n_blocks; ++b) {
       const auto block = need_line("'entityDim entityTag elementType numElementsInBlock'");

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <string_view>
@@ -65,12 +66,20 @@ std::string gmsh_type_name(int type);
 /// Parses the text of a .msh file (MSH 4.1, ASCII). `file_label` names the file in messages.
 /// Checks: version and ASCII, section ends, counts, positive tags that fit an int, unique node
 /// and element tags, every node of a kept element defined, z = 0 (to 1e-9 of the coordinates'
-/// magnitude), the node count of every known element type. Throws InputError, one line:
+/// magnitude), the node count of every known element type, at most kMaxMeshNodes nodes and
+/// kMaxMeshElements elements (checked at their headers). Throws InputError, one line:
 /// "<file>:<line>: <what was expected> (got '<text>')".
 GmshMesh parse_gmsh(std::string_view text, const std::string& file_label);
 
-/// Largest .msh file read (bytes): some 10⁷ nodes and elements.
-constexpr std::size_t kMaxMeshFileBytes = std::size_t{1} << 30;
+/// Largest .msh file read (bytes): its text is held while it is read, and kMaxMeshNodes nodes
+/// with 17 digits take some 60 MB.
+constexpr std::size_t kMaxMeshFileBytes = std::size_t{128} << 20;
+/// Most nodes and elements (of every type, as the $Nodes and $Elements headers count them) of a
+/// .msh file read, refused at their header: a body's mesh becomes part of the problem's YAML tree
+/// (yaml_limits.hpp, some 4 values per node and 6 per element, at most kMaxYamlValues), so a
+/// larger mesh could not be used, and its reading alone would take some 200 bytes per element.
+constexpr std::uint64_t kMaxMeshNodes = 800'000;
+constexpr std::uint64_t kMaxMeshElements = 200'000;
 
 /// Reads and parses the .msh file at `path` (the label in messages is `path` as given). Throws
 /// IoError if it cannot be read, is not a regular file or is larger than kMaxMeshFileBytes,

@@ -6,6 +6,7 @@
 #include "hpcontact/io/gmsh_reader.hpp"
 #include "hpcontact/io/problem_reader.hpp"
 #include "hpcontact/io/text_file.hpp"
+#include "hpcontact/io/yaml_limits.hpp"
 
 namespace hpcontact::io {
 
@@ -60,7 +61,8 @@ const std::vector<KeySpec>& input_schema() {
               "below) and edge_sets (one per 1D physical group, named as the group, holding its "
               "lines that are edges of the body); the effective input lists these instead of this "
               "key. curves and edge_sets may be given as well; a hand-given curve replaces a "
-              "recovered arc, an edge set may not share a group's name."},
+              "recovered arc, an edge set may not share a group's name. The mesh counts towards "
+              "the problem's YAML values (see Limits)."},
       {.path = "bodies[].gmsh.file", .type = T::string, .required = true,
        .doc = "Path of the .msh file, relative to the problem file's folder."},
       {.path = "bodies[].gmsh.surface", .type = T::string,
@@ -730,11 +732,28 @@ std::string input_schema_markdown() {
         "run that never ends or runs out of memory:\n\n"
         "- Files: the problem file and a study file are read only if they are regular files (not "
         "a device such as /dev/zero, a pipe or a folder) of at most "
-     << (kMaxProblemFileBytes >> 20)
-     << " MB (the YAML tree takes some 150 bytes per byte of the file: give large meshes as a "
-        "Gmsh file); a .msh file of at most "
-     << (kMaxMeshFileBytes >> 20) << " MB; a `compare.reference` curve of at most "
+     << (kMaxYamlBytes >> 20)
+     << " MB, as is a problem given to the Python module as text (`Problem.from_yaml`), a "
+        "`--set` value (or `set=`) and the effective input a run writes (input.yaml, the problem "
+        "with its defaults filled in: it is read back to reproduce the run, so a problem whose "
+        "effective input would pass a limit is refused when read); a .msh file of at most "
+     << (kMaxMeshFileBytes >> 20) << " MB, with at most " << kMaxMeshNodes << " nodes and "
+     << kMaxMeshElements
+     << " elements (of every type, as its $Nodes and $Elements headers count them); a "
+        "`compare.reference` curve of at most "
      << (kMaxReferenceBytes >> 20) << " MB.\n"
+        "- YAML values: the tree of a problem (the file, its `--set` values, the meshes of its "
+        "Gmsh files and its defaults) or of a study holds at most "
+     << kMaxYamlValues
+     << " values: every scalar, list, map and empty value counts one, an alias what it repeats "
+        "(an alias inside what it names, a cycle, is refused). The tree takes some 500 bytes "
+        "of memory per value, up to 500 per byte of text, so the values are counted before it is "
+        "built: the reading stops at the first value beyond the limit and names its line, or, "
+        "for a flow list or map (`[...]`, `{...}`, which yaml-cpp reads whole before it reports "
+        "any of it), at its bracket. A problem at the limit takes some 600 MB and 5 s of CPU to "
+        "read. A mesh takes about 4 values per node and 6 per element, given inline or as a Gmsh "
+        "file alike: some 10⁵ elements fit, far more than a p-FEM mesh needs (it gains accuracy "
+        "by the degree).\n"
         "- Numbers: every real number of the file (values, node coordinates, numbers given where "
         "a formula may be, and the values formulas take) is 0 or of a magnitude between 1e-100 and 1e100, so that "
         "products of them stay within double precision (1e-308 to 1e308); every result is "

@@ -1,12 +1,14 @@
 // Parsing of "key.path=value" overrides and their application to a YAML tree.
 #include "hpcontact/io/overrides.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <optional>
 #include <vector>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/io/yaml_limits.hpp"
 
 namespace hpcontact::io {
 
@@ -53,9 +55,30 @@ YAML::Node find_key(const YAML::Node& map, const std::string& key) {
   return value ? value : YAML::Node(YAML::NodeType::Undefined);
 }
 
+/// The node at `steps` below `root`, or nothing if a step does not exist (const access: nothing
+/// is inserted).
+std::optional<YAML::Node> node_at(const YAML::Node& root, const std::vector<PathStep>& steps) {
+  YAML::Node current = root;
+  for (const PathStep& step : steps) {
+    const YAML::Node& view = current;
+    YAML::Node next;
+    if (step.is_index()) {
+      if (!view.IsSequence() || step.index >= view.size()) return std::nullopt;
+      next.reset(view[step.index]);
+    } else {
+      if (!view.IsMap()) return std::nullopt;
+      next.reset(find_key(view, step.key));
+      if (!next) return std::nullopt;
+    }
+    current.reset(next);
+  }
+  return current;
+}
+
 }  // namespace
 
-void apply_override(YAML::Node& root, const std::string& override_text, YamlSource& source) {
+void apply_override(YAML::Node& root, const std::string& override_text, YamlSource& source,
+                    std::size_t tree_values) {
   try {
     require_utf8(override_text, source.file() + ": --set", "override");
   } catch (const InputError& e) {
@@ -71,9 +94,24 @@ void apply_override(YAML::Node& root, const std::string& override_text, YamlSour
     throw CommandLineError(label + "malformed key path '" + path_text +
                      "' (expected keys joined by '.' with [i] list indices, e.g. "
                      "bodies[0].material.E)");
+  // Bounded as a problem file is, before yaml-cpp builds the value's tree: its bytes, and its
+  // values to what the tree leaves without the node it replaces. The label shows the start of
+  // the value only, since it may be megabytes long.
+  const std::string_view value_text = std::string_view(override_text).substr(equals + 1);
+  const std::string bound_label = source.file() + ": --set " + path_text + "=" +
+                                  one_line(value_text, 20) + ": ";
+  if (const auto too_large = exceeded_yaml_bytes(value_text.size(), "--set value"))
+    throw CommandLineError(bound_label + *too_large);
+  const std::optional<YAML::Node> replaced = node_at(root, *steps);
+  const std::size_t rest = tree_values - (replaced ? count_yaml_values(*replaced) : 0);
   YAML::Node value;
   try {
-    value = YAML::Load(override_text.substr(equals + 1));
+    if (const auto bound = exceeded_yaml_bound(value_text, "--set value",
+                                               kMaxYamlValues - std::min(rest, kMaxYamlValues)))
+      throw CommandLineError(bound_label + "at line " + std::to_string(bound->mark.line + 1) +
+                             ", column " + std::to_string(bound->mark.column + 1) + ": " +
+                             bound->what);
+    value = YAML::Load(std::string(value_text));
   } catch (const YAML::ParserException& e) {
     throw CommandLineError(label + "value is not valid YAML: " + one_line(e.msg, 200));
   }

@@ -3,6 +3,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cstddef>
 #include <string>
 
 #include "hpcontact/io/yaml_source.hpp"
@@ -14,8 +15,12 @@ namespace hpcontact::io {
 /// "[6, 4]", "{E: 1, nu: 0.3}"). Missing map keys are created, at the last level and above
 /// (so `solver.linear=ldlt` works in a file without a solver section); list elements are
 /// never created. The changed path is recorded in `source` so messages say "(from --set)".
-/// Throws InputError naming the file and the override if it is malformed, its value is not
-/// YAML, or its path runs through a scalar or a list index that does not exist.
-void apply_override(YAML::Node& root, const std::string& override_text, YamlSource& source);
+/// The value is bounded as a problem file is (yaml_limits.hpp), before its tree is built: at
+/// most kMaxYamlBytes, and at most kMaxYamlValues less the values of the rest of the tree
+/// (`tree_values`, count_yaml_values(root), less those of the node the value replaces).
+/// Throws CommandLineError naming the file and the override if it is malformed, too large, its
+/// value is not YAML, or its path runs through a scalar or a list index that does not exist.
+void apply_override(YAML::Node& root, const std::string& override_text, YamlSource& source,
+                    std::size_t tree_values);
 
 }  // namespace hpcontact::io

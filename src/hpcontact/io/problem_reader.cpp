@@ -18,6 +18,7 @@
 #include "hpcontact/io/overrides.hpp"
 #include "hpcontact/io/schema_check.hpp"
 #include "hpcontact/io/text_file.hpp"
+#include "hpcontact/io/yaml_limits.hpp"
 #include "hpcontact/io/yaml_source.hpp"
 
 namespace hpcontact::io {
@@ -876,11 +877,37 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
   YAML::Node root = load_yaml_map(yaml_text, file_label, "problem file",
                                   "a YAML map of sections (case:, bodies:, ...)");
   try {
-    for (const std::string& o : overrides) apply_override(root, o, source);
+    // Each value is bounded by what the tree leaves it; an alias repeats a replaced node
+    // wherever it stands, so the tree is counted again after each.
+    std::size_t values = overrides.empty() ? 0 : count_yaml_values(root);
+    for (const std::string& o : overrides) {
+      apply_override(root, o, source, values);
+      values = count_yaml_values(root);
+      if (values > kMaxYamlValues)
+        throw CommandLineError(file_label + ": --set " + one_line(o, 40) + ": the problem has " +
+                               std::to_string(values) + " YAML values with it, more than the " +
+                               std::to_string(kMaxYamlValues) +
+                               " an input may have: give fewer or smaller --set values");
+    }
     const std::vector<std::string> gmsh_notes = expand_gmsh_meshes(root, source);
     check_and_fill_defaults(root, source);
-    return {SpecBuilder(source).problem(root),
-            effective_yaml(root, file_label, overrides, gmsh_notes)};
+    // The effective input is read back as a problem file (a run reproduced from its own
+    // output), so it is held to the same bounds, with its defaults.
+    const std::string effective =
+        ": the effective input (input.yaml, the problem with its defaults filled in) ";
+    if (const std::size_t values = count_yaml_values(root); values > kMaxYamlValues)
+      throw InputError(file_label + effective + "has " + std::to_string(values) +
+                       " YAML values, more than the " + std::to_string(kMaxYamlValues) +
+                       " a problem file may have, so it could not be read back: give fewer "
+                       "elements");
+    ReadResult read{SpecBuilder(source).problem(root),
+                    effective_yaml(root, file_label, overrides, gmsh_notes)};
+    if (read.effective_yaml.size() > kMaxYamlBytes)
+      throw InputError(file_label + effective + "is larger than the " +
+                       in_megabytes(kMaxYamlBytes) + " a problem file may have (" +
+                       in_megabytes(read.effective_yaml.size()) +
+                       "), so it could not be read back: give fewer elements or shorter texts");
+    return read;
   } catch (const YAML::Exception& e) {
     // The checks above should leave yaml-cpp nothing to object to; if it does, keep the promise
     // that bad input surfaces as a one-line InputError.
@@ -889,7 +916,7 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
 }
 
 std::string read_input_file(const std::string& path) {
-  return read_bounded_file(path, "problem file", kMaxProblemFileBytes);
+  return read_bounded_file(path, "problem file", kMaxYamlBytes);
 }
 
 ReadResult read_problem_full(const std::string& path, const std::vector<std::string>& overrides) {

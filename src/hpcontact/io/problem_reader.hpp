@@ -17,8 +17,6 @@ constexpr double kMaxQuadraturePoints = 2e8;  ///< elements × (p + quadrature_e
 constexpr double kMaxContactPoints = 1e6;     ///< contact edges × contact[].quadrature
 constexpr double kMaxVtuPoints = 1e7;         ///< elements × (vtu_subdivisions + 1)²
 constexpr double kMinHpScale = 1e-11;         ///< hp: adapt.factor ^ adapt.steps
-/// Largest problem or study file read (bytes): its YAML tree takes ~150 bytes per byte.
-constexpr std::size_t kMaxProblemFileBytes = 16u << 20;
 
 /// A validated problem and the effective input it was built from.
 struct ReadResult {
@@ -31,8 +29,11 @@ struct ReadResult {
   std::string effective_yaml;
 };
 
-/// Parses problem-file text. `file_label` names the file in messages (and becomes spec.file);
-/// a body's gmsh.file is found relative to its folder (to the current directory if it has none).
+/// Parses problem-file text, bounded as a file is (yaml_limits.hpp: its bytes and values, then
+/// the values with the overrides and the Gmsh meshes, and the effective input's values and bytes,
+/// so that it can be read back). `file_label` names the file in messages
+/// (and becomes spec.file); a body's gmsh.file is found relative to its folder (to the current
+/// directory if it has none).
 /// `overrides` are "key.path=value" strings (--set), applied in order to the YAML tree before
 /// validation; see apply_override() in overrides.hpp. Then every bodies[].gmsh section is
 /// replaced by the mesh it names (expand_gmsh_meshes() in gmsh_import.hpp), every key is checked
@@ -49,7 +50,7 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
 ReadResult read_problem_full(const std::string& path,
                              const std::vector<std::string>& overrides = {});
 
-/// The whole text of a problem or study file (a regular file of at most kMaxProblemFileBytes);
+/// The whole text of a problem or study file (a regular file of at most kMaxYamlBytes);
 /// IoError naming the path and the reason otherwise (a folder, a device, a missing file).
 std::string read_input_file(const std::string& path);
 

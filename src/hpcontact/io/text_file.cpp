@@ -15,13 +15,11 @@
 
 namespace hpcontact::io {
 
-namespace {
-std::string megabytes(double bytes) {
+std::string in_megabytes(std::size_t bytes) {
   std::ostringstream os;
-  os << std::setprecision(3) << bytes / (1 << 20) << " MB";
+  os << std::setprecision(3) << static_cast<double>(bytes) / (1 << 20) << " MB";
   return os.str();
 }
-}  // namespace
 
 std::string read_bounded_file(const std::string& path, const std::string& what,
                               std::size_t max_bytes, bool follow_link) {
@@ -42,10 +40,12 @@ std::string read_bounded_file(const std::string& path, const std::string& what,
     throw IoError(path + ": cannot read " + what +
                   ": not a regular file (a device, a pipe or a socket, which may never end)");
   const std::string too_large = path + ": the " + what + " is larger than the " +
-                                megabytes(static_cast<double>(max_bytes)) + " it may have";
+                                in_megabytes(max_bytes) + " it may have";
   if (static_cast<std::size_t>(st.st_size) > max_bytes)
-    throw IoError(too_large + " (" + megabytes(static_cast<double>(st.st_size)) + ")");
-  std::string text(static_cast<std::size_t>(st.st_size), '\0');
+    throw IoError(too_large + " (" + in_megabytes(static_cast<std::size_t>(st.st_size)) + ")");
+  // One byte more than the file has, so that the read that finds its end needs no larger buffer
+  // (growing the string would double its memory).
+  std::string text(static_cast<std::size_t>(st.st_size) + 1, '\0');
   std::size_t got = 0;
   for (;;) {
     if (got == text.size()) {

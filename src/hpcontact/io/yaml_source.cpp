@@ -9,6 +9,7 @@
 #include <yaml-cpp/depthguard.h>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/io/yaml_limits.hpp"
 
 namespace hpcontact::io {
 
@@ -145,10 +146,15 @@ void require_utf8(std::string_view text, const std::string& file_label, const st
 
 YAML::Node load_yaml_map(const std::string& text, const std::string& file_label,
                          const std::string& what, const std::string& expected) {
+  if (const auto too_large = exceeded_yaml_bytes(text.size(), what))
+    throw InputError(file_label + ": " + *too_large);
   require_utf8(text, file_label, what);
   require_one_document(text, file_label, what);
   YAML::Node root;
   try {
+    if (const auto bound = exceeded_yaml_bound(text, what))
+      throw InputError(file_label + ":" + std::to_string(bound->mark.line + 1) + ":" +
+                       std::to_string(bound->mark.column + 1) + ": " + bound->what);
     root = YAML::Load(text);
   } catch (const YAML::DeepRecursion& e) {
     throw InputError(file_label + ":" + std::to_string(e.mark.line + 1) + ":" +

@@ -52,9 +52,11 @@ class YamlSource {
 /// that is not UTF-8: YAML is Unicode, and names end up in JSON, which must be.
 void require_utf8(std::string_view text, const std::string& file_label, const std::string& what);
 
-/// The top-level map of an input file's text (UTF-8, one YAML document, nested a few levels). InputError naming `file_label`:
-/// "<file>:<line>:<col>: YAML syntax error: ...", "<file>: empty <what>", or
-/// "<file>: must be <expected> (got ...)" when the text is not a map.
+/// The top-level map of an input file's text (UTF-8, one YAML document, nested a few levels,
+/// within kMaxYamlBytes and kMaxYamlValues: both checked before the tree is built). InputError
+/// naming `file_label`: "<file>: the <what> is larger than ...", "<file>:<line>:<col>: the <what>
+/// has more than the 1000000 YAML values ...", "<file>:<line>:<col>: YAML syntax error: ...",
+/// "<file>: empty <what>", or "<file>: must be <expected> (got ...)" when the text is not a map.
 YAML::Node load_yaml_map(const std::string& text, const std::string& file_label,
                          const std::string& what, const std::string& expected);
 

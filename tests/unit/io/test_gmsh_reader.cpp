@@ -377,8 +377,17 @@ TEST(GmshReader, RejectsBrokenFiles) {
       {"plate.msh:41: expected 'tag' and 4 node tags of a 4-node quadrilateral (got '5 1 2 5')"});
   msh_error(with(plate, "5 1 2 5 4", "5 1 2 2 4"),
             {"plate.msh:41: element 5 has corner node 2 twice"});
+  msh_error(with(plate, "1 6 1 6\n", "1 7 1 6\n"),
+            {"plate.msh:17: the header says 7 nodes, the blocks hold 6"});
+  // Counts beyond what a problem can hold are refused at the header, before the blocks.
+  msh_error(with(plate, "1 6 1 6\n", "1 800001 1 6\n"),
+            {"plate.msh:17: the header says 800001 nodes, more than the 800000 a mesh file may "
+             "have: a body's mesh becomes part of the problem's YAML tree", "give a coarser mesh"});
   msh_error(with(plate, "1 6 1 6\n", "1 99999999999999 1 6\n"),
-            {"plate.msh:17: the header says 99999999999999 nodes, the blocks hold 6"});
+            {"plate.msh:17: the header says 99999999999999 nodes, more than the 800000"});
+  msh_error(with(plate, "3 6 1 6\n", "3 200001 1 6\n"),
+            {"plate.msh:33: the header says 200001 elements, more than the 200000 a mesh file may "
+             "have"});
   msh_error(with(plate, "2 1 0 6\n", "2 1 0 99999999999999999\n"),
             {"plate.msh:25: expected one node tag (got '0 0 0')"});
   msh_error(with(plate, "2 1 0 6\n", "2 1 0 -6\n"),
