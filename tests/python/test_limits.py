@@ -11,6 +11,7 @@ import sys
 import pytest
 
 import hpcontact
+from conftest import scaled_timeout
 
 # The interpreter and module take some 40 MB; the trees refused below would take 500 MB.
 REFUSED_WITHIN = 256 << 20
@@ -32,7 +33,7 @@ def read_in_small_memory(text, set=None):
     def limit():
         resource.setrlimit(resource.RLIMIT_AS, (REFUSED_WITHIN, REFUSED_WITHIN))
     r = subprocess.run([sys.executable, "-c", CHILD], input=json.dumps({"text": text, "set": set}),
-                       capture_output=True, text=True, timeout=60, preexec_fn=limit)
+                       capture_output=True, text=True, timeout=scaled_timeout(60), preexec_fn=limit)
     assert r.returncode == 0, r.stderr[-2000:]
     return r.stdout.splitlines()[0]
 
