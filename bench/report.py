@@ -381,7 +381,33 @@ def enforcement_section(runs):
     return out
 
 
-def main(results_path, output_path):
+def blas_section(runs, reference_path):
+    """The BLAS-sensitive benchmarks run again on the reference (netlib) BLAS in the same
+    `make bench` (LD_LIBRARY_PATH to it): before and after OpenBLAS."""
+    if not reference_path or not os.path.exists(reference_path):
+        return []
+    _, ref = load(reference_path)
+    out = ["## The BLAS: reference (netlib) against the one above", "",
+           textwrap.fill("The benchmarks whose time is the factorisation's, run again in the same"
+                         " `make bench` with libblas.so.3 and liblapack.so.3 taken from Debian's"
+                         " reference BLAS and LAPACK (LD_LIBRARY_PATH): what installing OpenBLAS"
+                         " (scripts/install-deps.sh) bought. Medians of the same repetitions; the"
+                         " ratio is reference / installed.", width=95), "",
+           "| benchmark | reference BLAS | installed BLAS | ratio | factorise + solve: reference | installed |",
+           "|---|---:|---:|---:|---:|---:|"]
+    for name in sorted(ref):
+        a, b = central(ref, name), central(runs, name)
+        if not a or not b:
+            continue
+        fs = ("", "")
+        if "solve_ms" in a and "solve_ms" in b:
+            fs = (fmt_time(a["solve_ms"] * 1e-3), fmt_time(b["solve_ms"] * 1e-3))
+        out.append(f"| {name.removeprefix('BM_')} | {fmt_time(a['real_time'])} | {fmt_time(b['real_time'])} "
+                   f"| {fmt_ratio(a['real_time'], b['real_time'])} | {fs[0]} | {fs[1]} |")
+    return out + [""]
+
+
+def main(results_path, output_path, reference_blas_path=None):
     context, runs = load(results_path)
     now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     cores = len(os.sched_getaffinity(0))
@@ -412,7 +438,8 @@ def main(results_path, output_path):
             width=95),
         "",
     ]
-    lines += element_section(runs) + [""] + solve_section(runs) + [""] + enforcement_section(runs) + [""] + contact_section(runs) + [""] + adapt_section(runs) + [""] + nonlinear_section(runs) + [""]
+    lines += element_section(runs) + [""] + solve_section(runs) + [""] + blas_section(runs, reference_blas_path)
+    lines += enforcement_section(runs) + [""] + contact_section(runs) + [""] + adapt_section(runs) + [""] + nonlinear_section(runs) + [""]
     lines += kept_sections(output_path)
     with open(output_path, "w", encoding="utf-8") as f:
         f.write("\n".join(lines))
@@ -429,6 +456,6 @@ def kept_sections(path):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        sys.exit("usage: report.py RESULTS.json BENCHMARKS.md")
-    main(sys.argv[1], sys.argv[2])
+    if len(sys.argv) not in (3, 4):
+        sys.exit("usage: report.py RESULTS.json BENCHMARKS.md [REFERENCE-BLAS-RESULTS.json]")
+    main(sys.argv[1], sys.argv[2], sys.argv[3] if len(sys.argv) == 4 else None)

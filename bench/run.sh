@@ -28,5 +28,27 @@ results="$build_dir/bench/results.json"
   --benchmark_out="$results" \
   "$@"
 
-/usr/bin/python3 bench/report.py "$results" BENCHMARKS.md
+# The factorisation's benchmarks again on Debian's reference BLAS and LAPACK, when another BLAS
+# is installed (OpenBLAS, scripts/install-deps.sh): the before / after rows of BENCHMARKS.md.
+reference="$build_dir/bench/results-reference-blas.json"
+rm -f "$reference"
+multiarch=$(gcc -print-multiarch 2>/dev/null || echo x86_64-linux-gnu)
+netlib_blas="/usr/lib/$multiarch/blas/libblas.so.3"
+netlib_lapack="/usr/lib/$multiarch/lapack/liblapack.so.3"
+if [[ -f "$netlib_blas" && -f "$netlib_lapack" && "$(readlink -f "/usr/lib/$multiarch/libblas.so.3")" != "$(readlink -f "$netlib_blas")" ]]; then
+  netlib_dir=$(mktemp -d)
+  trap 'rm -rf "$netlib_dir"' EXIT
+  ln -s "$netlib_blas" "$netlib_dir/libblas.so.3"
+  ln -s "$netlib_lapack" "$netlib_dir/liblapack.so.3"
+  LD_LIBRARY_PATH="$netlib_dir" "$build_dir/bench/hpc_bench" \
+    --benchmark_filter='BM_LinearSolve|BM_HertzP8LinearSolve|BM_TwoBarsLinearStep|BM_ExampleEndToEnd' \
+    --benchmark_min_time=0.2 \
+    --benchmark_repetitions=5 \
+    --benchmark_enable_random_interleaving=true \
+    --benchmark_report_aggregates_only=true \
+    --benchmark_out_format=json \
+    --benchmark_out="$reference" > /dev/null
+fi
+
+/usr/bin/python3 bench/report.py "$results" BENCHMARKS.md $([[ -f "$reference" ]] && echo "$reference")
 echo "bench/run.sh: wrote BENCHMARKS.md (raw results: $results)"
