@@ -390,7 +390,7 @@ def blas_section(runs, reference_path):
     out = ["## The BLAS: reference (netlib) against the one above", "",
            textwrap.fill("The benchmarks whose time is the factorisation's, run again in the same"
                          " `make bench` with libblas.so.3 and liblapack.so.3 taken from Debian's"
-                         " reference BLAS and LAPACK (LD_LIBRARY_PATH): what installing OpenBLAS"
+                         " reference BLAS and LAPACK (LD_LIBRARY_PATH): what installing a fast BLAS"
                          " (scripts/install-deps.sh) bought. Medians of the same repetitions; the"
                          " ratio is reference / installed.", width=95), "",
            "| benchmark | reference BLAS | installed BLAS | ratio | factorise + solve: reference | installed |",
