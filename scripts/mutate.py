@@ -551,6 +551,11 @@ MUTATIONS = [
              "(void)X;",
              "the other body's stick–slip points left out of what rp and hp adapt to",
              ["cli:tests/cli/test_stick_slip_rp.py::test_rp_moves_a_node_of_each_bar_onto_the_stick_slip_point"]),
+    Mutation("script-newline-unchecked", "driver", S + "driver/slurm_script.cpp",
+             "  const bool control = std::any_of(value.begin(), value.end(), is_control);",
+             "  const bool control = false;",
+             "a newline in a study's name, path, override or --time ends its line of the Slurm script: the rest runs as a command",
+             ["SlurmScript.ValuesThatWouldEndTheirLineAreRefused"]),
 ]
 
 

@@ -108,3 +108,25 @@ def test_zip_links_the_load_and_the_closed_forms_force(hpcontact, root, tmp_path
                        text=True, timeout=120)
     assert r.returncode == 1 and "study.csv: no column 'contact.nothing'" in r.stderr, r.stderr
     assert "contact.half_width" in r.stderr
+
+
+def test_a_name_with_a_control_character_is_refused_with_its_place(hpcontact, root, tmp_path):
+    """The study's name, a row's label and a sweep value (which names its row) go into folders,
+    tables, the terminal and a Slurm job's script, where a newline would end a line and make the
+    rest a command of every task: one with a control character is refused, naming the file, line,
+    key and the value escaped, and nothing is run."""
+    case = os.path.join(root, "examples/lame/thick-cylinder.yaml")
+    cases = {
+        f'study: "x\\ntouch PWNED #"\ncase: {case}\nruns: [{{label: a}}]\n': "1:8: study:",
+        f'study: s\ncase: {case}\nruns: [{{label: "a\\x1b[2J"}}]\n': "3:16: runs[0].label:",
+        f'study: s\ncase: {case}\nsweep: {{title: [plain, "c\\rd"]}}\n': "3:24: sweep.title[1]:",
+    }
+    for body, place in cases.items():
+        study = tmp_path / "study.yaml"
+        study.write_text(body)
+        out = tmp_path / "out"
+        r = hpcontact("study", study, "--out", out, "-q")
+        assert r.returncode == 1, (body, r.stdout + r.stderr)
+        assert f"study.yaml:{place} must not hold a control character" in r.stderr, r.stderr
+        assert not any(c in r.stderr for c in "\x1b\r") and r.stderr.count("\n") == 1, r.stderr
+        assert not (out / "runs").exists() and not (tmp_path / "PWNED").exists()

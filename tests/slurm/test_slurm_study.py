@@ -286,3 +286,24 @@ def test_collect_of_a_folder_without_submission(exe, cluster, tmp_path):
     r = hpcontact(exe, cluster, "study", "--collect", tmp_path / "empty")
     assert r.returncode == 1
     assert "no Slurm submission here" in r.stderr, r.stderr
+
+
+def test_a_newline_cannot_put_a_command_into_the_script(exe, cluster, tmp_path):
+    """A newline in the study's name would end the comment line of slurm/array.sh that names
+    it, and one in --time its #SBATCH line: the rest would be a command every array task runs.
+    Both are refused, naming the value, and nothing is submitted or run."""
+    planted = tmp_path / "PLANTED"
+    study = write_study(str(tmp_path), "named", f"""study: "x\\ntouch {planted} #"
+runs:
+  - {{label: only, case: {P5}, set: [discretization.degree=2]}}
+""")
+    out = tmp_path / "out"
+    r = hpcontact(exe, cluster, "study", study, "--executor", "slurm", "--out", out, "--wait")
+    assert r.returncode == 1, r.stdout + r.stderr
+    assert "named.yaml:1:8: study: must not hold a control character" in r.stderr, r.stderr
+    r = hpcontact(exe, cluster, "study", six_rows(str(tmp_path)), "--executor", "slurm", "--out", out,
+                  "--wait", "--time", f"5\ntouch {planted} #")
+    assert r.returncode == 1, r.stdout + r.stderr
+    assert "--time '5\\x0atouch" in r.stderr and "nothing was submitted" in r.stderr, r.stderr
+    assert not planted.exists()
+    assert not (out / "slurm" / "submission.json").exists()

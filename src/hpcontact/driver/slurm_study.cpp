@@ -247,9 +247,10 @@ std::string require_slurm_client(const std::string& out_dir) {
               path ? path : "unset", "): run the study on a machine with Slurm's client commands "
               "(a login node of the cluster), or without --executor slurm on this machine");
   const std::string out = fs::absolute(out_dir).lexically_normal().string();
-  HPC_REQUIRE(out.find_first_of(" \t\n%\\\"'") == std::string::npos, InputError, "--out ", out,
-              ": with --executor slurm the output folder's path may not hold spaces, quotes, '%' or "
-              "'\\' (it is written on #SBATCH lines, where Slurm reads them otherwise)");
+  HPC_REQUIRE(out.find('%') == std::string::npos, InputError, "--out ", out,
+              ": with --executor slurm the output folder's path may not hold '%' (it is written on "
+              "the #SBATCH --output line, where Slurm reads it as a pattern)");
+  require_script_value("", out, "--out", true);
   return sbatch;
 }
 
@@ -261,7 +262,7 @@ SlurmSubmission submit_slurm_study(const io::StudySpec& study, const SlurmStudyO
   const int n = static_cast<int>(study.runs.size());
 
   // Every row's input as its task will read it: an invalid row is known now, not in the queue.
-  BatchJob job{study.name, out, options.program, {}, options.slurm};
+  BatchJob job{study.file, study.name, out, options.program, {}, options.slurm};
   std::vector<std::string> effective(n), problems;
   for (int i = 0; i < n; ++i) {
     const auto& run = study.runs[i];
@@ -278,6 +279,8 @@ SlurmSubmission submit_slurm_study(const io::StudySpec& study, const SlurmStudyO
   }
   HPC_REQUIRE(problems.empty(), InputError, study.file, ": ", problems.size(), " of the ", n,
               " rows cannot be run; nothing was submitted:\n  ", join(problems, "\n  "));
+  // Before anything else is asked or written: a value the script cannot carry is refused.
+  const std::string script = batch_script(job);
   if (!options.slurm.partition.empty()) require_partition(options.slurm.partition);
 
   json record = read_record(out);
@@ -297,7 +300,6 @@ SlurmSubmission submit_slurm_study(const io::StudySpec& study, const SlurmStudyO
   record["study"] = study_to_json(study);
   record["program"] = options.program;
   record["out"] = out;
-  const std::string script = batch_script(job);
   json submission = {{"job_id", ""}, {"rows", result.rows}, {"complete", complete},
                      {"options", options.slurm.sbatch_options}, {"submitted", now_utc()}};
   record["submissions"].push_back(submission);

@@ -2,6 +2,11 @@
 // batch script's quoting and content, the submission record, and running a short command.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -10,6 +15,7 @@
 #include "hpcontact/driver/slurm_queue.hpp"
 #include "hpcontact/driver/slurm_record.hpp"
 #include "hpcontact/driver/slurm_script.hpp"
+#include "hpcontact/post/output_file.hpp"
 
 using namespace hpcontact;
 using namespace hpcontact::driver;
@@ -84,6 +90,116 @@ TEST(SlurmScript, BatchScript) {
             (std::vector<std::string>{"/usr/bin/sbatch", "--parsable", "--array=1-3", "--test-only",
                                       "--mem=2G", "/shared/out/slurm/array.sh"}));
   EXPECT_EQ(task_log_path("/shared/out", "12", 3), "/shared/out/slurm/logs/12_3.out");
+}
+
+namespace {
+
+/// A folder of its own for a test, empty.
+std::filesystem::path scratch(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("hpc-slurm-" + name + "-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// A job of one row (task 0) in `dir`, whose program is a script that writes the arguments it
+/// was given into dir/argv, one a line.
+BatchJob job_in(const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir / "out" / "slurm");
+  std::filesystem::create_directories(dir / "out" / "runs");
+  post::write_text_file((dir / "out" / "slurm" / "submission.json").string(), "{}\n");
+  const auto program = dir / "fake hpcontact";
+  post::write_text_file(program.string(),
+                        "#!/bin/sh\nfor a in \"$@\"; do printf '%s\\n' \"$a\"; done > '" +
+                            (dir / "argv").string() + "'\n");
+  std::filesystem::permissions(program, std::filesystem::perms::owner_all);
+  BatchJob job;
+  job.name = "s";
+  job.file = (dir / "s.yaml").string();
+  job.out_dir = (dir / "out").string();
+  job.program = program.string();
+  job.rows = {{0, "runs/01-a", (dir / "a.yaml").string(), {}}};
+  return job;
+}
+
+/// Runs the job's script as array task 0 with bash; its exit code.
+int run_task(const std::filesystem::path& dir, const std::string& script) {
+  post::write_text_file((dir / "array.sh").string(), script);
+  return run_captured({find_on_path("env"), "SLURM_ARRAY_TASK_ID=0", find_on_path("bash"),
+                       (dir / "array.sh").string()},
+                      30)
+      .exit_code;
+}
+
+}  // namespace
+
+// What the shell would read as syntax — quotes, $(...), backticks, ';', '#', '*', spaces —
+// reaches the task's run as data: the script runs the program with exactly the arguments given
+// and nothing else.
+TEST(SlurmScript, ShellSyntaxInTheValuesIsData) {
+  const auto dir = scratch("syntax");
+  BatchJob job = job_in(dir);
+  const auto planted = dir / "PLANTED";
+  const std::string hostile = "it's \"q\" $(touch " + planted.string() + ") `touch " +
+                              planted.string() + "`; touch " + planted.string() + " # *";
+  job.name = hostile;
+  job.rows[0].case_file = (dir / hostile).string();
+  job.rows[0].sets = {"title=" + hostile, "solver.linear=lu"};
+  ASSERT_EQ(run_task(dir, batch_script(job)), 0);
+  EXPECT_FALSE(std::filesystem::exists(planted));
+  EXPECT_EQ(read_text(dir / "argv"),
+            "run\n" + job.rows[0].case_file + "\n--set\ntitle=" + hostile +
+                "\n--set\nsolver.linear=lu\n--out\n" + job.out_dir + "/runs/01-a\n-q\n");
+  std::filesystem::remove_all(dir);
+}
+
+// A value that would end its line of the script — a newline (or any control character) in the
+// study's name, a path, an override, the partition or the time — is refused, naming it, instead
+// of becoming a command that every task runs. On #SBATCH lines white space, quotes, '\' and '#'
+// are refused too: sbatch reads them there as syntax.
+TEST(SlurmScript, ValuesThatWouldEndTheirLineAreRefused) {
+  const auto dir = scratch("newline");
+  const auto planted = dir / "PLANTED";
+  const std::string line = "x\ntouch " + planted.string() + " #";
+  struct Case {
+    const char* what;  ///< named in the message
+    std::function<void(BatchJob&)> plant;
+  };
+  const std::vector<Case> cases = {
+      {"the study's name", [&](BatchJob& j) { j.name = line; }},
+      {"--partition", [&](BatchJob& j) { j.options.partition = line; }},
+      {"--time", [&](BatchJob& j) { j.options.time = line; }},
+      {"--time", [&](BatchJob& j) { j.options.time = "5 #"; }},
+      {"--partition", [&](BatchJob& j) { j.options.partition = "de'bug"; }},
+      {"--out", [&](BatchJob& j) { j.out_dir += "\ntouch " + planted.string(); }},
+      {"--out", [&](BatchJob& j) { j.out_dir += "#x"; }},
+      {"the hpcontact executable", [&](BatchJob& j) { j.program += "\r\n"; }},
+      {"its problem file", [&](BatchJob& j) { j.rows[0].case_file += line; }},
+      {"--set", [&](BatchJob& j) { j.rows[0].sets = {"title=" + line}; }},
+      {"its folder", [&](BatchJob& j) { j.rows[0].run_dir += '\x1b'; }},
+  };
+  for (const auto& c : cases) {
+    BatchJob job = job_in(dir);
+    c.plant(job);
+    try {
+      const std::string script = batch_script(job);
+      run_task(dir, script);
+      ADD_FAILURE() << c.what << ": accepted; the script:\n" << script;
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find(c.what), std::string::npos) << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos) << "the value is shown escaped: " << m;
+    }
+    EXPECT_FALSE(std::filesystem::exists(planted)) << c.what;
+    std::filesystem::remove(planted);
+  }
+  std::filesystem::remove_all(dir);
 }
 
 // A command's output, exit code and time limit; a command that is not there is found missing.
