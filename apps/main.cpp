@@ -1,6 +1,7 @@
 // The hpcontact command line: parse -> read problem -> run (discretise, solve, post, write).
 #include <CLI/CLI.hpp>
 
+#include <sys/prctl.h>
 #include <unistd.h>
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -121,6 +122,16 @@ extern "C" void stop_on_signal(int signal) {
 
 void stop_runs_on_signals() {
   for (const int signal : {SIGTERM, SIGINT, SIGHUP}) std::signal(signal, stop_on_signal);
+}
+
+/// `run --parent-pid PID`, as a study starts its runs: the run stops as on SIGTERM when its
+/// parent ends, also when the parent is killed outright (SIGKILL passes nothing on). The kernel
+/// sends SIGTERM at the parent's death (PR_SET_PDEATHSIG, set once the handlers are in place);
+/// a parent that died before that (the run is then another process's child) is the same stop.
+void stop_with_parent(pid_t parent) {
+  if (parent <= 0) return;
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (::getppid() != parent) std::raise(SIGTERM);
 }
 
 /// After a run that failed because it was asked to stop (its error said what last-good/ holds):
@@ -383,6 +394,10 @@ int main(int argc, char** argv) {
   run->add_option("--out,-o", out_dir, "output folder (default results/<case file name>)");
   run->add_option("--set", sets, "override an input value: dotted.key=value (repeatable)");
   run->add_flag("--quiet,-q", quiet, "print nothing but errors");
+  int parent_pid = 0;
+  run->add_option("--parent-pid", parent_pid,
+                  "(hpcontact study's runs) stop as on SIGTERM when process PID, the parent, ends")
+      ->group("");  // not for users: hidden from --help
   bool log_json = false;
   run->add_flag("--log-json", log_json,
                 "progress as JSON lines on stdout (kind: start, iteration, load_step, message, "
@@ -435,6 +450,7 @@ int main(int argc, char** argv) {
     if (*run) {
       const JsonLog log;
       stop_runs_on_signals();
+      stop_with_parent(parent_pid);
       try {
         const int code = run_command(file, out_dir, sets, quiet, log_json ? &log : nullptr);
         if (!std::cout)

@@ -556,6 +556,16 @@ MUTATIONS = [
              "  const bool control = false;",
              "a newline in a study's name, path, override or --time ends its line of the Slurm script: the rest runs as a command",
              ["SlurmScript.ValuesThatWouldEndTheirLineAreRefused"]),
+    Mutation("study-sighup-kills", "driver", S + "driver/study.cpp",
+             "    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&signals_, signal);",
+             "    for (const int signal : {SIGINT, SIGTERM}) sigaddset(&signals_, signal);",
+             "SIGHUP (a closed terminal) kills a study at once, orphaning its runs and leaving its staging folder",
+             ["cli:tests/cli/test_output_folder.py::test_study_passes_signals_to_its_runs[1]"]),
+    Mutation("runs-outlive-killed-study", "apps", "apps/main.cpp",
+             "  ::prctl(PR_SET_PDEATHSIG, SIGTERM);",
+             "  (void)PR_SET_PDEATHSIG;",
+             "the runs of a study killed by SIGKILL go on computing and writing on their own",
+             ["cli:tests/cli/test_output_folder.py::test_runs_of_a_killed_study_stop_and_keep_what_had_converged"]),
 ]
 
 

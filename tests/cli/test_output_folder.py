@@ -293,10 +293,10 @@ def start_long_study(exe, root, tmp_path, labels, **popen):
     return p, out, runs
 
 
-@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT])
+@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT, signal.SIGHUP])
 def test_study_passes_signals_to_its_runs(exe, root, tmp_path, sig):
-    """A study stopped by SIGTERM or SIGINT stops its running runs, waits for them, writes no
-    table and ends by that signal."""
+    """A study stopped by SIGTERM, SIGINT or SIGHUP (its terminal closed) stops its running runs,
+    waits for them, writes no table, leaves no staging folder and ends by that signal."""
     p, out, runs = start_long_study(exe, root, tmp_path, "abc")
     time.sleep(0.3)  # the runs are solving
     p.send_signal(sig)
@@ -310,6 +310,26 @@ def test_study_passes_signals_to_its_runs(exe, root, tmp_path, sig):
     assert sorted(f.parent.name for f in (out / "stopped" / "runs").glob("*/log.txt")) == \
         ["01-a", "02-b"]
     assert not (out / "stopped" / "study.csv").exists()
+    assert not list(out.glob(".hpcontact-staging-*"))
+
+
+def test_runs_of_a_killed_study_stop_and_keep_what_had_converged(exe, root, tmp_path):
+    """A study killed outright (SIGKILL: it can pass nothing on) leaves no run computing on its
+    own: each run stops as on SIGTERM within seconds, its converged load steps in last-good/,
+    and releases its folder."""
+    p, out, runs = start_long_study(exe, root, tmp_path, "ab")
+    time.sleep(1.5)  # the runs have converged load steps
+    p.kill()
+    p.communicate(timeout=60)
+    deadline = time.monotonic() + 10  # a run alone takes ~15 s; one load step a fraction of one
+    while any(alive(pid) for pid in runs) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not any(alive(pid) for pid in runs), "the runs went on after their study was killed"
+    for label in ("01-a", "02-b"):
+        assert not (out / "runs" / label / "summary.json").exists()
+        kept = json.loads((out / "runs" / label / "last-good" / "summary.json").read_text())
+        assert kept["converged"] is False and kept["load_steps"] >= 1
+        assert "stopped by SIGTERM" in kept["message"], kept["message"]
 
 
 def test_ctrl_c_on_a_study_keeps_what_its_runs_had_converged(exe, root, tmp_path):

@@ -93,3 +93,16 @@ def test_a_stopped_hp_loop_keeps_its_best_step(exe, root, tmp_path):
     best = min(estimated, key=lambda h: max(h["estimated_error"]["pressure_rel_L2"],
                                             h["estimated_error"]["shear_rel_L2"]))
     assert a["result_step"] == best["step"] and s["dofs"] == best["dofs"]
+
+
+def test_a_run_whose_study_died_before_it_started_stops(exe, root, tmp_path):
+    """A study's run is started with --parent-pid (the study): if that process is no longer its
+    parent when the run starts (the study was killed between starting it and the run's asking to
+    be told of its death), the run stops at once as on SIGTERM, writing nothing."""
+    out = tmp_path / "r"
+    p = subprocess.run([exe, "run", os.path.join(root, PARTIAL_SLIP, "small-load.yaml"), "--out",
+                        str(out), "--parent-pid", str(os.getpid() + 1_000_000)],
+                       capture_output=True, text=True, timeout=120)
+    assert p.returncode == -signal.SIGTERM, p.stderr
+    assert "stopped by SIGTERM before Newton iteration 0" in p.stderr, p.stderr
+    assert not (out / "summary.json").exists() and not (out / "last-good").exists()

@@ -847,11 +847,13 @@ std::string input_schema_markdown() {
         "the same folder fails at once.\n"
         "- Every file is checked to the disk (each write, fsync and close): a full disk ends the "
         "run with exit code 1 and a message naming the file and the system's reason.\n"
-        "- `study` passes SIGINT and SIGTERM on to its running runs, waits for them, writes no "
-        "table and ends by the same signal; each stopped run keeps what had converged in its "
-        "`runs/NN-label/last-good/`, and the logs of the runs it started are moved to "
+        "- `study` passes SIGINT, SIGTERM and SIGHUP on to its running runs, waits for them, "
+        "writes no table and ends by the same signal; each stopped run keeps what had converged "
+        "in its `runs/NN-label/last-good/`, and the logs of the runs it started are moved to "
         "`stopped/runs/NN-label/log.txt` (replaced by the next stopped study, removed by the "
-        "next finished one).\n";
+        "next finished one). A study killed outright (SIGKILL), which can pass nothing on, "
+        "leaves no run computing: each of its runs stops as on SIGTERM when the study dies, "
+        "keeping its `last-good/`.\n";
   return md.str();
 }
 
