@@ -588,6 +588,16 @@ MUTATIONS = [
              "a stop point throws outside stoppable work: a stopped run cannot write its last-good/",
              ["NewtonStop.StopPointsActOnlyInsideStoppableWork", "PointBlocks.AStopEndsThemBetweenBlocks",
               "cli:tests/cli/test_stop_signal.py::test_a_stopped_load_path_keeps_its_converged_steps[15]"]),
+    Mutation("direction-controls-raw", "apps", "apps/main.cpp",
+             "    if (point) {",
+             "    if (false) {",
+             "U+202E in a case or body name reaches the terminal and turns the rest of its line around",
+             ["cli:tests/cli/test_messages.py::test_a_newline_or_direction_control_in_a_name_does_not_reach_the_terminal"]),
+    Mutation("log-json-strict-utf8", "apps", "apps/main.cpp",
+             "    std::cout << fields.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;",
+             "    std::cout << fields.dump() << std::endl;",
+             "--log-json of a path that is not UTF-8 ends in an internal error",
+             ["cli:tests/cli/test_run.py::test_log_json_stays_json_with_a_path_that_is_not_utf8"]),
 ]
 
 

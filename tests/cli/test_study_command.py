@@ -130,3 +130,20 @@ def test_a_name_with_a_control_character_is_refused_with_its_place(hpcontact, ro
         assert f"study.yaml:{place} must not hold a control character" in r.stderr, r.stderr
         assert not any(c in r.stderr for c in "\x1b\r") and r.stderr.count("\n") == 1, r.stderr
         assert not (out / "runs").exists() and not (tmp_path / "PWNED").exists()
+
+
+def test_a_study_file_whose_name_is_not_utf8_gives_a_json_table(exe, root, tmp_path):
+    """A study file or output folder named in bytes that are not UTF-8 (Latin-1) ended the study
+    in 'internal error: [json.exception...]' when study.json was written; such a byte is U+FFFD
+    there, and study.json is JSON."""
+    folder = os.fsencode(tmp_path)
+    study = folder + b"/\xe9tude.yaml"
+    with open(study, "w") as f:
+        f.write(f"study: s\ncase: {os.path.join(root, 'examples/lame/thick-cylinder.yaml')}\n"
+                "runs: [{label: a}]\n")
+    out = folder + b"/r\xe9sultats"
+    r = subprocess.run([exe, "study", study, "--out", out, "-q"], capture_output=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    with open(out + b"/study.json", encoding="utf-8") as f:
+        doc = json.load(f)
+    assert doc["file"].endswith("\ufffdtude.yaml") and doc["runs"][0]["converged"] is True

@@ -235,7 +235,9 @@ void write_record(const std::string& stage, const std::string& script, const jso
   post::write_text_file(stage + "/array.sh", script);
   fs::permissions(stage + "/array.sh", fs::perms::owner_exec | fs::perms::group_exec,
                   fs::perm_options::add);
-  post::write_text_file(stage + "/submission.json", record.dump(2) + "\n");
+  // a path of bytes that are not UTF-8 has them as U+FFFD (the paths are shown, never opened)
+  post::write_text_file(stage + "/submission.json",
+                        record.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
 }
 
 }  // namespace
