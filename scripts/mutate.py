@@ -598,6 +598,12 @@ MUTATIONS = [
              "    std::cout << fields.dump() << std::endl;",
              "--log-json of a path that is not UTF-8 ends in an internal error",
              ["cli:tests/cli/test_run.py::test_log_json_stays_json_with_a_path_that_is_not_utf8"]),
+    Mutation("manifest-other-kind-as-edited", "driver", S + "driver/output_folder.cpp",
+             '    HPC_REQUIRE(plain_relative(line), IoError, shown(kManifest), ":", number, ": ", shown_line,',
+             '    HPC_REQUIRE(plain_relative(line) && layout_.is_output(line, false), IoError, shown(kManifest), ":", number, ": ", shown_line,',
+             "a study into a run's folder (or the other way round) is said to have an edited manifest",
+             ["OutputFolder.ManifestWithForeignNamesIsRefused",
+              "cli:tests/cli/test_output_folder.py::test_a_run_and_a_study_do_not_share_a_folder"]),
 ]
 
 

@@ -365,3 +365,23 @@ def test_study_into_a_folder_with_a_users_table_is_refused(hpcontact, root, tmp_
     assert (out / "study.csv").read_text() == "mine\n"
     r = hpcontact("study", study, "--out", tmp_path, "-q")
     assert r.returncode == 1 and "holds the study file" in r.stderr, r.stderr
+
+
+def test_a_run_and_a_study_do_not_share_a_folder(hpcontact, root, tmp_path):
+    """A study into a run's output folder, and a run into a study's, was refused as if the
+    manifest had been edited, with the advice to remove it and the results it lists; the folder
+    holds another command's results, and that is what is said, with nothing removed."""
+    study = tmp_path / "study.yaml"
+    study.write_text(f"study: s\ncase: {os.path.join(root, LAME)}\nruns:\n  - {{label: a}}\n")
+    for first, then, kind in ((["run", os.path.join(root, LAME)], ["study", study], "a study"),
+                              (["study", study], ["run", os.path.join(root, LAME)], "a run")):
+        out = tmp_path / f"{first[0]}-out"
+        r = hpcontact(*first, "--out", out, "-q")
+        assert r.returncode == 0, r.stderr
+        before = snapshot(out)
+        r = hpcontact(*then, "--out", out, "-q")
+        assert r.returncode == 1, r.stderr
+        assert f"holds results that are not {kind}'s" in r.stderr, r.stderr
+        assert "a run and a study cannot share an output folder" in r.stderr
+        assert "remove" not in r.stderr
+        assert_untouched(out, before)

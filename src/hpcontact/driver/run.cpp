@@ -100,7 +100,7 @@ bool run_output(const std::string& relative, bool folder) {
 
 }  // namespace
 
-FolderLayout run_layout() { return {"summary.json", &run_output}; }
+FolderLayout run_layout() { return {"summary.json", &run_output, "a run"}; }
 
 namespace {
 

@@ -158,7 +158,7 @@ bool study_output(const std::string& relative, bool folder) {
 
 }  // namespace
 
-FolderLayout study_layout() { return {"study.json", &study_output}; }
+FolderLayout study_layout() { return {"study.json", &study_output, "a study"}; }
 
 StudyOutcome run_study(const io::StudySpec& study, const StudyOptions& options) {
   std::optional<OutputFolder> own_folder;
