@@ -604,6 +604,12 @@ MUTATIONS = [
              "a study into a run's folder (or the other way round) is said to have an edited manifest",
              ["OutputFolder.ManifestWithForeignNamesIsRefused",
               "cli:tests/cli/test_output_folder.py::test_a_run_and_a_study_do_not_share_a_folder"]),
+    Mutation("record-rows-unchecked", "driver", S + "driver/slurm_record.cpp",
+             '      rows(s, at, "rows", runs.size(), true);',
+             "      (void)0;",
+             "a forged submission record's rows reach the collection: an internal error, or a row beyond the study",
+             ["SlurmRecord.ForgedRecordsAreRefusedByTheirKey",
+              "cli:tests/cli/test_study_command.py::test_collect_of_a_forged_submission_record_names_the_key"]),
 ]
 
 

@@ -147,3 +147,26 @@ def test_a_study_file_whose_name_is_not_utf8_gives_a_json_table(exe, root, tmp_p
     with open(out + b"/study.json", encoding="utf-8") as f:
         doc = json.load(f)
     assert doc["file"].endswith("\ufffdtude.yaml") and doc["runs"][0]["converged"] is True
+
+
+def test_collect_of_a_forged_submission_record_names_the_key(hpcontact, tmp_path):
+    """--collect of a folder whose slurm/submission.json was edited (a row that is not a number,
+    a job id that names a path) ended in 'internal error: [json.exception...]' or read beyond the
+    study; it is refused, naming the file and the key, and nothing is written."""
+    out = tmp_path / "out"
+    (out / "slurm").mkdir(parents=True)
+    (out / ".hpcontact-manifest").write_text("slurm/submission.json\n")  # a study wrote it
+    record = {"study": {"file": "s.yaml", "name": "s", "title": "", "columns": [],
+                        "runs": [{"label": "a", "case": "a.yaml", "set": [], "seed": []}]},
+              "submissions": [{"job_id": "12", "rows": [0], "complete": []}]}
+    for key, value, said in (("rows", ["0"], "submissions[0].rows must be a list of row numbers"),
+                             ("rows", [5], "submissions[0].rows must be a list of row numbers"),
+                             ("job_id", "../../x", "submissions[0].job_id must be Slurm's job id")):
+        forged = json.loads(json.dumps(record))
+        forged["submissions"][0][key] = value
+        (out / "slurm" / "submission.json").write_text(json.dumps(forged))
+        r = hpcontact("study", "--collect", out)
+        assert r.returncode == 1, r.stdout + r.stderr
+        assert "internal error" not in r.stderr and said in r.stderr, r.stderr
+        assert "submission.json: not a submission record" in r.stderr
+        assert not (out / "study.csv").exists()

@@ -241,3 +241,55 @@ TEST(SlurmRecord, RowsAndTasks) {
   EXPECT_TRUE(listed_complete(record, 0));
   EXPECT_FALSE(listed_complete(record, 1));
 }
+
+// An edited or forged submission record is refused by the key that is wrong — never an error of
+// the JSON library, nor a row beyond the study or a job id that would name a log elsewhere.
+TEST(SlurmRecord, ForgedRecordsAreRefusedByTheirKey) {
+  const auto out = scratch("record");
+  std::filesystem::create_directories(out / "slurm");
+  io::StudySpec study;
+  study.file = "s.yaml";
+  study.name = "s";
+  study.runs = {{"a", "a.yaml", {"x=1"}, {{"dofs", 710}}}, {"b", "b.yaml", {}, {}}};
+  const nlohmann::json good = {
+      {"study", study_to_json(study)},
+      {"submissions", {{{"job_id", "7"}, {"rows", {0, 1}}, {"complete", nlohmann::json::array()}}}}};
+  const auto record_file = (out / "slurm" / "submission.json").string();
+  post::write_text_file(record_file, good.dump());
+  EXPECT_EQ(read_record(out.string()), good);
+  using Edit = std::function<void(nlohmann::json&)>;
+  const std::vector<std::pair<std::string, Edit>> forged = {
+      {"the file must be an object", [](nlohmann::json& j) { j = nlohmann::json::array(); }},
+      {"submissions must be there", [](nlohmann::json& j) { j.erase("submissions"); }},
+      {"study must be an object", [](nlohmann::json& j) { j["study"] = 1; }},
+      {"study.columns must be a list of strings", [](nlohmann::json& j) { j["study"]["columns"] = {3}; }},
+      {"study.runs[1].label must be a string", [](nlohmann::json& j) { j["study"]["runs"][1]["label"] = 5; }},
+      {"study.runs[0].seed must be a list of [name, number]",
+       [](nlohmann::json& j) { j["study"]["runs"][0]["seed"] = {{"dofs"}}; }},
+      {"submissions[0].rows must be a list of row numbers from 0 to 1",
+       [](nlohmann::json& j) { j["submissions"][0]["rows"] = {"x"}; }},
+      {"submissions[0].rows must be a list of row numbers", [](nlohmann::json& j) { j["submissions"][0]["rows"] = {2}; }},
+      {"submissions[0].complete must be a list of row numbers",
+       [](nlohmann::json& j) { j["submissions"][0]["complete"] = {-1}; }},
+      {"submissions[0].job_id must be Slurm's job id",
+       [](nlohmann::json& j) { j["submissions"][0]["job_id"] = "../../../etc/x"; }},
+      {"submissions[0].submitted must be a string",
+       [](nlohmann::json& j) { j["submissions"][0]["submitted"] = 12; }},
+  };
+  for (const auto& [said, edit] : forged) {
+    nlohmann::json j = good;
+    edit(j);
+    post::write_text_file(record_file, j.dump());
+    try {
+      read_record(out.string());
+      ADD_FAILURE() << "accepted a record where " << said;
+    } catch (const IoError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find(record_file + ": not a submission record"), std::string::npos) << m;
+      EXPECT_NE(m.find(said), std::string::npos) << m;
+    }
+  }
+  post::write_text_file(record_file, "{\"study\": ");
+  EXPECT_THROW(read_record(out.string()), IoError);
+  std::filesystem::remove_all(out);
+}
