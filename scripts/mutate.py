@@ -610,6 +610,16 @@ MUTATIONS = [
              "a forged submission record's rows reach the collection: an internal error, or a row beyond the study",
              ["SlurmRecord.ForgedRecordsAreRefusedByTheirKey",
               "cli:tests/cli/test_study_command.py::test_collect_of_a_forged_submission_record_names_the_key"]),
+    Mutation("killed-run-as-exit-code", "driver", S + "driver/study.cpp",
+             "  if (WIFSIGNALED(status)) return -WTERMSIG(status);",
+             "  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);",
+             "a study row whose run was killed by a signal says 'exit code 137', not which signal",
+             ["cli:tests/cli/test_output_folder.py::test_a_run_killed_by_a_signal_is_a_failed_row_that_says_so"]),
+    Mutation("gone-summary-unsaid", "driver", S + "driver/slurm_study.cpp",
+             "    row.exit_code = complete && row.summary.is_object() ? 0 : -1;",
+             "    row.exit_code = complete ? 0 : -1;",
+             "a Slurm row found complete whose summary.json has since gone is a failed row without a reason",
+             ["SlurmCollect.ARowWhoseSummaryHasGoneIsNotASuccess"]),
 ]
 
 

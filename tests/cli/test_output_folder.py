@@ -2,6 +2,7 @@
 file it did not write, never follows a link in the folder, keeps the earlier results until it
 has succeeded, checks every write to the disk and holds a lock; a study passes SIGTERM/SIGINT on
 to its runs."""
+import csv
 import json
 import os
 import re
@@ -385,3 +386,29 @@ def test_a_run_and_a_study_do_not_share_a_folder(hpcontact, root, tmp_path):
         assert "a run and a study cannot share an output folder" in r.stderr
         assert "remove" not in r.stderr
         assert_untouched(out, before)
+
+
+def test_a_run_killed_by_a_signal_is_a_failed_row_that_says_so(exe, root, tmp_path):
+    """A run that dies by a signal (SIGKILL here, as the kernel's out-of-memory killer sends it)
+    is a failed row 'killed by signal 9'; the next row runs, the table is written and the study
+    exits 1."""
+    study = tmp_path / "study.yaml"
+    study.write_text("study: killed\nruns:\n"
+                     f"  - {{label: killed, case: {os.path.join(root, LONG[0])}, "
+                     "set: ['solver.load_steps=400', 'contact[0].enforcement=penalty']}\n"
+                     f"  - {{label: next, case: {os.path.join(root, LAME)}}}\n")
+    out = tmp_path / "out"
+    p = subprocess.Popen([exe, "study", study, "--out", out, "-j", "1"], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 30
+    while not children_of(p.pid) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    run = children_of(p.pid)
+    assert len(run) == 1, run
+    os.kill(run[0], signal.SIGKILL)
+    stdout, stderr = p.communicate(timeout=120)
+    assert p.returncode == 1, stdout + stderr
+    assert "FAILED killed" in stdout and "killed by signal 9" in stdout, stdout
+    rows = {r["label"]: r for r in csv.DictReader(open(out / "study.csv"))}
+    assert rows["killed"]["converged"] == "false" and rows["killed"]["message"].startswith("killed by signal 9")
+    assert rows["next"]["converged"] == "true"

@@ -100,11 +100,14 @@ StudyRowResult row_result(const io::StudySpec& study, const json& record, const 
   row.run_dir = out + "/" + relative_run_dir(study, i);
   const auto task = latest_task(record, i);
   if (!task) {
+    const bool complete = listed_complete(record, i);
     row.summary = read_summary(row.run_dir);
-    row.exit_code = listed_complete(record, i) && row.summary.is_object() ? 0 : -1;
+    row.exit_code = complete && row.summary.is_object() ? 0 : -1;
     if (row.exit_code != 0) {
       row.summary = nullptr;
-      row.message = "never submitted (no array task ran this row)";
+      row.message = complete ? "found complete when submitted, but its run's summary.json has gone "
+                               "since (" + row.run_dir + "): submit the study again to run it"
+                             : "never submitted (no array task ran this row)";
     }
     return row;
   }
@@ -115,6 +118,11 @@ StudyRowResult row_result(const io::StudySpec& study, const json& record, const 
     row.seconds = line->seconds;
     if (row.exit_code == 0) row.summary = read_summary(row.run_dir);
     if (row.converged()) return row;
+    if (row.exit_code == 0) {
+      row.message = "array task " + name + " ended with exit 0, but its run's summary.json has "
+                    "gone since (" + row.run_dir + "): submit the study again to run it";
+      return row;
+    }
     row.message = row.exit_code == kTaskFolderMissing
                       ? log_error_line(log)
                       : log_error_line(log, kTaskLinePrefix);

@@ -15,6 +15,8 @@
 #include "hpcontact/driver/slurm_queue.hpp"
 #include "hpcontact/driver/slurm_record.hpp"
 #include "hpcontact/driver/slurm_script.hpp"
+#include "hpcontact/driver/slurm_study.hpp"
+#include "hpcontact/driver/study.hpp"
 #include "hpcontact/post/output_file.hpp"
 
 using namespace hpcontact;
@@ -291,5 +293,45 @@ TEST(SlurmRecord, ForgedRecordsAreRefusedByTheirKey) {
   }
   post::write_text_file(record_file, "{\"study\": ");
   EXPECT_THROW(read_record(out.string()), IoError);
+  std::filesystem::remove_all(out);
+}
+
+// A row counts as done only while its run's summary.json is there: a row a submission found
+// complete, and one whose task ended with exit 0, whose summary.json has since gone, are failed
+// rows that say so (a resubmission runs them again: its rows are those without a summary).
+TEST(SlurmCollect, ARowWhoseSummaryHasGoneIsNotASuccess) {
+  const auto out = scratch("collect");
+  for (const char* sub : {"slurm/logs", "runs/01-a", "runs/02-b"})
+    std::filesystem::create_directories(out / sub);
+  io::StudySpec study;
+  study.file = "s.yaml";
+  study.name = "s";
+  study.runs = {{"a", "a.yaml", {}, {}}, {"b", "b.yaml", {}, {}}};
+  const nlohmann::json record = {
+      {"study", study_to_json(study)},
+      {"submissions", {{{"job_id", "5"}, {"rows", {1}}, {"complete", {0}}}}}};
+  post::write_text_file((out / "slurm" / "submission.json").string(), record.dump());
+  post::write_text_file((out / ".hpcontact-manifest").string(), "slurm/submission.json\n");
+  post::write_text_file((out / "slurm" / "logs" / "5_1.out").string(),
+                        "hpcontact-task: exit 0 after 1.5 s\n");
+  auto collect = [&] {
+    OutputFolder folder(out.string(), study_layout());
+    SlurmStudyOptions options;
+    options.folder = &folder;
+    return collect_slurm_study(options).rows;
+  };
+  auto rows = collect();
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_FALSE(rows[0].converged());
+  EXPECT_NE(rows[0].message.find("found complete when submitted, but its run's summary.json has "
+                                 "gone since"), std::string::npos) << rows[0].message;
+  EXPECT_FALSE(rows[1].converged());
+  EXPECT_NE(rows[1].message.find("array task 5_1 ended with exit 0, but its run's summary.json "
+                                 "has gone since"), std::string::npos) << rows[1].message;
+  for (const char* run : {"runs/01-a", "runs/02-b"})
+    post::write_text_file((out / run / "summary.json").string(), "{\"converged\": true}\n");
+  rows = collect();
+  EXPECT_TRUE(rows[0].converged()) << rows[0].message;
+  EXPECT_TRUE(rows[1].converged()) << rows[1].message;
   std::filesystem::remove_all(out);
 }
