@@ -620,6 +620,11 @@ MUTATIONS = [
              "    row.exit_code = complete ? 0 : -1;",
              "a Slurm row found complete whose summary.json has since gone is a failed row without a reason",
              ["SlurmCollect.ARowWhoseSummaryHasGoneIsNotASuccess"]),
+    Mutation("marker-kept-while-placing", "driver", S + "driver/output_folder.cpp",
+             "  if (replaced.count(marker)) unlink_listed(marker);",
+             "  (void)replaced;",
+             "the earlier summary.json stays while the new files move in: a commit failing half way leaves it beside new results",
+             ["OutputFolderAtomicity.AFailedRenameLeavesNoSummaryOfAnUnfinishedRun"]),
 ]
 
 
