@@ -92,10 +92,10 @@ private:
 };
 
 /// Starts `argv` with stdout and stderr into `log` (with the default dispositions of the
-/// forwarded signals, unblocked); waits for it. The calling thread is the child's parent until
-/// the child ends (a parent-death signal the child asks for comes when this thread ends: only
-/// if the whole study is killed, as it waits here for the child). Returns the exit code, minus the signal that
-/// ended it, or nullopt if the study was stopped before the run could start.
+/// forwarded signals, unblocked); waits for it. Returns the exit code, minus the signal that
+/// ended it, or nullopt if the study was stopped before the run could start. The calling thread
+/// is the child's parent: a parent-death signal the child asks for (run --parent-pid) comes when
+/// this thread ends, which it does not before the child has, unless the whole study is killed.
 std::optional<int> run_process(const std::vector<std::string>& argv, const fs::path& log,
                                SignalForwarder& forwarder) {
   posix_spawn_file_actions_t actions;

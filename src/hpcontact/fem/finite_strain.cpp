@@ -4,10 +4,10 @@
 // per block of points, fem/point_blocks.hpp) form Bᵀ ℂ B.
 #include "hpcontact/fem/finite_strain.hpp"
 
-#include "hpcontact/fem/point_blocks.hpp"
-
 #include <limits>
 #include <vector>
+
+#include "hpcontact/fem/point_blocks.hpp"
 
 namespace hpcontact::fem {
 
