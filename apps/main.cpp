@@ -1,6 +1,7 @@
 // The hpcontact command line: parse -> read problem -> run (discretise, solve, post, write).
 #include <CLI/CLI.hpp>
 
+#include <sys/prctl.h>
 #include <unistd.h>
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <charconv>
 #include <chrono>
 #include <csignal>
 #include <cstring>
@@ -52,7 +54,9 @@ class JsonLog {
   void event(const std::string& kind, nlohmann::json fields = nlohmann::json::object()) const {
     fields["kind"] = kind;
     fields["time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
-    std::cout << fields.dump() << std::endl;
+    // A path or text that is not UTF-8 (a file name of bytes) has its bad bytes as U+FFFD: the
+    // line stays JSON.
+    std::cout << fields.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
   }
   void progress(const std::string& line) const {
     const auto text = line.substr(line.find_first_not_of(' '));
@@ -67,20 +71,55 @@ class JsonLog {
 };
 
 /// Text for the terminal: control characters (an escape sequence in a case name or a value) as
-/// \xNN, so that nothing the input holds can drive the terminal. Newlines and tabs stay.
-std::string printable(std::string_view text) {
+/// \xNN and the Unicode controls of writing direction (U+202E turns the rest of a line around)
+/// as \uNNNN, so that nothing the input holds can drive the terminal or disguise a line. With
+/// `lines` (a message of several lines) newlines and tabs stay; without (a name, a path, a line
+/// of progress) they are escaped too, so that a value cannot begin a line of its own.
+std::string printable(std::string_view text, bool lines = false) {
   std::string out;
-  for (const char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    if ((u < 0x20 && c != '\n' && c != '\t') || u == 0x7f) {
-      char hex[5];
-      std::snprintf(hex, sizeof hex, "\\x%02x", u);
-      out += hex;
-    } else {
-      out += c;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto u = static_cast<unsigned char>(text[i]);
+    char code[9];
+    if ((u < 0x20 && !(lines && (u == '\n' || u == '\t'))) || u == 0x7f) {
+      std::snprintf(code, sizeof code, "\\x%02x", u);
+      out += code;
+      continue;
     }
+    // U+061C, U+200E-F, U+202A-E, U+2066-9 in UTF-8
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    unsigned point = 0;
+    if (u == 0xd8 && i + 1 < text.size() && byte(i + 1) == 0x9c) point = 0x061c;
+    if (u == 0xe2 && i + 2 < text.size() && (byte(i + 1) == 0x80 || byte(i + 1) == 0x81)) {
+      const unsigned p = 0x2000 + ((byte(i + 1) & 0x3f) << 6) + (byte(i + 2) & 0x3f);
+      if (p == 0x200e || p == 0x200f || (p >= 0x202a && p <= 0x202e) || (p >= 0x2066 && p <= 0x2069))
+        point = p;
+    }
+    if (point) {
+      std::snprintf(code, sizeof code, "\\u%04x", point);
+      out += code;
+      i += point == 0x061c ? 1 : 2;
+      continue;
+    }
+    out += text[i];
   }
   return out;
+}
+
+/// A message for the terminal: printable() keeping its lines.
+std::string printable_lines(std::string_view text) { return printable(text, true); }
+
+/// A check of a count option: a whole number from `low` to `high`; `meaning` says what the
+/// numbers mean, in the message of a value outside ("must be ... (got -1)").
+CLI::Validator count_between(long low, long high, const std::string& meaning) {
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        long value = 0;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (ec == std::errc() && end == text.data() + text.size() && value >= low && value <= high)
+          return "";
+        return "must be " + meaning + " (got '" + printable(text) + "')";
+      },
+      "INT");
 }
 
 /// The output folder: --out, else results/<file name without extension>.
@@ -121,6 +160,16 @@ extern "C" void stop_on_signal(int signal) {
 
 void stop_runs_on_signals() {
   for (const int signal : {SIGTERM, SIGINT, SIGHUP}) std::signal(signal, stop_on_signal);
+}
+
+/// `run --parent-pid PID`, as a study starts its runs: the run stops as on SIGTERM when its
+/// parent ends, also when the parent is killed outright (SIGKILL passes nothing on). The kernel
+/// sends SIGTERM at the parent's death (PR_SET_PDEATHSIG, set once the handlers are in place);
+/// a parent that died before that (the run is then another process's child) is the same stop.
+void stop_with_parent(pid_t parent) {
+  if (parent <= 0) return;
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (::getppid() != parent) std::raise(SIGTERM);
 }
 
 /// After a run that failed because it was asked to stop (its error said what last-good/ holds):
@@ -278,8 +327,8 @@ int study_result(const std::vector<driver::StudyRowResult>& rows, const std::str
                                        [](const driver::StudyRowResult& r) { return r.converged(); });
   if (!quiet)
     std::cout << "  " << converged << " of " << rows.size() << " runs converged; table in "
-              << out_dir << "/study.csv, summaries in " << out_dir << "/study.json, runs in "
-              << out_dir << "/runs/\n";
+              << printable(out_dir) << "/study.csv, summaries in " << printable(out_dir)
+              << "/study.json, runs in " << printable(out_dir) << "/runs/\n";
   return converged == static_cast<long>(rows.size()) ? 0 : kFailed;
 }
 
@@ -294,7 +343,7 @@ int study_command(const std::string& file, std::string out_dir, int jobs, bool q
   options.jobs = jobs > 0 ? jobs : std::max(1u, std::thread::hardware_concurrency());
   if (!quiet)
     std::cout << "hpcontact: study " << printable(file) << " ('" << printable(study.name) << "'): " << study.runs.size()
-              << " runs, " << options.jobs << " at a time, into " << out_dir << "/\n";
+              << " runs, " << options.jobs << " at a time, into " << printable(out_dir) << "/\n";
   StudyProgress progress(quiet);
   options.finished = std::ref(progress);
   const auto outcome = driver::run_study(study, options);
@@ -302,8 +351,8 @@ int study_command(const std::string& file, std::string out_dir, int jobs, bool q
     // The runs were stopped and waited for; the study ends by the signal it was sent.
     std::cerr << "\nhpcontact: study stopped by " << strsignal(outcome.signal)
               << ": its running runs were stopped (each keeps what had converged in its "
-                 "last-good/), no table written in " << out_dir << "/"
-              << (outcome.logs.empty() ? "" : "; the runs' logs are in " + outcome.logs + "/")
+                 "last-good/), no table written in " << printable(out_dir) << "/"
+              << (outcome.logs.empty() ? "" : "; the runs' logs are in " + printable(outcome.logs) + "/")
               << "\n";
     std::signal(outcome.signal, SIG_DFL);
     std::raise(outcome.signal);
@@ -347,7 +396,7 @@ int slurm_study_command(const std::string& file, std::string out_dir,
   };
   if (!quiet)
     std::cout << "hpcontact: study " << printable(file) << " ('" << printable(study.name) << "'): "
-              << study.runs.size() << " runs on Slurm, into " << out_dir << "/\n";
+              << study.runs.size() << " runs on Slurm, into " << printable(out_dir) << "/\n";
   const auto submission = driver::submit_slurm_study(study, options);
   if (!wait) {
     if (!quiet && !submission.job_id.empty())
@@ -389,6 +438,10 @@ int main(int argc, char** argv) {
   run->add_option("--out,-o", out_dir, "output folder (default results/<case file name>)");
   run->add_option("--set", sets, "override an input value: dotted.key=value (repeatable)");
   run->add_flag("--quiet,-q", quiet, "print nothing but errors");
+  int parent_pid = 0;
+  run->add_option("--parent-pid", parent_pid,
+                  "(hpcontact study's runs) stop as on SIGTERM when process PID, the parent, ends")
+      ->group("");  // not for users: hidden from --help
   bool log_json = false;
   run->add_flag("--log-json", log_json,
                 "progress as JSON lines on stdout (kind: start, iteration, load_step, message, "
@@ -405,7 +458,8 @@ int main(int argc, char** argv) {
   study->add_option("study", study_file, "study file (YAML)")->check(CLI::ExistingFile);
   study->add_option("--out,-o", out_dir, "output folder (default results/<study file name>)");
   study->add_option("--jobs,-j", jobs, "runs at a time (default: the machine's cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(count_between(0, 4096, "a number of runs at a time from 1 to 4096, or 0 for "
+                                     "the machine's cores"));
   study->add_flag("--quiet,-q", quiet, "print nothing but errors");
   std::string executor = "local", collect_dir;
   driver::SlurmOptions slurm;
@@ -416,7 +470,7 @@ int main(int argc, char** argv) {
   auto* time_limit = study->add_option("--time", slurm.time, "slurm: time limit per task, as sbatch --time");
   auto* cpus = study->add_option("--cpus-per-task", slurm.cpus_per_task,
                                  "slurm: CPUs per task (and the run's threads; default 1)")
-                   ->check(CLI::PositiveNumber);
+                   ->check(count_between(1, 4096, "a number of CPUs from 1 to 4096"));
   auto* sbatch_options = study->add_option("--sbatch-option", slurm.sbatch_options,
                                            "slurm: one more option for sbatch, as --sbatch-option=--mem=2G (repeatable)");
   auto* wait_flag = study->add_flag("--wait", wait, "slurm: follow the job until every task has ended, then collect");
@@ -427,7 +481,7 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    std::cerr << "hpcontact: " << e.what() << "\n\n" << app.help();
+    std::cerr << "hpcontact: " << printable_lines(e.what()) << "\n\n" << app.help();
     return 2;
   }
   if (help_input) {
@@ -441,6 +495,7 @@ int main(int argc, char** argv) {
     if (*run) {
       const JsonLog log;
       stop_runs_on_signals();
+      stop_with_parent(parent_pid);
       try {
         const int code = run_command(file, out_dir, sets, quiet, log_json ? &log : nullptr);
         if (!std::cout)
@@ -451,7 +506,7 @@ int main(int argc, char** argv) {
       } catch (const std::exception& e) {
         if (log_json) log.event("error", {{"message", e.what()}});
         if (stop_signal() > 0) {
-          std::cerr << "hpcontact: error: " << printable(e.what()) << '\n';
+          std::cerr << "hpcontact: error: " << printable_lines(e.what()) << '\n';
           end_by_stop_signal();
         }
         throw;
@@ -483,10 +538,10 @@ int main(int argc, char** argv) {
     std::cerr << "hpcontact: no sub-command given\n\n" << app.help();
     return 2;
   } catch (const CommandLineError& e) {
-    std::cerr << "hpcontact: error: " << printable(e.what()) << "\n\n" << (*run ? run : *study ? study : check)->help();
+    std::cerr << "hpcontact: error: " << printable_lines(e.what()) << "\n\n" << (*run ? run : *study ? study : check)->help();
     return 2;
   } catch (const Error& e) {
-    std::cerr << "hpcontact: error: " << printable(e.what()) << '\n';
+    std::cerr << "hpcontact: error: " << printable_lines(e.what()) << '\n';
     return kFailed;
   } catch (const std::bad_alloc&) {
     std::cerr << "hpcontact: error: out of memory: the problem needs more memory than this "
@@ -494,7 +549,7 @@ int main(int argc, char** argv) {
                  "output.vtu_subdivisions need less)\n";
     return kFailed;
   } catch (const std::exception& e) {
-    std::cerr << "hpcontact: internal error: " << printable(e.what()) << '\n';
+    std::cerr << "hpcontact: internal error: " << printable_lines(e.what()) << '\n';
     return kFailed;
   }
 }

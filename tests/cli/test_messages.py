@@ -149,6 +149,23 @@ def test_control_characters_are_not_sent_to_the_terminal(hpcontact, root, tmp_pa
     assert "\x1b" not in r.stdout + r.stderr and "\x07" not in r.stdout + r.stderr
 
 
+def test_a_newline_or_direction_control_in_a_name_does_not_reach_the_terminal(hpcontact, root,
+                                                                               tmp_path):
+    """A newline in a case or body name began a line of its own on the terminal (a false 'ok'
+    line), and U+202E turned the rest of the line around: in a name both are escaped (\\x0a,
+    \\u202e, as U+2066 and the other direction controls), and the name stays on its line."""
+    # YAML's escapes in a double-quoted --set value: a newline, U+202E, U+2066
+    sets = ["--set", 'case="a\\nok  X\\u202eY"', "--set", 'bodies[0].name="b\\u2066c"']
+    run = hpcontact("run", os.path.join(root, LAME), "--out", tmp_path / "out", *sets)
+    check = hpcontact("check", os.path.join(root, LAME), *sets)
+    for r in (run, check):
+        assert r.returncode == 0, r.stderr
+        assert not any(c in r.stdout + r.stderr for c in "\u202e\u2066"), r.stdout
+        assert not any(line.startswith("ok") for line in r.stdout.splitlines()), r.stdout
+    assert "(a\\x0aok  X\\u202eY)" in run.stdout.splitlines()[0], run.stdout
+    assert "case 'a\\x0aok  X\\u202eY'" in check.stdout and "body 'b\\u2066c'" in check.stdout
+
+
 def test_hp_steps_beyond_what_the_geometry_resolves_are_refused(hpcontact, root):
     """hp with the documented maximum adapt.steps: 40 (at factor 0.17) ran 40 s and failed at
     step 15 blaming the user's arc; the product factor^steps is bounded when read."""

@@ -2,8 +2,10 @@
 file it did not write, never follows a link in the folder, keeps the earlier results until it
 has succeeded, checks every write to the disk and holds a lock; a study passes SIGTERM/SIGINT on
 to its runs."""
+import csv
 import json
 import os
+import re
 import resource
 import signal
 import subprocess
@@ -137,9 +139,9 @@ def test_user_files_and_earlier_results_survive_every_run(hpcontact, exe, root, 
         assert r.returncode == code, (bad, r.stderr)
         assert results(out) == first, bad
 
-    # Stopped while solving (SIGTERM): the solve stops before its next Newton iteration, the run
-    # ends by the signal, nothing is left staged and the earlier results stay (what had
-    # converged, if a load step had, would be in last-good/: test_stop_signal.py).
+    # Stopped while solving (SIGTERM): the solve stops at its next Newton iteration or stop
+    # point, the run ends by the signal, nothing is left staged and the earlier results stay
+    # (what had converged, if a load step had, would be in last-good/: test_stop_signal.py).
     p = start(exe, "run", os.path.join(root, LONG[0]), "--out", out, *LONG[1:])
     p.send_signal(signal.SIGTERM)
     assert p.wait(timeout=scaled_timeout(60)) == -signal.SIGTERM
@@ -295,10 +297,10 @@ def start_long_study(exe, root, tmp_path, labels, **popen):
     return p, out, runs
 
 
-@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT])
+@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT, signal.SIGHUP])
 def test_study_passes_signals_to_its_runs(exe, root, tmp_path, sig):
-    """A study stopped by SIGTERM or SIGINT stops its running runs, waits for them, writes no
-    table and ends by that signal."""
+    """A study stopped by SIGTERM, SIGINT or SIGHUP (its terminal closed) stops its running runs,
+    waits for them, writes no table, leaves no staging folder and ends by that signal."""
     p, out, runs = start_long_study(exe, root, tmp_path, "abc")
     time.sleep(0.3)  # the runs are solving
     p.send_signal(sig)
@@ -312,12 +314,32 @@ def test_study_passes_signals_to_its_runs(exe, root, tmp_path, sig):
     assert sorted(f.parent.name for f in (out / "stopped" / "runs").glob("*/log.txt")) == \
         ["01-a", "02-b"]
     assert not (out / "stopped" / "study.csv").exists()
+    assert not list(out.glob(".hpcontact-staging-*"))
+
+
+def test_runs_of_a_killed_study_stop_and_keep_what_had_converged(exe, root, tmp_path):
+    """A study killed outright (SIGKILL: it can pass nothing on) leaves no run computing on its
+    own: each run stops as on SIGTERM within seconds, its converged load steps in last-good/,
+    and releases its folder."""
+    p, out, runs = start_long_study(exe, root, tmp_path, "ab")
+    time.sleep(1.5)  # the runs have converged load steps
+    p.kill()
+    p.communicate(timeout=60)
+    deadline = time.monotonic() + 10  # a run alone takes ~15 s; one load step a fraction of one
+    while any(alive(pid) for pid in runs) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not any(alive(pid) for pid in runs), "the runs went on after their study was killed"
+    for label in ("01-a", "02-b"):
+        assert not (out / "runs" / label / "summary.json").exists()
+        kept = json.loads((out / "runs" / label / "last-good" / "summary.json").read_text())
+        assert kept["converged"] is False and kept["load_steps"] >= 1
+        assert "stopped by SIGTERM" in kept["message"], kept["message"]
 
 
 def test_ctrl_c_on_a_study_keeps_what_its_runs_had_converged(exe, root, tmp_path):
     """Ctrl-C in a terminal signals the study and its runs (one process group), and the study
     passes the signal on: each run gets SIGINT twice within milliseconds. That is one request —
-    each run stops before its next Newton iteration and keeps its converged load steps in
+    each run stops at its next Newton iteration or stop point and keeps its converged load steps in
     last-good/ — not a second one that kills at once (which lost them). Each run's log, which
     says so, is in the study's stopped/runs/."""
     # its own process group, as a terminal's job
@@ -329,7 +351,8 @@ def test_ctrl_c_on_a_study_keeps_what_its_runs_had_converged(exe, root, tmp_path
     for label in ("01-a", "02-b"):
         kept = json.loads((out / "runs" / label / "last-good" / "summary.json").read_text())
         assert kept["converged"] is False and kept["load_steps"] >= 1
-        assert "stopped by SIGINT before Newton iteration" in kept["message"], kept["message"]
+        assert re.search("stopped by SIGINT (before|in) Newton iteration", kept["message"]), \
+            kept["message"]
         assert "stopped by SIGINT" in (out / "stopped" / "runs" / label / "log.txt").read_text()
 
 
@@ -345,3 +368,49 @@ def test_study_into_a_folder_with_a_users_table_is_refused(hpcontact, root, tmp_
     assert (out / "study.csv").read_text() == "mine\n"
     r = hpcontact("study", study, "--out", tmp_path, "-q")
     assert r.returncode == 1 and "holds the study file" in r.stderr, r.stderr
+
+
+def test_a_run_and_a_study_do_not_share_a_folder(hpcontact, root, tmp_path):
+    """A study into a run's output folder, and a run into a study's, was refused as if the
+    manifest had been edited, with the advice to remove it and the results it lists; the folder
+    holds another command's results, and that is what is said, with nothing removed."""
+    study = tmp_path / "study.yaml"
+    study.write_text(f"study: s\ncase: {os.path.join(root, LAME)}\nruns:\n  - {{label: a}}\n")
+    for first, then, kind in ((["run", os.path.join(root, LAME)], ["study", study], "a study"),
+                              (["study", study], ["run", os.path.join(root, LAME)], "a run")):
+        out = tmp_path / f"{first[0]}-out"
+        r = hpcontact(*first, "--out", out, "-q")
+        assert r.returncode == 0, r.stderr
+        before = snapshot(out)
+        r = hpcontact(*then, "--out", out, "-q")
+        assert r.returncode == 1, r.stderr
+        assert f"holds results that are not {kind}'s" in r.stderr, r.stderr
+        assert "a run and a study cannot share an output folder" in r.stderr
+        assert "remove" not in r.stderr
+        assert_untouched(out, before)
+
+
+def test_a_run_killed_by_a_signal_is_a_failed_row_that_says_so(exe, root, tmp_path):
+    """A run that dies by a signal (SIGKILL here, as the kernel's out-of-memory killer sends it)
+    is a failed row 'killed by signal 9'; the next row runs, the table is written and the study
+    exits 1."""
+    study = tmp_path / "study.yaml"
+    study.write_text("study: killed\nruns:\n"
+                     f"  - {{label: killed, case: {os.path.join(root, LONG[0])}, "
+                     "set: ['solver.load_steps=400', 'contact[0].enforcement=penalty']}\n"
+                     f"  - {{label: next, case: {os.path.join(root, LAME)}}}\n")
+    out = tmp_path / "out"
+    p = subprocess.Popen([exe, "study", study, "--out", out, "-j", "1"], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 30
+    while not children_of(p.pid) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    run = children_of(p.pid)
+    assert len(run) == 1, run
+    os.kill(run[0], signal.SIGKILL)
+    stdout, stderr = p.communicate(timeout=120)
+    assert p.returncode == 1, stdout + stderr
+    assert "FAILED killed" in stdout and "killed by signal 9" in stdout, stdout
+    rows = {r["label"]: r for r in csv.DictReader(open(out / "study.csv"))}
+    assert rows["killed"]["converged"] == "false" and rows["killed"]["message"].startswith("killed by signal 9")
+    assert rows["next"]["converged"] == "true"

@@ -2,6 +2,7 @@
 import csv
 import json
 import os
+import subprocess
 import xml.etree.ElementTree as ET
 
 import numpy as np
@@ -227,6 +228,22 @@ def test_log_json_is_one_event_per_line(hpcontact, root, tmp_path):
     assert r.returncode == 1
     last = json.loads(r.stdout.splitlines()[-1])
     assert last["kind"] == "error" and "p5.yaml" in last["message"]
+
+
+def test_log_json_stays_json_with_a_path_that_is_not_utf8(exe, root, tmp_path):
+    """A problem file or output folder whose name is bytes that are not UTF-8 (Latin-1) ended
+    --log-json in 'internal error: [json.exception...]'; such a byte is U+FFFD in the events,
+    every line is JSON (UTF-8), and the run succeeds."""
+    import shutil
+    case = os.fsencode(tmp_path) + b"/caf\xe9.yaml"
+    shutil.copy(os.path.join(root, "examples/lame/thick-cylinder.yaml"), case)
+    out = os.fsencode(tmp_path) + b"/r\xe9sultats"
+    r = subprocess.run([exe, "run", case, "--out", out, "--log-json"], capture_output=True,
+                       timeout=300)
+    assert r.returncode == 0, r.stderr
+    events = [json.loads(line) for line in r.stdout.decode("utf-8").splitlines()]
+    assert events[0]["kind"] == "start" and events[0]["file"].endswith("caf\ufffd.yaml")
+    assert events[-1]["kind"] == "done" and os.path.exists(out + b"/summary.json")
 
 
 @pytest.mark.parametrize("case", ["examples/hertz/p5.yaml", "examples/axle-ring/ring2-p4.yaml",

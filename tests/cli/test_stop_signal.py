@@ -1,10 +1,12 @@
 """A run asked to stop (SIGTERM from a scheduler's time limit, SIGINT from Ctrl-C) keeps what had
 converged instead of being killed with nothing: the solve stops before its next Newton
-iteration, the run ends as a failed run (the converged state in last-good/, converged: false,
-no summary.json of its own in the folder, the earlier results left as they were), and the
-process ends by the signal it was sent."""
+iteration, or within a moment inside one (its assembly or factorisation given up), the run ends
+as a failed run (the converged state in last-good/, converged: false, no summary.json of its own
+in the folder, the earlier results left as they were), and the process ends by the signal it was
+sent."""
 import json
 import os
+import re
 import signal
 import subprocess
 import time
@@ -52,7 +54,7 @@ def test_a_stopped_load_path_keeps_its_converged_steps(exe, root, tmp_path, sig)
                              "load step 1:", sig)
     assert code == -sig
     name = signal.Signals(sig).name
-    assert f"stopped by {name} before Newton iteration" in err and "load step 2" in err
+    assert re.search(f"stopped by {name} (before|in) Newton iteration", err) and "load step 2" in err
     assert not (out / "summary.json").exists()
     s = last_good(out)
     assert s["converged"] is False and s["load_steps"] == 1
@@ -66,7 +68,7 @@ def test_the_same_signal_twice_at_once_is_one_stop(exe, root, tmp_path):
     code, err, _ = run_until(exe, os.path.join(root, PARTIAL_SLIP, "small-load.yaml"), out,
                              "load step 1:", signal.SIGTERM, again=0.02)
     assert code == -signal.SIGTERM
-    assert "stopped by SIGTERM before Newton iteration" in err, err
+    assert re.search("stopped by SIGTERM (before|in) Newton iteration", err), err
     assert last_good(out)["load_steps"] == 1
 
 
@@ -95,3 +97,49 @@ def test_a_stopped_hp_loop_keeps_its_best_step(exe, root, tmp_path):
     best = min(estimated, key=lambda h: max(h["estimated_error"]["pressure_rel_L2"],
                                             h["estimated_error"]["shear_rel_L2"]))
     assert a["result_step"] == best["step"] and s["dofs"] == best["dofs"]
+
+
+def test_a_run_whose_study_died_before_it_started_stops(exe, root, tmp_path):
+    """A study's run is started with --parent-pid (the study): if that process is no longer its
+    parent when the run starts (the study was killed between starting it and the run's asking to
+    be told of its death), the run stops at once as on SIGTERM, writing nothing."""
+    out = tmp_path / "r"
+    p = subprocess.run([exe, "run", os.path.join(root, PARTIAL_SLIP, "small-load.yaml"), "--out",
+                        str(out), "--parent-pid", str(os.getpid() + 1_000_000)],
+                       capture_output=True, text=True, timeout=120)
+    assert p.returncode == -signal.SIGTERM, p.stderr
+    assert "the solver stopped: stopped by SIGTERM" in p.stderr, p.stderr
+    assert not (out / "summary.json").exists() and not (out / "last-good").exists()
+
+
+def test_a_stop_inside_a_long_newton_iteration_takes_effect_at_once(exe, root, tmp_path):
+    """A finite-strain block at p = 20 with 44 extra Gauss points a direction: each Newton
+    iteration assembles one element's tangent for seconds. SIGTERM a third of the way into the
+    first iteration of load step 2 ends the run well within that iteration's time (it waited for
+    the whole iteration), as stopped: load step 1 in last-good/, the message naming the
+    iteration given up."""
+    out = tmp_path / "r"
+    args = [exe, "run", os.path.join(root, "tests", "cli", "data", "crushed-block.yaml"), "--out",
+            str(out), "--log-json", "--set", "bodies[0].constraints[1].uy=-1e-3", "--set",
+            "discretization.degree=20", "--set", "discretization.quadrature_extra=44", "--set",
+            "solver.load_steps=3", "--set", "output.vtu=false"]
+    p = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    events = []
+    for line in p.stdout:
+        events.append(json.loads(line))
+        if events[-1]["kind"] == "load_step":
+            break
+    assert events[-1]["kind"] == "load_step", p.communicate(timeout=120)[1]
+    # the last iteration of step 1 evaluated the converged state: an assembly, no factorisation
+    assembly = events[-1]["time_s"] - [e for e in events if e["kind"] == "iteration"][-1]["time_s"]
+    assert assembly > 1.0, f"an assembly of {assembly} s is too short to be caught inside"
+    time.sleep(0.3 * assembly)
+    sent = time.monotonic()
+    p.send_signal(signal.SIGTERM)
+    _, err = p.communicate(timeout=300)
+    took = time.monotonic() - sent
+    assert p.returncode == -signal.SIGTERM, err
+    assert took < 0.5 * assembly, f"ended {took:.2f} s after SIGTERM (an assembly: {assembly:.2f} s)"
+    assert "load step 2" in err and "stopped by SIGTERM in Newton iteration 0 (while assembling)" in err, err
+    kept = last_good(out)
+    assert kept["converged"] is False and kept["load_steps"] == 1

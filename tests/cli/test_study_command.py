@@ -110,3 +110,65 @@ def test_zip_links_the_load_and_the_closed_forms_force(hpcontact, root, tmp_path
                        text=True, timeout=scaled_timeout(120))
     assert r.returncode == 1 and "study.csv: no column 'contact.nothing'" in r.stderr, r.stderr
     assert "contact.half_width" in r.stderr
+
+
+def test_a_name_with_a_control_character_is_refused_with_its_place(hpcontact, root, tmp_path):
+    """The study's name, a row's label and a sweep value (which names its row) go into folders,
+    tables, the terminal and a Slurm job's script, where a newline would end a line and make the
+    rest a command of every task: one with a control character is refused, naming the file, line,
+    key and the value escaped, and nothing is run."""
+    case = os.path.join(root, "examples/lame/thick-cylinder.yaml")
+    cases = {
+        f'study: "x\\ntouch PWNED #"\ncase: {case}\nruns: [{{label: a}}]\n': "1:8: study:",
+        f'study: s\ncase: {case}\nruns: [{{label: "a\\x1b[2J"}}]\n': "3:16: runs[0].label:",
+        f'study: s\ncase: {case}\nsweep: {{title: [plain, "c\\rd"]}}\n': "3:24: sweep.title[1]:",
+    }
+    for body, place in cases.items():
+        study = tmp_path / "study.yaml"
+        study.write_text(body)
+        out = tmp_path / "out"
+        r = hpcontact("study", study, "--out", out, "-q")
+        assert r.returncode == 1, (body, r.stdout + r.stderr)
+        assert f"study.yaml:{place} must not hold a control character" in r.stderr, r.stderr
+        assert not any(c in r.stderr for c in "\x1b\r") and r.stderr.count("\n") == 1, r.stderr
+        assert not (out / "runs").exists() and not (tmp_path / "PWNED").exists()
+
+
+def test_a_study_file_whose_name_is_not_utf8_gives_a_json_table(exe, root, tmp_path):
+    """A study file or output folder named in bytes that are not UTF-8 (Latin-1) ended the study
+    in 'internal error: [json.exception...]' when study.json was written; such a byte is U+FFFD
+    there, and study.json is JSON."""
+    folder = os.fsencode(tmp_path)
+    study = folder + b"/\xe9tude.yaml"
+    with open(study, "w") as f:
+        f.write(f"study: s\ncase: {os.path.join(root, 'examples/lame/thick-cylinder.yaml')}\n"
+                "runs: [{label: a}]\n")
+    out = folder + b"/r\xe9sultats"
+    r = subprocess.run([exe, "study", study, "--out", out, "-q"], capture_output=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    with open(out + b"/study.json", encoding="utf-8") as f:
+        doc = json.load(f)
+    assert doc["file"].endswith("\ufffdtude.yaml") and doc["runs"][0]["converged"] is True
+
+
+def test_collect_of_a_forged_submission_record_names_the_key(hpcontact, tmp_path):
+    """--collect of a folder whose slurm/submission.json was edited (a row that is not a number,
+    a job id that names a path) ended in 'internal error: [json.exception...]' or read beyond the
+    study; it is refused, naming the file and the key, and nothing is written."""
+    out = tmp_path / "out"
+    (out / "slurm").mkdir(parents=True)
+    (out / ".hpcontact-manifest").write_text("slurm/submission.json\n")  # a study wrote it
+    record = {"study": {"file": "s.yaml", "name": "s", "title": "", "columns": [],
+                        "runs": [{"label": "a", "case": "a.yaml", "set": [], "seed": []}]},
+              "submissions": [{"job_id": "12", "rows": [0], "complete": []}]}
+    for key, value, said in (("rows", ["0"], "submissions[0].rows must be a list of row numbers"),
+                             ("rows", [5], "submissions[0].rows must be a list of row numbers"),
+                             ("job_id", "../../x", "submissions[0].job_id must be Slurm's job id")):
+        forged = json.loads(json.dumps(record))
+        forged["submissions"][0][key] = value
+        (out / "slurm" / "submission.json").write_text(json.dumps(forged))
+        r = hpcontact("study", "--collect", out)
+        assert r.returncode == 1, r.stdout + r.stderr
+        assert "internal error" not in r.stderr and said in r.stderr, r.stderr
+        assert "submission.json: not a submission record" in r.stderr
+        assert not (out / "study.csv").exists()

@@ -39,3 +39,18 @@ def test_unknown_executor(hpcontact, tmp_path):
     r = hpcontact("study", STUDY, "--executor", "pbs", "--out", tmp_path / "out")
     assert r.returncode == 2
     assert "--executor" in r.stderr and "pbs" in r.stderr
+
+
+@pytest.mark.parametrize("args, named", [
+    (["--jobs", "-1"], "--jobs: must be a number of runs at a time from 1 to 4096, or 0 for the "
+                       "machine's cores (got '-1')"),
+    (["--jobs", "99999999999"], "(got '99999999999')"),
+    (["--executor", "slurm", "--cpus-per-task", "0"], "--cpus-per-task: must be a number of CPUs "
+                                                      "from 1 to 4096 (got '0')"),
+])
+def test_a_count_out_of_range_says_which_counts_are_taken(hpcontact, tmp_path, args, named):
+    """--jobs -1 was refused with a bound of 309 digits (the largest double); a count out of its
+    range now says what the option takes."""
+    r = hpcontact("study", STUDY, "--out", tmp_path / "out", *args)
+    assert r.returncode == 2, r.stderr
+    assert named in r.stderr and len(r.stderr.splitlines()[0]) < 200, r.stderr

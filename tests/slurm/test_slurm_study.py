@@ -292,3 +292,56 @@ def test_collect_of_a_folder_without_submission(exe, cluster, tmp_path):
     r = hpcontact(exe, cluster, "study", "--collect", tmp_path / "empty")
     assert r.returncode == 1
     assert "no Slurm submission here" in r.stderr, r.stderr
+
+
+def test_a_newline_cannot_put_a_command_into_the_script(exe, cluster, tmp_path):
+    """A newline in the study's name would end the comment line of slurm/array.sh that names
+    it, and one in --time its #SBATCH line: the rest would be a command every array task runs.
+    Both are refused, naming the value, and nothing is submitted or run."""
+    planted = tmp_path / "PLANTED"
+    study = write_study(str(tmp_path), "named", f"""study: "x\\ntouch {planted} #"
+runs:
+  - {{label: only, case: {P5}, set: [discretization.degree=2]}}
+""")
+    out = tmp_path / "out"
+    r = hpcontact(exe, cluster, "study", study, "--executor", "slurm", "--out", out, "--wait")
+    assert r.returncode == 1, r.stdout + r.stderr
+    assert "named.yaml:1:8: study: must not hold a control character" in r.stderr, r.stderr
+    r = hpcontact(exe, cluster, "study", six_rows(str(tmp_path)), "--executor", "slurm", "--out", out,
+                  "--wait", "--time", f"5\ntouch {planted} #")
+    assert r.returncode == 1, r.stdout + r.stderr
+    assert "--time '5\\x0atouch" in r.stderr and "nothing was submitted" in r.stderr, r.stderr
+    assert not planted.exists()
+    assert not (out / "slurm" / "submission.json").exists()
+
+
+def test_a_row_whose_summary_has_gone_is_not_a_success(exe, cluster, tmp_path):
+    """A row counts as done only while its run's summary.json is there: one a submission found
+    complete (run before, here by the local executor) and one whose task ended with exit 0,
+    whose summary.json has since gone, are failed rows that say so, and the next submission runs
+    both again."""
+    study = write_study(str(tmp_path), "two", f"""study: two
+runs:
+  - {{label: a, case: {P5}, set: [discretization.degree=2]}}
+  - {{label: b, case: {P5}, set: [discretization.degree=3]}}
+""")
+    out = tmp_path / "out"
+    r = hpcontact(exe, cluster, "study", study, "--out", out, "-q")  # the local executor
+    assert r.returncode == 0, r.stdout + r.stderr
+    (out / "runs" / "02-b" / "summary.json").unlink()
+    r = hpcontact(exe, cluster, "study", study, "--executor", "slurm", "--out", out, "--wait")
+    assert r.returncode == 0, r.stdout + r.stderr + cluster.logs()
+    assert "1 rows already have a successful run" in r.stdout, r.stdout
+    job = submissions(out)[-1]["job_id"]
+    for label in ("01-a", "02-b"):
+        (out / "runs" / label / "summary.json").unlink()
+    r = hpcontact(exe, cluster, "study", "--collect", out)
+    assert r.returncode == 1 and "0 of 2 runs converged" in r.stdout, r.stdout + r.stderr
+    assert "FAILED a: found complete when submitted, but its run's summary.json has gone since" \
+        in r.stdout, r.stdout
+    assert f"FAILED b: array task {job}_1 ended with exit 0, but its run's summary.json has gone " \
+        "since" in r.stdout, r.stdout
+    assert [row["converged"] for row in table(out)] == ["false", "false"]
+    r = hpcontact(exe, cluster, "study", study, "--executor", "slurm", "--out", out, "--wait")
+    assert r.returncode == 0 and "2 tasks (rows 0-1" in r.stdout, r.stdout + r.stderr
+    assert [row["converged"] for row in table(out)] == ["true", "true"]

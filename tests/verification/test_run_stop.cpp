@@ -1,6 +1,7 @@
 // A run asked to stop while in a solve with no Newton iteration left to end at (a plain run's
 // linear solve, an adaptive loop's last one): it ends as stopped, as its scheduler reports it
-// cancelled — the plain run writing nothing, the loop keeping its result as the last good one.
+// cancelled — the plain run writing nothing (asked while it assembles, at once), the loop keeping
+// its result as the last good one.
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -52,12 +53,38 @@ TEST(RunStop, ALinearRunAskedToStopWritesNoResults) {
   driver::run_problem(spec, options);  // the same run without a stop request: its results
   EXPECT_TRUE(fs::exists(finished / "summary.json"));
 
+  // asked once the linear solve is done: no Newton iteration or stop point left to end at
   options.out_dir = stopped.string();
-  request_stop(SIGTERM);
+  options.progress = [](const std::string& line) {
+    if (line.rfind("solved:", 0) == 0) request_stop(SIGTERM);
+  };
   expect_stopped<NumericalError>(spec, options, "stopped by SIGTERM before the results were written");
+  EXPECT_FALSE(fs::exists(stopped / "summary.json"));
+  // asked before: the assembly is given up at its first stop point
+  options.progress = {};
+  request_stop(SIGTERM);
+  expect_stopped<NumericalError>(spec, options, "the solver stopped: stopped by SIGTERM while "
+                                                "assembling, before anything had converged");
   EXPECT_FALSE(fs::exists(stopped / "summary.json"));
   fs::remove_all(stopped);
   fs::remove_all(finished);
+}
+
+// A contact run asked to stop while it assembles its system, before any load step (a degree-30
+// Hertz run spends seconds there): the assembly is given up, and the run ends as stopped with
+// nothing to keep — no summary.json, no last-good/.
+TEST(RunStop, AContactRunAskedToStopWhileItAssemblesEndsThere) {
+  const auto spec = io::read_problem(std::string(HPC_SOURCE_DIR) + "/examples/hertz/p5.yaml",
+                                     {"output.vtu=false"});
+  const fs::path stopped = fresh_folder("assembling");
+  driver::RunOptions options;
+  options.out_dir = stopped.string();
+  request_stop(SIGTERM);
+  expect_stopped<NumericalError>(spec, options, "p5.yaml: the solver stopped: stopped by SIGTERM "
+                                                "while assembling, before anything had converged");
+  EXPECT_FALSE(fs::exists(stopped / "summary.json"));
+  EXPECT_FALSE(fs::exists(stopped / "last-good"));
+  fs::remove_all(stopped);
 }
 
 // An adaptive run asked to stop after its loop's last solve (here while it reports its last hp

@@ -13,6 +13,9 @@ namespace {
 std::atomic<int> requested{0};
 static_assert(std::atomic<int>::is_always_lock_free, "request_stop must be async-signal-safe");
 
+/// How many StoppableWork objects live.
+std::atomic<int> armed{0};
+
 }  // namespace
 
 void request_stop(int signal) { requested.store(signal > 0 ? signal : -1); }
@@ -30,6 +33,17 @@ const char* stop_reason() {
     case SIGHUP: return "stopped by SIGHUP";
     default: return "stopped on request";
   }
+}
+
+Stopped::Stopped(const std::string& doing)
+    : Error(std::string(stop_reason()) + " while " + doing), doing_(doing) {}
+
+StoppableWork::StoppableWork() { ++armed; }
+
+StoppableWork::~StoppableWork() { --armed; }
+
+void stop_point(const char* doing) {
+  if (requested.load(std::memory_order_relaxed) != 0 && armed.load() > 0) throw Stopped(doing);
 }
 
 }  // namespace hpcontact

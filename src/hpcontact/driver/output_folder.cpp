@@ -235,10 +235,18 @@ void OutputFolder::read_manifest() {
     ++number;
     if (line.empty()) continue;
     // Only names we write are ever taken from it: an edited manifest cannot make us remove
-    // anything else.
-    HPC_REQUIRE(plain_relative(line) && layout_.is_output(line, false), IoError, shown(kManifest),
-                ":", number, ": '", line.substr(0, 200), "' is not a file hpcontact writes; the "
-                "manifest was edited: remove it and the results it lists");
+    // anything else. A name of another kind of results is that kind's folder (a study's results
+    // where a run would write, or the other way round), which this one must not take over.
+    const std::string shown_line = "'" + line.substr(0, 200) + "'";
+    HPC_REQUIRE(plain_relative(line), IoError, shown(kManifest), ":", number, ": ", shown_line,
+                " is not a path inside the folder as hpcontact writes them (relative, without '.' "
+                "or '..' steps): the manifest was edited; choose another output folder (nothing "
+                "was changed)");
+    HPC_REQUIRE(layout_.is_output(line, false), IoError, target_, ": holds results that are not ",
+                layout_.kind, "'s: its manifest (", kManifest, ":", number, ") lists ", shown_line,
+                ", which ", layout_.kind, " never writes; the folder holds another command's "
+                "results (a run and a study cannot share an output folder) or its manifest was "
+                "edited: choose another output folder (nothing was changed)");
     manifest_.insert(line);
   }
 }

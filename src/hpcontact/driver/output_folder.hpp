@@ -15,6 +15,8 @@ struct FolderLayout {
   /// Whether `relative` (a '/'-separated path inside the folder) names a file (`folder` false)
   /// or a folder (`folder` true) that this kind of run writes.
   bool (*is_output)(const std::string& relative, bool folder) = nullptr;
+  /// Whose results they are, for messages: "a run", "a study".
+  std::string kind;
 };
 
 /// An output folder held for one run or study; docs/input.md ("The output folder") says the same

@@ -101,7 +101,7 @@ bool run_output(const std::string& relative, bool folder) {
 
 }  // namespace
 
-FolderLayout run_layout() { return {"summary.json", &run_output}; }
+FolderLayout run_layout() { return {"summary.json", &run_output, "a run"}; }
 
 namespace {
 
@@ -485,6 +485,19 @@ nlohmann::json hp_iteration_json(const adapt::HpIteration& it) {
   return j;
 }
 
+/// solve(), whose assembly (or a linear solve's factorisation) a stop request may give up before
+/// anything has converged (core/stop.hpp: Stopped): the run then ends as stopped with nothing to
+/// keep, the output folder as it was.
+template <class Solve>
+auto unless_stopped(const model::ProblemSpec& spec, const Solve& solve) {
+  try {
+    return solve();
+  } catch (const Stopped& e) {
+    throw NumericalError(spec.file + ": the solver stopped: " + e.what() +
+                         ", before anything had converged; the output folder is left as it was");
+  }
+}
+
 }  // namespace
 
 RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options) {
@@ -670,13 +683,13 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     model::LinearSolveOptions lo;
     lo.condense = spec.discretization.condense;
     lo.solver = solve::linear_solver_kind(spec.solver.linear, spec.solver.where.str() + ".linear");
-    const auto sol = [&] {
+    const auto sol = unless_stopped(spec, [&] {
       try {
         return model::solve_linear(d, lo);
       } catch (const NumericalError& e) {  // named as the nonlinear solve's failures are
         throw NumericalError(spec.file + ": the solver stopped: " + e.what());
       }
-    }();
+    });
     std::ostringstream os;
     os << "solved: system of " << sol.n_system << " unknowns, assembly " << sol.assembly_seconds
        << " s, factorisation and solve " << sol.solve_seconds << " s";
@@ -729,7 +742,8 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
                                 results);
       };
     }
-    auto sol = model::solve_contact(spec, d, options.progress, {}, on_step);
+    auto sol = unless_stopped(
+        spec, [&] { return model::solve_contact(spec, d, options.progress, {}, on_step); });
     if (!step_files.empty()) {
       post::write_pvd((fs::path(stage) / "solution.pvd").string(), step_files, step_times);
       if (!contact_files.empty())

@@ -15,6 +15,92 @@ namespace {
 /// A record of thousands of rows is a few MB.
 constexpr std::size_t kMaxRecordBytes = 64u << 20;
 
+/// The checks of a record's shape: every key the collection reads, of the type it reads it as,
+/// so that an edited or forged record is named by its key path instead of failing in the JSON
+/// library, and a row or job id cannot lead outside the study (a row beyond it, a log's path).
+class RecordShape {
+public:
+  explicit RecordShape(std::string path) : path_(std::move(path)) {}
+
+  void check(const json& record) {
+    require(record.is_object(), "", "an object {study, submissions, ...}", record);
+    const json& study = member(record, "", "study");
+    require(study.is_object(), "study", "an object {file, name, title, columns, runs}", study);
+    for (const char* key : {"file", "name", "title"}) text(study, "study", key);
+    texts(study, "study", "columns");
+    const json& runs = member(study, "study", "runs");
+    require(runs.is_array(), "study.runs", "a list of rows", runs);
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      const std::string at = "study.runs[" + std::to_string(i) + "]";
+      require(runs[i].is_object(), at, "an object {label, case, set, seed}", runs[i]);
+      text(runs[i], at, "label");
+      text(runs[i], at, "case");
+      texts(runs[i], at, "set");
+      const json& seed = member(runs[i], at, "seed");
+      require(seed.is_array(), at + ".seed", "a list of [name, number]", seed);
+      for (const auto& s : seed)
+        require(s.is_array() && s.size() == 2 && s[0].is_string() && s[1].is_number(),
+                at + ".seed", "a list of [name, number]", s);
+    }
+    const json& submissions = member(record, "", "submissions");
+    require(submissions.is_array(), "submissions", "a list of submissions", submissions);
+    for (std::size_t i = 0; i < submissions.size(); ++i) {
+      const std::string at = "submissions[" + std::to_string(i) + "]";
+      const json& s = submissions[i];
+      require(s.is_object(), at, "an object {job_id, rows, complete, ...}", s);
+      const json& id = member(s, at, "job_id");
+      require(id.is_string() && id.get<std::string>().find_first_not_of("0123456789") ==
+                                    std::string::npos,
+              at + ".job_id", "Slurm's job id, digits (or \"\" if never submitted)", id);
+      rows(s, at, "rows", runs.size(), true);
+      rows(s, at, "complete", runs.size(), false);
+      if (s.contains("submitted")) text(s, at, "submitted");
+    }
+  }
+
+private:
+  [[noreturn]] void fail(const std::string& key, const std::string& what, const json& got) const {
+    std::string shown = got.dump(-1, ' ', false, json::error_handler_t::replace);
+    if (shown.size() > 60) shown = shown.substr(0, 57) + "...";
+    throw IoError(path_ + ": not a submission record of hpcontact study --executor slurm: " +
+                  (key.empty() ? "the file" : key) + " must be " + what + " (got " + shown +
+                  "); the file was edited: restore it, or move it away and submit the study "
+                  "again (the rows with a successful run are not run again)");
+  }
+  void require(bool ok, const std::string& key, const std::string& what, const json& got) const {
+    if (!ok) fail(key, what, got);
+  }
+  const json& member(const json& object, const std::string& at, const std::string& key) const {
+    const std::string where = at.empty() ? key : at + "." + key;
+    if (!object.contains(key)) fail(where, "there", nullptr);
+    return object.at(key);
+  }
+  void text(const json& object, const std::string& at, const std::string& key) const {
+    const json& v = member(object, at, key);
+    require(v.is_string(), at + "." + key, "a string", v);
+  }
+  void texts(const json& object, const std::string& at, const std::string& key) const {
+    const json& v = member(object, at, key);
+    require(v.is_array(), at + "." + key, "a list of strings", v);
+    for (const auto& e : v) require(e.is_string(), at + "." + key, "a list of strings", e);
+  }
+  /// A list of row numbers of a study of n rows (optional unless `required`).
+  void rows(const json& object, const std::string& at, const std::string& key, std::size_t n,
+            bool required) const {
+    if (!required && !object.contains(key)) return;
+    const json& v = member(object, at, key);
+    const std::string what = n == 0 ? std::string("empty (the study has no rows)")
+                                    : "a list of row numbers from 0 to " + std::to_string(n - 1);
+    require(v.is_array(), at + "." + key, what, v);
+    for (const auto& r : v)
+      require(r.is_number_integer() && r.get<long long>() >= 0 &&
+                  r.get<long long>() < static_cast<long long>(n),
+              at + "." + key, what, r);
+  }
+
+  std::string path_;
+};
+
 /// "YYYY-MM-DDTHH:MM:SSZ" (the record's "submitted") as seconds since the epoch; 0 if unreadable.
 std::time_t utc_seconds(const std::string& text) {
   std::tm t{};
@@ -57,9 +143,10 @@ json read_record(const std::string& out) {
   if (!fs::exists(path, ec)) return nullptr;
   json record = json::parse(io::read_bounded_file(path, "submission record", kMaxRecordBytes, false),
                             nullptr, false);
-  HPC_REQUIRE(record.is_object() && record.contains("study") && record.contains("submissions"),
-              IoError, path, ": not a submission record of hpcontact study --executor slurm; "
-              "the file was edited: remove the folder's slurm/ and submit again");
+  HPC_REQUIRE(!record.is_discarded(), IoError, path, ": not a submission record of hpcontact "
+              "study --executor slurm: not JSON; the file was edited: restore it, or move it "
+              "away and submit the study again (the rows with a successful run are not run again)");
+  RecordShape(path).check(record);
   return record;
 }
 

@@ -21,7 +21,9 @@ inline const char* const kSubmissionRecord = "slurm/submission.json";
 nlohmann::json study_to_json(const io::StudySpec& study);
 io::StudySpec study_from_json(const nlohmann::json& j);
 
-/// OUT/slurm/submission.json, or null if there is none. IoError if it is not a record we wrote.
+/// OUT/slurm/submission.json, or null if there is none. IoError if it is not a record we wrote:
+/// not JSON, or a key the collection reads missing or of another type, a row number beyond the
+/// study's rows or a job id that is not digits (named by its key path).
 nlohmann::json read_record(const std::string& out);
 
 /// The submissions of a record that reached the scheduler (a job id), oldest first.

@@ -23,6 +23,7 @@ struct BatchRow {
 };
 
 struct BatchJob {
+  std::string file;     ///< the study file, for messages
   std::string name;     ///< the study's name (the job's name is hpcontact-<name>)
   std::string out_dir;  ///< OUT, absolute
   std::string program;  ///< the hpcontact executable, absolute
@@ -35,6 +36,15 @@ inline const char* const kTaskLinePrefix = "hpcontact-task:";
 /// A task's exit code when it does not see the study's output folder (not shared).
 constexpr int kTaskFolderMissing = 97;
 
+/// InputError naming `file` (if not empty) and `what` (the value shown with its control
+/// characters escaped)
+/// if `value` cannot be written into the job's script as it is: it holds a control character
+/// (a newline would end its line, and the rest would be a command of every task), or, on an
+/// #SBATCH line (`sbatch_line`), white space, a quote, '\' or '#', which sbatch reads there as
+/// syntax.
+void require_script_value(const std::string& file, const std::string& value,
+                          const std::string& what, bool sbatch_line);
+
 /// `text` as one word for the shell, in single quotes where needed.
 std::string shell_quote(const std::string& text);
 
@@ -43,7 +53,9 @@ std::string task_log_path(const std::string& out_dir, const std::string& job_id,
 
 /// The bash script (docs/study.md shows one): #SBATCH lines for the job's name, its logs
 /// (OUT/slurm/logs/%A_%a.out), the folder, one task of cpus_per_task CPUs, the partition and
-/// the time; then a check that OUT is the study's folder, a case per row and the run.
+/// the time; then a check that OUT is the study's folder, a case per row and the run. Every
+/// value is checked by require_script_value (those of #SBATCH lines as such) and the shell's
+/// are quoted: InputError if one cannot be written.
 std::string batch_script(const BatchJob& job);
 
 /// sbatch's command line for the rows `indices` (sorted): sbatch --parsable --array=...

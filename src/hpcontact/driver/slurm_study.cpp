@@ -100,11 +100,14 @@ StudyRowResult row_result(const io::StudySpec& study, const json& record, const 
   row.run_dir = out + "/" + relative_run_dir(study, i);
   const auto task = latest_task(record, i);
   if (!task) {
+    const bool complete = listed_complete(record, i);
     row.summary = read_summary(row.run_dir);
-    row.exit_code = listed_complete(record, i) && row.summary.is_object() ? 0 : -1;
+    row.exit_code = complete && row.summary.is_object() ? 0 : -1;
     if (row.exit_code != 0) {
       row.summary = nullptr;
-      row.message = "never submitted (no array task ran this row)";
+      row.message = complete ? "found complete when submitted, but its run's summary.json has gone "
+                               "since (" + row.run_dir + "): submit the study again to run it"
+                             : "never submitted (no array task ran this row)";
     }
     return row;
   }
@@ -115,6 +118,11 @@ StudyRowResult row_result(const io::StudySpec& study, const json& record, const 
     row.seconds = line->seconds;
     if (row.exit_code == 0) row.summary = read_summary(row.run_dir);
     if (row.converged()) return row;
+    if (row.exit_code == 0) {
+      row.message = "array task " + name + " ended with exit 0, but its run's summary.json has "
+                    "gone since (" + row.run_dir + "): submit the study again to run it";
+      return row;
+    }
     row.message = row.exit_code == kTaskFolderMissing
                       ? log_error_line(log)
                       : log_error_line(log, kTaskLinePrefix);
@@ -235,7 +243,9 @@ void write_record(const std::string& stage, const std::string& script, const jso
   post::write_text_file(stage + "/array.sh", script);
   fs::permissions(stage + "/array.sh", fs::perms::owner_exec | fs::perms::group_exec,
                   fs::perm_options::add);
-  post::write_text_file(stage + "/submission.json", record.dump(2) + "\n");
+  // a path of bytes that are not UTF-8 has them as U+FFFD (the paths are shown, never opened)
+  post::write_text_file(stage + "/submission.json",
+                        record.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
 }
 
 }  // namespace
@@ -247,9 +257,10 @@ std::string require_slurm_client(const std::string& out_dir) {
               path ? path : "unset", "): run the study on a machine with Slurm's client commands "
               "(a login node of the cluster), or without --executor slurm on this machine");
   const std::string out = fs::absolute(out_dir).lexically_normal().string();
-  HPC_REQUIRE(out.find_first_of(" \t\n%\\\"'") == std::string::npos, InputError, "--out ", out,
-              ": with --executor slurm the output folder's path may not hold spaces, quotes, '%' or "
-              "'\\' (it is written on #SBATCH lines, where Slurm reads them otherwise)");
+  HPC_REQUIRE(out.find('%') == std::string::npos, InputError, "--out ", out,
+              ": with --executor slurm the output folder's path may not hold '%' (it is written on "
+              "the #SBATCH --output line, where Slurm reads it as a pattern)");
+  require_script_value("", out, "--out", true);
   return sbatch;
 }
 
@@ -261,7 +272,7 @@ SlurmSubmission submit_slurm_study(const io::StudySpec& study, const SlurmStudyO
   const int n = static_cast<int>(study.runs.size());
 
   // Every row's input as its task will read it: an invalid row is known now, not in the queue.
-  BatchJob job{study.name, out, options.program, {}, options.slurm};
+  BatchJob job{study.file, study.name, out, options.program, {}, options.slurm};
   std::vector<std::string> effective(n), problems;
   for (int i = 0; i < n; ++i) {
     const auto& run = study.runs[i];
@@ -278,6 +289,8 @@ SlurmSubmission submit_slurm_study(const io::StudySpec& study, const SlurmStudyO
   }
   HPC_REQUIRE(problems.empty(), InputError, study.file, ": ", problems.size(), " of the ", n,
               " rows cannot be run; nothing was submitted:\n  ", join(problems, "\n  "));
+  // Before anything else is asked or written: a value the script cannot carry is refused.
+  const std::string script = batch_script(job);
   if (!options.slurm.partition.empty()) require_partition(options.slurm.partition);
 
   json record = read_record(out);
@@ -297,7 +310,6 @@ SlurmSubmission submit_slurm_study(const io::StudySpec& study, const SlurmStudyO
   record["study"] = study_to_json(study);
   record["program"] = options.program;
   record["out"] = out;
-  const std::string script = batch_script(job);
   json submission = {{"job_id", ""}, {"rows", result.rows}, {"complete", complete},
                      {"options", options.slurm.sbatch_options}, {"submitted", now_utc()}};
   record["submissions"].push_back(submission);

@@ -33,15 +33,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// While it lives, SIGINT and SIGTERM are blocked in the calling thread and the threads it
-/// starts, and a watcher thread takes them: it records the signal and passes it on to every run
-/// started through spawn(), and spawn() starts no run after it.
+/// While it lives, SIGINT, SIGTERM and SIGHUP are blocked in the calling thread and the threads
+/// it starts, and a watcher thread takes them: it records the signal and passes it on to every
+/// run started through spawn(), and spawn() starts no run after it.
 class SignalForwarder {
 public:
   SignalForwarder() {
     sigemptyset(&signals_);
-    sigaddset(&signals_, SIGINT);
-    sigaddset(&signals_, SIGTERM);
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&signals_, signal);
     pthread_sigmask(SIG_BLOCK, &signals_, &previous_);
     watcher_ = std::thread([this] { watch(); });
   }
@@ -94,7 +93,9 @@ private:
 
 /// Starts `argv` with stdout and stderr into `log` (with the default dispositions of the
 /// forwarded signals, unblocked); waits for it. Returns the exit code, minus the signal that
-/// ended it, or nullopt if the study was stopped before the run could start.
+/// ended it, or nullopt if the study was stopped before the run could start. The calling thread
+/// is the child's parent: a parent-death signal the child asks for (run --parent-pid) comes when
+/// this thread ends, which it does not before the child has, unless the whole study is killed.
 std::optional<int> run_process(const std::vector<std::string>& argv, const fs::path& log,
                                SignalForwarder& forwarder) {
   posix_spawn_file_actions_t actions;
@@ -157,7 +158,7 @@ bool study_output(const std::string& relative, bool folder) {
 
 }  // namespace
 
-FolderLayout study_layout() { return {"study.json", &study_output}; }
+FolderLayout study_layout() { return {"study.json", &study_output, "a study"}; }
 
 StudyOutcome run_study(const io::StudySpec& study, const StudyOptions& options) {
   std::optional<OutputFolder> own_folder;
@@ -190,8 +191,10 @@ StudyOutcome run_study(const io::StudySpec& study, const StudyOptions& options) 
       StudyRowResult& row = rows[i];
       try {
         fs::create_directories(logs[i].parent_path());
+        // --parent-pid: a run whose study is killed outright (SIGKILL) stops as on SIGTERM.
         std::vector<std::string> argv = {options.program, "run", row.run.case_file, "--out",
-                                         row.run_dir, "-q"};
+                                         row.run_dir, "-q", "--parent-pid",
+                                         std::to_string(::getpid())};
         for (const auto& s : row.run.sets) {
           argv.push_back("--set");
           argv.push_back(s);

@@ -32,15 +32,16 @@ FolderLayout study_layout();
 
 struct StudyOutcome {
   std::vector<StudyRowResult> rows;
-  /// SIGINT or SIGTERM if the study was stopped by one: it was passed on to the running runs,
-  /// they were waited for, and no table was written; 0 otherwise.
+  /// SIGINT, SIGTERM or SIGHUP if the study was stopped by one: it was passed on to the running
+  /// runs, they were waited for, and no table was written; 0 otherwise.
   int signal = 0;
   /// Stopped: where the logs of the runs it had started are (OUT/stopped/runs), or empty.
   std::string logs;
 };
 
-/// Runs every row (`program run CASE --out OUT/runs/NN-label -q --set ...`, its output in the
-/// folder's log.txt) and writes OUT/study.csv and OUT/study.json. A run that fails is a row with
+/// Runs every row (`program run CASE --out OUT/runs/NN-label -q --parent-pid PID --set ...`,
+/// PID this process, its output in the folder's log.txt) and writes OUT/study.csv and
+/// OUT/study.json. A run that fails is a row with
 /// its message, not an exception. IoError if OUT cannot be written or a process not started.
 StudyOutcome run_study(const io::StudySpec& study, const StudyOptions& options);
 

@@ -153,7 +153,9 @@ void write_study_tables(const io::StudySpec& study, const std::vector<StudyRowRe
   post::write_text_file((fs::path(out_dir) / "study.csv").string(), csv.str());
   nlohmann::json doc = {{"study", study.name}, {"file", study.file}, {"runs", all}};
   if (!study.title.empty()) doc["title"] = study.title;
-  post::write_text_file((fs::path(out_dir) / "study.json").string(), doc.dump(2) + "\n");
+  // a path of bytes that are not UTF-8 (a file name) has them as U+FFFD: the file stays JSON
+  post::write_text_file((fs::path(out_dir) / "study.json").string(),
+                        doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
 }  // namespace hpcontact::driver

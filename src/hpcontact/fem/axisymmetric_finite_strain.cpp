@@ -12,6 +12,7 @@
 
 #include "hpcontact/fem/finite_strain.hpp"
 #include "hpcontact/fem/out_of_plane.hpp"
+#include "hpcontact/fem/point_blocks.hpp"
 #include "hpcontact/material/hyperelastic_hoop.hpp"
 
 namespace hpcontact::fem {
@@ -71,9 +72,17 @@ FiniteStrainElement axisymmetric_finite_strain_element(const ElementValues& ev,
     wShoop(k) = w * state.S(3) * inv_R(k) * inv_R(k);
   }
   if (!tangent) return el;
-  el.K.noalias() = B.transpose() * CB;
+  el.K = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  for_point_blocks(nq, 32.0 * n * n, [&](int first, int count) {
+    el.K.noalias() += B.middleRows(4 * first, 4 * count).transpose() *
+                      CB.middleRows(4 * first, 4 * count);
+  });
   add_geometric_stiffness(ev, wS11, wS22, wS12, el.K);
-  el.K.topLeftCorner(n, n).noalias() += ev.N * wShoop.asDiagonal() * ev.N.transpose();
+  for_point_blocks(nq, 2.0 * n * n, [&](int first, int count) {
+    const auto N = ev.N.middleCols(first, count);
+    el.K.topLeftCorner(n, n).noalias() +=
+        N * wShoop.segment(first, count).asDiagonal() * N.transpose();
+  });
   return el;
 }
 

@@ -2,6 +2,7 @@
 #include "hpcontact/fem/condensation.hpp"
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/core/stop.hpp"
 
 namespace hpcontact::fem {
 
@@ -28,10 +29,14 @@ CondensedElement condense(const Eigen::MatrixXd& K, const Eigen::VectorXd& f, in
     c.f = fe;
     return c;
   }
+  // A stop request is honoured between the dense phases: at high degree each is a fraction of
+  // a second.
+  stop_point("assembling");
   Eigen::LLT<Eigen::MatrixXd> llt(Kii);
   HPC_REQUIRE(llt.info() == Eigen::Success, NumericalError,
               "static condensation: the internal block of an element stiffness is not positive "
               "definite");
+  stop_point("assembling");
   c.Kii_inv_Kie = llt.solve(Kei.transpose());
   c.Kii_inv_fi = llt.solve(fi);
   c.K = Kee - Kei * c.Kii_inv_Kie;

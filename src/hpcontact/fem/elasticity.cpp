@@ -3,6 +3,8 @@
 // D13 = D23 = 0), which lets the matrix products do the work.
 #include "hpcontact/fem/elasticity.hpp"
 
+#include "hpcontact/fem/point_blocks.hpp"
+
 namespace hpcontact::fem {
 
 Eigen::MatrixXd stiffness(const ElementValues& ev, const material::Elasticity& D, double thickness) {
@@ -10,10 +12,13 @@ Eigen::MatrixXd stiffness(const ElementValues& ev, const material::Elasticity& D
   const Eigen::VectorXd s = (ev.JxW * thickness).cwiseSqrt();
   const Eigen::MatrixXd Gx = ev.dN_dx * s.asDiagonal();
   const Eigen::MatrixXd Gy = ev.dN_dy * s.asDiagonal();
-  Eigen::MatrixXd XX(n, n), YY(n, n), XY(n, n);
-  XX.noalias() = Gx * Gx.transpose();
-  YY.noalias() = Gy * Gy.transpose();
-  XY.noalias() = Gx * Gy.transpose();
+  Eigen::MatrixXd XX = Eigen::MatrixXd::Zero(n, n), YY = XX, XY = XX;
+  for_point_blocks(ev.n_points(), 6.0 * n * n, [&](int first, int count) {
+    const auto gx = Gx.middleCols(first, count), gy = Gy.middleCols(first, count);
+    XX.noalias() += gx * gx.transpose();
+    YY.noalias() += gy * gy.transpose();
+    XY.noalias() += gx * gy.transpose();
+  });
   const double d11 = D(0, 0), d12 = D(0, 1), d22 = D(1, 1), d33 = D(2, 2);
   Eigen::MatrixXd K(2 * n, 2 * n);
   K.topLeftCorner(n, n) = d11 * XX + d33 * YY;
@@ -37,8 +42,17 @@ Eigen::MatrixXd axisymmetric_stiffness(const ElementValues& ev, const material::
   const Eigen::MatrixXd H = ev.N * (inv_r.cwiseProduct(s)).asDiagonal();
   const material::Elasticity D = m.D();
   const double l = m.lambda(), l2m = D(0, 0), mu = D(2, 2);
-  Eigen::MatrixXd XX = Gx * Gx.transpose(), YY = Gy * Gy.transpose(), XY = Gx * Gy.transpose();
-  Eigen::MatrixXd HX = H * Gx.transpose(), HY = H * Gy.transpose(), HH = H * H.transpose();
+  Eigen::MatrixXd XX = Eigen::MatrixXd::Zero(n, n), YY = XX, XY = XX, HX = XX, HY = XX, HH = XX;
+  for_point_blocks(np, 12.0 * n * n, [&](int first, int count) {
+    const auto gx = Gx.middleCols(first, count), gy = Gy.middleCols(first, count);
+    const auto h = H.middleCols(first, count);
+    XX.noalias() += gx * gx.transpose();
+    YY.noalias() += gy * gy.transpose();
+    XY.noalias() += gx * gy.transpose();
+    HX.noalias() += h * gx.transpose();
+    HY.noalias() += h * gy.transpose();
+    HH.noalias() += h * h.transpose();
+  });
   Eigen::MatrixXd K(2 * n, 2 * n);
   K.topLeftCorner(n, n) = l2m * XX + mu * YY + l * (HX + HX.transpose()) + l2m * HH;
   K.bottomRightCorner(n, n) = l2m * YY + mu * XX;

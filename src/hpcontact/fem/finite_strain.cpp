@@ -1,10 +1,13 @@
 // Total Lagrangian element. With δE = B δu, the rows of B for mode a and component i are
 // (F_i1 N_a,1, F_i2 N_a,2, F_i1 N_a,2 + F_i2 N_a,1); the tangent is Bᵀ ℂ B (material) plus
-// δ_ik ∇N_a · S ∇N_b (geometric). B of all points is stacked so one matrix product forms Bᵀ ℂ B.
+// δ_ik ∇N_a · S ∇N_b (geometric). B of all points is stacked so that a few matrix products (one
+// per block of points, fem/point_blocks.hpp) form Bᵀ ℂ B.
 #include "hpcontact/fem/finite_strain.hpp"
 
 #include <limits>
 #include <vector>
+
+#include "hpcontact/fem/point_blocks.hpp"
 
 namespace hpcontact::fem {
 
@@ -29,11 +32,13 @@ void add_geometric_stiffness(const ElementValues& ev, const Eigen::VectorXd& wS1
                              const Eigen::VectorXd& wS22, const Eigen::VectorXd& wS12,
                              Eigen::MatrixXd& K) {
   const int n = ev.n_modes();
-  Eigen::MatrixXd G(n, n);
-  G.noalias() = ev.dN_dx * wS11.asDiagonal() * ev.dN_dx.transpose();
-  G.noalias() += ev.dN_dy * wS22.asDiagonal() * ev.dN_dy.transpose();
-  Eigen::MatrixXd XY(n, n);
-  XY.noalias() = ev.dN_dx * wS12.asDiagonal() * ev.dN_dy.transpose();
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(n, n), XY = G;
+  for_point_blocks(ev.n_points(), 6.0 * n * n, [&](int first, int count) {
+    const auto nx = ev.dN_dx.middleCols(first, count), ny = ev.dN_dy.middleCols(first, count);
+    G.noalias() += nx * wS11.segment(first, count).asDiagonal() * nx.transpose();
+    G.noalias() += ny * wS22.segment(first, count).asDiagonal() * ny.transpose();
+    XY.noalias() += nx * wS12.segment(first, count).asDiagonal() * ny.transpose();
+  });
   G += XY + XY.transpose();
   K.topLeftCorner(n, n) += G;
   K.bottomRightCorner(n, n) += G;
@@ -77,7 +82,11 @@ FiniteStrainElement finite_strain_element(const ElementValues& ev, const materia
     wS12(k) = w * state.S(2);
   }
   if (!tangent) return el;
-  el.K.noalias() = B.transpose() * CB;
+  el.K = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  for_point_blocks(nq, 24.0 * n * n, [&](int first, int count) {
+    el.K.noalias() += B.middleRows(3 * first, 3 * count).transpose() *
+                      CB.middleRows(3 * first, 3 * count);
+  });
   add_geometric_stiffness(ev, wS11, wS22, wS12, el.K);
   return el;
 }

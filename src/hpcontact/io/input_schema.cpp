@@ -882,10 +882,12 @@ std::string input_schema_markdown() {
         "fails after a converged state replaces only `last-good/` (that state, with `converged: "
         "false`); any other failure, a wrong `--set` or a killed run leaves the folder as it "
         "was. The next run removes a staging folder a killed run left.\n"
-        "- `hpcontact run` sent SIGTERM (a scheduler's time limit), SIGINT (Ctrl-C) or SIGHUP stops before "
-        "its next Newton iteration and ends as a failed run: what had converged (the last load "
-        "step, or an hp or rp loop's best step) in `last-good/`, the earlier results left; the "
-        "process then ends by the same signal. A second signal more than a second after the first "
+        "- `hpcontact run` sent SIGTERM (a scheduler's time limit), SIGINT (Ctrl-C) or SIGHUP stops "
+        "within a moment — before its next Newton iteration, or inside one (the iteration given "
+        "up between two elements, blocks of an element's points or a factorisation's phases) — "
+        "and ends as a failed run: what had converged (the last load step, or an hp or rp loop's "
+        "best step) in `last-good/`, the earlier results left; the process then ends by the same "
+        "signal. A second signal more than a second after the first "
         "kills it at once; within a second it is the same request delivered twice (`timeout` "
         "signals the run and its process group; Ctrl-C reaches a study's runs from the terminal "
         "and from the study).\n"
@@ -907,11 +909,13 @@ std::string input_schema_markdown() {
         "the same folder fails at once.\n"
         "- Every file is checked to the disk (each write, fsync and close): a full disk ends the "
         "run with exit code 1 and a message naming the file and the system's reason.\n"
-        "- `study` passes SIGINT and SIGTERM on to its running runs, waits for them, writes no "
-        "table and ends by the same signal; each stopped run keeps what had converged in its "
-        "`runs/NN-label/last-good/`, and the logs of the runs it started are moved to "
+        "- `study` passes SIGINT, SIGTERM and SIGHUP on to its running runs, waits for them, "
+        "writes no table and ends by the same signal; each stopped run keeps what had converged "
+        "in its `runs/NN-label/last-good/`, and the logs of the runs it started are moved to "
         "`stopped/runs/NN-label/log.txt` (replaced by the next stopped study, removed by the "
-        "next finished one).\n";
+        "next finished one). A study killed outright (SIGKILL), which can pass nothing on, "
+        "leaves no run computing: each of its runs stops as on SIGTERM when the study dies, "
+        "keeping its `last-good/`.\n";
   return md.str();
 }
 

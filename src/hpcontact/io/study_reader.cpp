@@ -25,7 +25,7 @@ class StudyBuilder {
     StudySpec s;
     s.file = source_.file();
     allow(root, "", {"study", "title", "case", "set", "sweep", "zip", "runs", "columns"});
-    s.name = text(root["study"], "study", true);
+    s.name = name(root["study"], "study");
     s.title = text(root["title"], "title", false);
     const std::string common_case = root["case"] ? case_path(root["case"], "case") : "";
     const std::vector<std::string> common_sets = strings(root["set"], "set");
@@ -38,7 +38,7 @@ class StudyBuilder {
         require(r.IsMap(), r, path, "must be a map with label, case, set, seed");
         allow(r, path, {"label", "case", "set", "seed"});
         StudyRun run;
-        run.label = text(r["label"], path + ".label", true);
+        run.label = name(r["label"], path + ".label");
         if (r["case"]) run.case_file = case_path(r["case"], path + ".case");
         else run.case_file = common_case;
         require(!run.case_file.empty(), r, path, "needs a case (or a case for the whole study)");
@@ -92,6 +92,22 @@ class StudyBuilder {
     return node.Scalar();
   }
 
+  /// A name (the study's, a run's label): a non-empty string without control characters, which
+  /// it carries into folders, tables, the terminal and a Slurm job's script (where a newline
+  /// would end a line and make the rest a command).
+  std::string name(const YAML::Node& node, const std::string& path) {
+    const std::string value = text(node, path, true);
+    require(std::none_of(value.begin(), value.end(), control), node, path,
+            "must not hold a control character such as a newline (got " + quoted_value(node) +
+                "): it names the study's rows, folders and Slurm job");
+    return value;
+  }
+
+  static bool control(char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return u < 0x20 || u == 0x7f;
+  }
+
   std::vector<std::string> strings(const YAML::Node& node, const std::string& path) {
     std::vector<std::string> out;
     if (!node) return out;
@@ -128,7 +144,13 @@ class StudyBuilder {
     require(list.IsSequence() && list.size() > 0, list, path,
             "must be a non-empty list of values (got " + shown_value(list) + ")");
     std::vector<std::string> values;
-    for (std::size_t i = 0; i < list.size(); ++i) values.push_back(value_text(list[i]));
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      values.push_back(value_text(list[i]));
+      require(std::none_of(values.back().begin(), values.back().end(), control), list[i],
+              join_index(path, i),
+              "must not hold a control character such as a newline (got " + quoted_value(list[i]) +
+                  "): the value names its run (the label of its row and folder)");
+    }
     return values;
   }
 

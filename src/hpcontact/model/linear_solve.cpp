@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/core/stop.hpp"
 #include "hpcontact/fem/elasticity.hpp"
 #include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/model/parallel.hpp"
@@ -50,6 +51,9 @@ Eigen::MatrixXd element_stiffness(const Body& body, int q) {
 }
 
 ElasticOperator assemble_elastic(const Discretization& d, bool condense) {
+  // Given up when a stop is requested (core/stop.hpp: Stopped): at high degree the elements are
+  // seconds of work each, and nothing has converged that the stop would have to keep.
+  const StoppableWork stoppable;
   struct Ref {
     int body, q;
   };
@@ -154,6 +158,8 @@ void ElasticOperator::recover_internal(const Discretization& d, Eigen::VectorXd&
 }
 
 LinearSolution solve_linear(const Discretization& d, const LinearSolveOptions& options) {
+  // The assembly and the factorisation are given up when a stop is requested (Stopped).
+  const StoppableWork stoppable;
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
   require_finite(d, d.load, "the load vector");

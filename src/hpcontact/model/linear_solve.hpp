@@ -45,6 +45,8 @@ struct ElasticOperator {
   void recover_internal(const Discretization& d, Eigen::VectorXd& u, double lambda) const;
 };
 
+/// The small-strain bodies' stiffness and loads. Stopped (core/stop.hpp) if a stop is requested
+/// meanwhile: the elements are given up.
 ElasticOperator assemble_elastic(const Discretization& d, bool condense);
 
 struct LinearSolveOptions {
@@ -58,6 +60,8 @@ struct LinearSolution {
   double assembly_seconds = 0, solve_seconds = 0;
 };
 
+/// K u = f on the elastic operator. Stopped (core/stop.hpp) if a stop is requested while it
+/// assembles or factorises.
 LinearSolution solve_linear(const Discretization& d, const LinearSolveOptions& options);
 
 }  // namespace hpcontact::model

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/core/stop.hpp"
 
 namespace hpcontact::solve {
 
@@ -188,6 +189,9 @@ LinearSolver::LinearSolver(LinearSolver&&) noexcept = default;
 LinearSolver& LinearSolver::operator=(LinearSolver&&) noexcept = default;
 
 void LinearSolver::factorize(const SparseMatrix& A_in) {
+  // A stop request (core/stop.hpp) is honoured before each phase, the analysis and the numeric
+  // factorisation (in 3D each takes minutes); a stop leaves the solver fit to be used again.
+  stop_point("factorising");
   bool ok;
   SmallestPivot smallest;
   // A copy in compressed storage (the comparisons need it, and LU's solve reads A).
@@ -203,6 +207,7 @@ void LinearSolver::factorize(const SparseMatrix& A_in) {
   if (analyse) ++analyses_;
   auto compute = [&](auto& solver) {
     if (analyse) solver.analyzePattern(A);
+    stop_point("factorising");
     solver.factorize(A);
   };
   if (kind_ == LinearSolverKind::cholmod) {
@@ -210,6 +215,7 @@ void LinearSolver::factorize(const SparseMatrix& A_in) {
       impl_->cholmod.analyzePattern(A);
       require_cholmod_resources(impl_->cholmod, "analysis", A.rows(), A.nonZeros());
     }
+    stop_point("factorising");
     impl_->cholmod.factorize(A);
     require_cholmod_resources(impl_->cholmod, "factorisation", A.rows(), A.nonZeros());
     ok = impl_->cholmod.info() == Eigen::Success;

@@ -52,7 +52,9 @@ struct NewtonOptions {
   bool line_search = false;
 };
 
-/// stopped: a stop was requested (core/stop.hpp) before an iteration; x is the last iterate.
+/// stopped: a stop was requested (core/stop.hpp) before an iteration, or inside one (a stop
+/// point of its assembly or factorisation: the iteration is abandoned); x is the last iterate
+/// (or a correction being halved back towards it, as far as it got).
 enum class SolveStatus { converged, max_iterations, not_finite, singular, stopped };
 
 /// Outcome of a solve; non-convergence is a status, not an exception.

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/core/stop.hpp"
 
 namespace hpcontact::solve {
 
@@ -130,6 +131,7 @@ void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, i
     return;
   }
   solve_columns(sparse, E_hat);
+  stop_point("factorising");  // between the columns' solves and the dense complement's LU
   const Eigen::MatrixXd S = H_tilde_ - G_F * Y_;
   // Equilibrated, D⁻¹ S D⁻¹ with D² = |diag S|: the rows of multipliers whose boundary share is
   // small (near the axis of an axisymmetric body, ∝ r) are as well conditioned as the others,

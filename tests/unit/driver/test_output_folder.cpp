@@ -100,7 +100,9 @@ TEST(OutputFolder, FailedRunReplacesOnlyLastGood) {
   fs::remove_all(dir);
 }
 
-// An edited manifest cannot make a run remove a file it does not write, nor one outside.
+// An edited manifest cannot make a run remove a file it does not write, nor one outside; the
+// message names the cause — a path outside, or results a run does not write — and advises no
+// removal.
 TEST(OutputFolder, ManifestWithForeignNamesIsRefused) {
   const auto dir = temp_folder("manifest");
   for (const char* line : {"../victim.txt", "notes.txt", "/etc/passwd", "rp/../summary.json"}) {
@@ -109,8 +111,14 @@ TEST(OutputFolder, ManifestWithForeignNamesIsRefused) {
       driver::OutputFolder folder(dir.string(), driver::run_layout());
       FAIL() << "accepted the manifest line " << line;
     } catch (const IoError& e) {
-      EXPECT_NE(std::string(e.what()).find("is not a file hpcontact writes"), std::string::npos)
-          << e.what();
+      const std::string m = e.what();
+      EXPECT_NE(m.find(std::string(line) == "notes.txt"
+                           ? "which a run never writes"
+                           : "is not a path inside the folder as hpcontact writes them"),
+                std::string::npos)
+          << m;
+      EXPECT_NE(m.find("choose another output folder (nothing was changed)"), std::string::npos) << m;
+      EXPECT_EQ(m.find("remove"), std::string::npos) << m;
     }
   }
   fs::remove_all(dir);
