@@ -29,7 +29,7 @@ results="$build_dir/bench/results.json"
   "$@"
 
 # The factorisation's benchmarks again on Debian's reference BLAS and LAPACK, when another BLAS
-# is installed (OpenBLAS, scripts/install-deps.sh): the before / after rows of BENCHMARKS.md.
+# is installed (BLIS, scripts/install-deps.sh): the before / after rows of BENCHMARKS.md.
 reference="$build_dir/bench/results-reference-blas.json"
 rm -f "$reference"
 multiarch=$(gcc -print-multiarch 2>/dev/null || echo x86_64-linux-gnu)

@@ -68,3 +68,21 @@ def test_the_carriers_agree(runs):
         # a ring pressure's resultant is radial: the normal force is its magnitude, positive
         assert pair["normal_force"] == pytest.approx(abs(pair["resultant"][0]), rel=1e-9)
         assert pair["normal_force"] > 0
+
+
+def test_the_hub_end_is_singular_whichever_body_carries(runs):
+    """The hub's end closes on the shaft: its peak is reported as a singular point (the hub's
+    corner at (9.99, 50), the peak no converged value, a strength fitted from the pressures beyond
+    the elements touching it, rising towards it), whichever body carries the multipliers; the
+    mirror z = 0 and the shaft's open end are none; pressure_max is the largest away from it."""
+    for carrier, (summary, rows) in runs.items():
+        pair = summary["contact_pairs"][0]
+        (sp,) = pair["singular_points"]
+        assert sp["at"] == pytest.approx([9.99, HUB_END], abs=1e-9), carrier
+        assert "body 'hub' (node 28)" in sp["where"] and sp["peak_converged"] is False
+        assert sp["fit"]["exponent"] > 0.05 and sp["fit"]["points"] >= 6, carrier
+        assert pair["pressure_max"] < sp["peak"], carrier
+        own = [float(r["pressure"]) for r in rows if r["body"] == carrier
+               and abs(float(r["Y"]) - sp["s"]) >= sp["excluded_within"] * (1 + 1e-6)]
+        assert pair["pressure_max"] == pytest.approx(max(own), rel=1e-10), carrier
+        assert any("unbounded" in w for w in summary["warnings"]), carrier

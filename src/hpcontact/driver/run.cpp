@@ -120,6 +120,7 @@ struct SolvedState {
 /// The contact zone's extent along the pair's surface: its ends as frame coordinates (arc
 /// length), the points there (undeformed), and their angles on a circular surface.
 nlohmann::json zone_json(const model::ContactPair& pair, const model::ContactResult& c);
+nlohmann::json singular_points_json(const std::vector<model::SingularPoint>& points);
 
 nlohmann::json points_json(const std::vector<Vec2>& points) {
   nlohmann::json j = nlohmann::json::array();
@@ -213,6 +214,7 @@ nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureCompa
   cj["p_max"] = c.p_max;
   cj["traction_max"] = c.p_max;
   cj["pressure_max"] = c.pressure_max;
+  if (!c.singular_points.empty()) cj["singular_points"] = singular_points_json(c.singular_points);
   cj["resultant"] = {c.resultant.x(), c.resultant.y()};
   const Vec2 n = pair.force_normal(c.resultant);
   cj["normal_direction"] = {n.x() + 0.0, n.y() + 0.0};
@@ -271,6 +273,29 @@ nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureCompa
   if (comparison)
     cj.update(comparison->measure(*st.d, pair, c, st.u, csv_path, st.multipliers_of(k)));
   return cj;
+}
+
+/// The singular points of a pair: where, the peak (no converged value) and the fitted strength.
+nlohmann::json singular_points_json(const std::vector<model::SingularPoint>& points) {
+  nlohmann::json all = nlohmann::json::array();
+  for (const auto& p : points) {
+    nlohmann::json j = {{"at", {p.X.x() + 0.0, p.X.y() + 0.0}},  // + 0.0: no -0
+                        {"s", p.s},
+                        {"where", p.where},
+                        {"peak", p.peak},
+                        {"peak_converged", false},
+                        {"excluded_within", p.excluded}};
+    if (p.fit)
+      j["fit"] = {{"exponent", p.fit->exponent}, {"strength", p.fit->strength},
+                  {"from", p.fit->from},         {"to", p.fit->to},
+                  {"points", p.fit->points},     {"rms_log_residual", p.fit->rms},
+                  {"square_root_strength", p.fit->square_root_strength},
+                  {"square_root_rms_log_residual", p.fit->square_root_rms}};
+    else
+      j["fit"] = nullptr;
+    all.push_back(j);
+  }
+  return all;
 }
 
 nlohmann::json zone_json(const model::ContactPair& pair, const model::ContactResult& c) {

@@ -62,6 +62,23 @@ std::optional<std::string> coarse_zone(const model::ProblemSpec& spec, const mod
   return os.str();
 }
 
+/// A singular point: where, that its peak is no converged value, and the fitted strength.
+std::string singular_point(const model::ProblemSpec& spec, size_t k, const model::SingularPoint& p) {
+  std::ostringstream os;
+  os << std::setprecision(5) << spec.contact[k].where.str() << ": the pressure is unbounded at ("
+     << p.X.x() << ", " << p.X.y() << "), " << p.where << ", where the contact zone is closed: its peak "
+     << p.peak << " is the discretisation's, not a converged value (pressure_max " << "is the largest "
+     << "beyond " << p.excluded << " from it); ";
+  if (p.fit)
+    os << "p ≈ K d^-λ with K = " << p.fit->strength << ", λ = " << p.fit->exponent << " (fitted over d = "
+       << p.fit->from << " … " << p.fit->to << ", " << p.fit->points << " points; as a square-root "
+       << "singularity K½ = " << p.fit->square_root_strength << ")";
+  else
+    os << "too few pressures beyond the elements touching it to fit its strength: refine the mesh "
+          "towards it";
+  return os.str();
+}
+
 }  // namespace
 
 std::vector<std::string> solution_warnings(const model::ProblemSpec& spec,
@@ -77,8 +94,10 @@ std::vector<std::string> solution_warnings(const model::ProblemSpec& spec,
                     *where + "): displacements of the order of the radius are beyond linear " +
                     "elasticity (material.model: neo-hooke follows them)");
   }
-  for (size_t k = 0; k < pairs.size() && k < contact.size(); ++k)
+  for (size_t k = 0; k < pairs.size() && k < contact.size(); ++k) {
     if (const auto w = coarse_zone(spec, d, k, pairs[k], contact[k])) out.push_back(*w);
+    for (const auto& p : contact[k].singular_points) out.push_back(singular_point(spec, k, p));
+  }
   return out;
 }
 

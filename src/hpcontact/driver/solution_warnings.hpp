@@ -20,7 +20,9 @@ constexpr double kZoneToEdgeLimit = 0.1;
 /// The warnings about a solved state (each names the file, the place and the cause):
 /// - an axisymmetric body of linear elasticity whose deformed section crosses its axis;
 /// - per contact pair, a contact zone that lies within at most two of its contact edges and is
-///   shorter than kZoneToEdgeLimit times the shortest of them.
+///   shorter than kZoneToEdgeLimit times the shortest of them;
+/// - per singular point of a pair (ContactResult::singular_points), where it is, that its peak
+///   is no converged value, and the fitted strength.
 std::vector<std::string> solution_warnings(const model::ProblemSpec& spec,
                                            const model::Discretization& d, const Eigen::VectorXd& u,
                                            const std::vector<model::ContactPair>& pairs,

@@ -565,7 +565,6 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
   }
   res.order = contact::boundary_order(body.mesh, state_edges(pair));
   if (pair.other >= 0) res.other_order = contact::boundary_order(d.bodies[pair.other].mesh, other_point_edges(pair));
-  for (const double p : res.pressure) res.pressure_max = std::max(res.pressure_max, p);
   ZoneEnds own = pair.constraints ? node_zone_ends(body, pair, res.nodes, u, multipliers->head(pair.constraints->size()))
                                   : zone_ends(body, pair.points, res.states, *pair.obstacle, pair, u);
   remove_repeated_ends(own, 1e-10 * body.mesh.size());
@@ -596,6 +595,8 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
     res.contact_length = hi - lo;
     res.half_width = half_width(pair, lo, hi, res.s);
   }
+  res.singular_points = singular_points(d, pair, u, res);
+  res.pressure_max = pressure_max_away(res, res.singular_points);
   return res;
 }
 

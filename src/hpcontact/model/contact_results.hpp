@@ -11,6 +11,7 @@
 
 #include "hpcontact/contact/stick_slip.hpp"
 #include "hpcontact/model/contact_pairs.hpp"
+#include "hpcontact/model/singular_points.hpp"
 
 namespace hpcontact::model {
 
@@ -49,7 +50,12 @@ struct ContactResult {
   /// The largest traction the method carries (multiplier or penalty traction, per unit
   /// undeformed boundary length) and penetration.
   double p_max = 0, max_penetration = 0;
-  double pressure_max = 0;  ///< the largest `pressure` (force per unit length along the obstacle)
+  /// The largest `pressure` (force per unit length along the obstacle) away from the singular
+  /// points (beyond the elements touching each).
+  double pressure_max = 0;
+  /// Where the exact pressure is unbounded: the zone closed up to an end or a corner of either
+  /// body's contact edges (model/singular_points.hpp).
+  std::vector<SingularPoint> singular_points;
   /// The extent of the contact zone along the surface (arc length along the frame): from its
   /// first to its last end (a zone end, or the last point in contact where the contact boundary
   /// ends in contact).
