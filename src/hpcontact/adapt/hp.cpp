@@ -20,7 +20,39 @@ struct Centre {
   int body = 0, node = 0;
   Vec2 at = Vec2::Zero();  ///< where the node is put on the input mesh
   ZoneEnd::Kind kind = ZoneEnd::Kind::contact;  ///< what it follows
+  bool fixed = false;  ///< a node of the input mesh at a singular point: it stays where it is
 };
+
+/// Centres at the singular points among `ends`: the mesh node there (it stays: a corner, the
+/// end of an edge set), or for the foot of the other body's corner the nearest movable node
+/// (moved onto it, as onto Γ*); none on a node that is a centre already.
+void add_singular_centres(const Solved& s, const std::vector<ZoneEnd>& ends, std::vector<Centre>& centres) {
+  for (const ZoneEnd& e : ends) {
+    if (e.kind != ZoneEnd::Kind::singular) continue;
+    const auto& mesh = s.discretization.bodies[e.body].mesh;
+    Centre c{e.body, -1, e.X, ZoneEnd::Kind::singular};
+    for (int v = 0; v < mesh.n_nodes(); ++v)
+      if ((mesh.node(v) - e.X).norm() <= 1e-9 * mesh.size()) {
+        c.node = mesh.node_id(v);
+        c.fixed = true;
+      }
+    if (c.node < 0) {
+      ZoneEnd as_end = e;
+      as_end.kind = ZoneEnd::Kind::contact;
+      try {
+        const auto nodes = nearest_movable_nodes(s, {as_end});
+        if (nodes.empty()) continue;
+        c.node = nodes[0].track.node_id();
+      } catch (const AdaptError&) {
+        continue;  // no node can move there: the point is left to the other body's grading
+      }
+    }
+    const bool taken = std::any_of(centres.begin(), centres.end(), [&](const Centre& o) {
+      return o.body == c.body && o.node == c.node;
+    });
+    if (!taken) centres.push_back(c);
+  }
+}
 
 /// The input mesh with the centres moved to their points and refined `steps` times around them,
 /// degrees set by layer (and corrected, with goal-oriented degrees), equal on facing contact
@@ -30,6 +62,7 @@ model::ProblemSpec build_mesh(const model::ProblemSpec& input, const std::vector
                               const DegreeCorrections& corrections) {
   model::ProblemSpec spec = input;
   for (const Centre& c : centres) {
+    if (c.fixed) continue;
     const BoundaryTrack track(spec, c.body, c.node);
     spec = with_node_moved(spec, track, track.parameter(c.at));
   }
@@ -140,11 +173,14 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
           }
           // A later step may find fewer ends (a stick–slip point gone on the coarse elements
           // next to it): the centres stay where they are.
-          ends = step == 0 ? adapt_targets(*s, options.stick_slip)
-                           : zone_ends_of(*s, options.stick_slip);
-          if (step == 0)
+          ends = step == 0 ? adapt_targets(*s, options.stick_slip, true)
+                           : without_ends_at_singular_points(zone_ends_of(*s, options.stick_slip),
+                                                             singular_ends_of(*s));
+          if (step == 0) {
             for (const auto& n : nearest_movable_nodes(*s, ends))
               centres.push_back({n.track.body(), n.track.node_id(), n.end.X, n.end.kind});
+            add_singular_centres(*s, ends, centres);
+          }
         } catch (const AdaptError& e) {
           // The solve itself succeeded: it is the last good result, recorded without centres.
           HpOutcome stopped = stopped_after_solve(
@@ -160,6 +196,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         rec.inside = true;
         std::vector<Centre> recentred = centres;
         for (Centre& c : recentred) {
+          if (c.kind == ZoneEnd::Kind::singular) continue;  // an end or corner stays where it is
           const BoundaryTrack track(s->spec, c.body, c.node);
           const ZoneEnd* nearest = nearest_end(ends, c.body, c.kind, c.at);
           if (!nearest) continue;  // a stick–slip point gone: the centre stays
@@ -234,7 +271,8 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         return out;
       }
       // The next mesh is centred on the zone ends of the better solve.
-      const auto ends_plus = zone_ends_of(*enriched, options.stick_slip);
+      const auto ends_plus = without_ends_at_singular_points(zone_ends_of(*enriched, options.stick_slip),
+                                                             singular_ends_of(*enriched));
       for (Centre& c : centres)
         if (const ZoneEnd* nearest = nearest_end(ends_plus, c.body, c.kind, c.at)) c.at = nearest->X;
     }

@@ -1,5 +1,6 @@
 // The adaptive hp-version towards the end of the contact zone (seed §4.7, Fig. 4.12–4.13):
-// geometric refinement around a node placed at Γ*, the degree rising away from it.
+// geometric refinement around a node placed at Γ* (and at the singular points), the degree
+// rising away from it.
 #pragma once
 
 #include <functional>
@@ -66,7 +67,9 @@ struct HpOutcome {
 /// Solves, refines the input mesh where a zone end has no node near enough to move onto it
 /// (resolve_zones: a zone narrow against its elements), places the nearest movable boundary
 /// node of each zone end on it (one rp move) and refines geometrically around those nodes, one
-/// more layer per step. When
+/// more layer per step; and around each singular point (singular_ends_of: the node there, which
+/// stays, or the node nearest the foot of the other body's corner, moved onto it), whose zone
+/// ends within the elements touching it are dropped. When
 /// a solve puts Γ* outside the two smallest elements at its centre, that centre is moved to the
 /// new Γ* and the mesh of the step is built again from the input mesh (the seed re-refines
 /// from the second-last mesh; rebuilding from the input gives the same mesh with the centre

@@ -47,11 +47,40 @@ std::vector<ZoneEnd> zone_ends_of(const Solved& s, bool stick_slip) {
   return ends;
 }
 
-std::vector<ZoneEnd> adapt_targets(const Solved& s, bool stick_slip) {
+std::vector<ZoneEnd> singular_ends_of(const Solved& s) {
+  std::vector<ZoneEnd> ends;
+  for (size_t k = 0; k < s.solution.contact.size(); ++k) {
+    const auto& pair = s.solution.pairs[k];
+    for (const auto& p : s.solution.contact[k].singular_points) {
+      ends.push_back({p.on_other ? pair.other : pair.body, p.X, ZoneEnd::Kind::singular, p.excluded});
+      if (p.on_other) ends.push_back({pair.body, p.foot, ZoneEnd::Kind::singular, p.excluded});
+    }
+  }
+  return ends;
+}
+
+std::vector<ZoneEnd> without_ends_at_singular_points(std::vector<ZoneEnd> ends,
+                                                     const std::vector<ZoneEnd>& singular) {
+  std::erase_if(ends, [&](const ZoneEnd& e) {
+    return e.kind == ZoneEnd::Kind::contact &&
+           std::any_of(singular.begin(), singular.end(), [&](const ZoneEnd& p) {
+             return p.kind == ZoneEnd::Kind::singular && p.body == e.body && (p.X - e.X).norm() <= p.radius;
+           });
+  });
+  return ends;
+}
+
+std::vector<ZoneEnd> adapt_targets(const Solved& s, bool stick_slip, bool singular) {
   std::vector<ZoneEnd> ends = zone_ends_of(s, stick_slip);
+  if (singular) {
+    const std::vector<ZoneEnd> points = singular_ends_of(s);
+    ends = without_ends_at_singular_points(std::move(ends), points);
+    ends.insert(ends.end(), points.begin(), points.end());
+  }
   HPC_REQUIRE(!ends.empty(), AdaptError, s.spec.file, ": no end of a contact zone found (no "
               "contact, or every contact point is closed)",
               stick_slip ? " and no stick–slip point (no friction, or all points stick or all slip)" : "",
+              singular ? " and no singular point (a zone closed up to an end or a corner of its contact edges)" : "",
               "; there is no Γ* to adapt the mesh to");
   return ends;
 }
@@ -59,7 +88,12 @@ std::vector<ZoneEnd> adapt_targets(const Solved& s, bool stick_slip) {
 std::vector<ZoneEnd> outer_zone_ends(const Solved& s) { return adapt_targets(s, false); }
 
 const char* kind_name(ZoneEnd::Kind kind) {
-  return kind == ZoneEnd::Kind::contact ? "zone end" : "stick-slip point";
+  switch (kind) {
+    case ZoneEnd::Kind::contact: return "zone end";
+    case ZoneEnd::Kind::stick_slip: return "stick-slip point";
+    case ZoneEnd::Kind::singular: return "singular point";
+  }
+  return "zone end";
 }
 
 const ZoneEnd* nearest_end(const std::vector<ZoneEnd>& ends, int body, ZoneEnd::Kind kind,

@@ -28,13 +28,18 @@ SolvedPtr solve(const model::ProblemSpec& spec, const model::ProgressFn& progres
                 const Solved* previous = nullptr);
 
 /// A point of the undeformed boundary of a body that rp and hp adapt the mesh to: an end of a
-/// contact zone (Γ*), or a stick–slip point of a frictional zone, where the tangential traction
-/// has the same square-root end the pressure has at Γ*.
+/// contact zone (Γ*), a stick–slip point of a frictional zone, where the tangential traction
+/// has the same square-root end the pressure has at Γ*, or (hp) a singular point, where the
+/// pressure is unbounded (model::SingularPoint: a node of the mesh, or the foot of the other
+/// body's corner).
 struct ZoneEnd {
-  enum class Kind { contact, stick_slip };
+  enum class Kind { contact, stick_slip, singular };
   int body = 0;
   Vec2 X = Vec2::Zero();
   Kind kind = Kind::contact;
+  /// A singular point: the extent of the elements touching it (model::SingularPoint::excluded),
+  /// within which a zone end found is the discretisation's oscillation at the point.
+  double radius = 0;
 };
 
 /// "zone end", "stick-slip point" (progress lines, summary.json).
@@ -48,8 +53,17 @@ std::vector<ZoneEnd> zone_ends_of(const Solved& s, bool stick_slip);
 /// zone_ends_of(s, false); AdaptError when there is none.
 std::vector<ZoneEnd> outer_zone_ends(const Solved& s);
 
-/// What rp and hp adapt to: zone_ends_of(s, stick_slip); AdaptError when there is none.
-std::vector<ZoneEnd> adapt_targets(const Solved& s, bool stick_slip);
+/// Every pair's singular points (ContactResult::singular_points) on the bodies whose boundaries
+/// they lie on: the end or corner on its body, and the other body's corner also at its foot on
+/// the pair's body.
+std::vector<ZoneEnd> singular_ends_of(const Solved& s);
+/// `ends` without the zone ends (Γ*) that lie within the radius of a singular point of `singular`
+/// on the same body: the zone is closed up to the point.
+std::vector<ZoneEnd> without_ends_at_singular_points(std::vector<ZoneEnd> ends,
+                                                     const std::vector<ZoneEnd>& singular);
+/// What rp and hp adapt to: zone_ends_of(s, stick_slip), with `singular` also
+/// singular_ends_of(s); AdaptError when there is none.
+std::vector<ZoneEnd> adapt_targets(const Solved& s, bool stick_slip, bool singular = false);
 
 /// The point of `body` and `kind` nearest to X, or null if that body has none.
 const ZoneEnd* nearest_end(const std::vector<ZoneEnd>& ends, int body, ZoneEnd::Kind kind,

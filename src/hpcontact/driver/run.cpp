@@ -284,7 +284,8 @@ nlohmann::json singular_points_json(const std::vector<model::SingularPoint>& poi
                         {"where", p.where},
                         {"peak", p.peak},
                         {"peak_converged", false},
-                        {"excluded_within", p.excluded}};
+                        {"excluded_within", p.excluded},
+                        {"pressure_max_beyond", p.pressure_max_beyond}};
     if (p.fit)
       j["fit"] = {{"exponent", p.fit->exponent}, {"strength", p.fit->strength},
                   {"from", p.fit->from},         {"to", p.fit->to},

@@ -68,7 +68,7 @@ std::string singular_point(const model::ProblemSpec& spec, size_t k, const model
   os << std::setprecision(5) << spec.contact[k].where.str() << ": the pressure is unbounded at ("
      << p.X.x() << ", " << p.X.y() << "), " << p.where << ", where the contact zone is closed: its peak "
      << p.peak << " is the discretisation's, not a converged value (pressure_max " << "is the largest "
-     << "beyond " << p.excluded << " from it); ";
+     << "beyond " << p.pressure_max_beyond << " from it); ";
   if (p.fit)
     os << "p ≈ K d^-λ with K = " << p.fit->strength << ", λ = " << p.fit->exponent << " (fitted over d = "
        << p.fit->from << " … " << p.fit->to << ", " << p.fit->points << " points; as a square-root "

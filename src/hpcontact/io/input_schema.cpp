@@ -520,7 +520,12 @@ const std::vector<KeySpec>& input_schema() {
               "refine geometrically around it, one layer per step, the degree rising by one per "
               "layer away from Γ* (seed §4.7, Fig. 4.12-4.13); a step whose Γ* leaves the two "
               "smallest elements is refined again around the new Γ*; with adapt.tolerance, until "
-              "the estimated error is below it. none: no adaptivity.",
+              "the estimated error is below it. hp also refines towards the singular points "
+              "(summary.json singular_points: a zone closed up to an end or corner of the contact "
+              "edges, examples/flat-punch/coarse-hp.yaml), around the node there (which stays) or "
+              "for the other body's corner the node moved onto its foot, a zone end within the "
+              "elements touching one being the point's; the estimate leaves those elements out "
+              "(the pressure is unbounded there). none: no adaptivity.",
        .choices = {"rp", "hp", "none"}},
       {.path = "adapt.tolerance", .type = T::number,
        .doc = "hp: the accuracy asked for, the relative L2 error of the contact pressure (with "
@@ -807,8 +812,9 @@ std::string input_schema_markdown() {
         "body's contact edges, not on a mirror or the axis, with the pressure rising towards it: "
         "`at` the point undeformed, `s` its place along the surface, `where` which body's end or "
         "corner, `peak` the pressure nearest it (the discretisation's, `peak_converged` false), "
-        "`excluded_within` the distance within which pressures are left out (the elements "
-        "touching it: of `pressure_max` too), `fit` (null with fewer than 6 pressures beyond them: "
+        "`excluded_within` the distance within which pressures are left out of the fit (the "
+        "elements touching it; hp's estimate leaves them out too), `pressure_max_beyond` that of "
+        "`pressure_max` (beyond those elements and 1 % of the zone's extent from it), `fit` (null with fewer than 6 pressures beyond them: "
         "refine towards the point) the singularity p ≈ K d^-λ fitted in least squares of log p "
         "over d from `from` to `to` (a quarter of the zone's extent): `exponent` λ, `strength` K, "
         "`square_root_strength` K½ = lim p d^(1/2) (a rigid flat punch's corner, frictionless: "

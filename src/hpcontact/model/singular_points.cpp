@@ -146,13 +146,14 @@ std::optional<SingularPoint> examine_end(const Discretization& d, const ContactP
   if (!end.corner && on_mirror(d, body, end)) return std::nullopt;
   const Body& own = d.bodies[pair.body];
   const bool other = &body != &own;
-  double s0 = pair.frame->coordinate(end.X);
+  Vec2 foot_X = end.X;
   if (other) {  // the other body's corner: at the foot of its deformed position on this body
     const int dof = body.dof_offset + 2 * body.dofs.vertex_mode(end.node);
     contact::BoundaryPoint foot;
     if (!pair.boundary->project(end.X + Vec2(u(dof), u(dof + 1)), foot)) return std::nullopt;
-    s0 = pair.frame->coordinate(pair.boundary->undeformed(foot.edge, foot.t));
+    foot_X = pair.boundary->undeformed(foot.edge, foot.t);
   }
+  const double s0 = pair.frame->coordinate(foot_X);
   const int side = pair.frame->rate(end.X, end.tangent) >= 0 ? 1 : -1;
   const auto rows = rows_in_contact(pair, r);
   // the pair's own points on the side of the end's edge: the nearest beyond the end itself
@@ -189,8 +190,11 @@ std::optional<SingularPoint> examine_end(const Discretization& d, const ContactP
   SingularPoint sp;
   sp.X = end.X;
   sp.s = s0;
+  sp.foot = foot_X;
+  sp.on_other = other;
   sp.peak = r.pressure[nearest_row];
   sp.excluded = excluded;
+  sp.pressure_max_beyond = std::max(excluded, kPressureMaxDistance * reach);
   std::vector<std::pair<double, double>> dp;
   for (int i : rows) {
     const double dist = (r.s[i] - s0) * side;
@@ -241,7 +245,7 @@ double pressure_max_away(const ContactResult& result, const std::vector<Singular
   double largest = 0;
   for (size_t i = 0; i < result.pressure.size(); ++i) {
     const bool near = std::any_of(points.begin(), points.end(), [&](const SingularPoint& p) {
-      return std::abs(result.s[i] - p.s) < p.excluded * (1 + 1e-6);
+      return std::abs(result.s[i] - p.s) < p.pressure_max_beyond * (1 + 1e-6);
     });
     if (!near) largest = std::max(largest, result.pressure[i]);
   }

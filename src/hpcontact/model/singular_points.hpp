@@ -18,6 +18,10 @@ struct ContactResult;
 /// than this (degrees) — a polygon's kinks of a few degrees are not corners.
 constexpr double kCornerAngleDegrees = 10;
 
+/// pressure_max leaves out the pressures within this share of the zone's extent (on the side of
+/// the zone) from a singular point, and within the elements touching it.
+constexpr double kPressureMaxDistance = 0.01;
+
 /// A fitted singularity p ≈ K d^(−λ) (d the distance from the point along the pair's surface):
 /// log p = log K − λ log d + c d in least squares over the pressures in contact between `from`
 /// and `to` (the elements touching the point left out: their pressure is the polynomial's attempt
@@ -41,6 +45,10 @@ struct SingularPoint {
   /// Its position along the pair's surface (the other body's corner: that of the undeformed
   /// point of this body it touches deformed).
   double s = 0;
+  /// The undeformed point of the pair's body at s: X for the body's own end or corner, the foot
+  /// of the other body's corner (where it touches this body deformed).
+  Vec2 foot;
+  bool on_other = false;  ///< X is the other body's end or corner
   /// Which boundary ends or turns there, in words: "the end of the contact edges of body
   /// 'block' (node 12)", "a corner of body 'hub' (node 40)".
   std::string where;
@@ -49,6 +57,10 @@ struct SingularPoint {
   /// The pressures within this distance (the elements touching the point) are left out of the
   /// fit and of pressure_max.
   double excluded = 0;
+  /// pressure_max is the largest pressure farther than this from the point: beyond `excluded`
+  /// and beyond kPressureMaxDistance of the zone's extent from it (so that it converges as the
+  /// mesh is refined towards the point).
+  double pressure_max_beyond = 0;
   std::optional<SingularityFit> fit;  ///< none when too few pressures lie beyond the excluded
 };
 
@@ -61,7 +73,8 @@ struct SingularPoint {
 std::vector<SingularPoint> singular_points(const Discretization& d, const ContactPair& pair,
                                            const Eigen::VectorXd& u, const ContactResult& result);
 
-/// The largest pressure of the result farther from each singular point than its `excluded`.
+/// The largest pressure of the result farther from each singular point than its
+/// `pressure_max_beyond`.
 double pressure_max_away(const ContactResult& result, const std::vector<SingularPoint>& points);
 
 }  // namespace hpcontact::model
