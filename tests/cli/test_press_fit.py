@@ -86,3 +86,18 @@ def test_the_hub_end_is_singular_whichever_body_carries(runs):
                and abs(float(r["Y"]) - sp["s"]) >= sp["pressure_max_beyond"] * (1 + 1e-6)]
         assert pair["pressure_max"] == pytest.approx(max(own), rel=1e-10), carrier
         assert any("unbounded" in w for w in summary["warnings"]), carrier
+
+
+def test_cuts_that_repeat_the_residuals_stop_at_once(hpcontact, root, tmp_path):
+    """The interference is in the geometry, not the load: with too few Newton iterations every
+    cut of the first step fails with the same residuals. The run stops at the first repeat (one
+    cut, not five) and says why; a load that a cut does change (Hertz) goes through its cuts."""
+    r = hpcontact("run", os.path.join(root, CASE), "--out", tmp_path / "fit", "-q",
+                  "--set", "solver.max_iterations=2")
+    assert r.returncode != 0
+    assert "failed after 1 cuts" in r.stderr and "repeated the same residuals" in r.stderr, r.stderr
+    assert "an interference" in r.stderr
+    r = hpcontact("run", os.path.join(root, "examples", "hertz", "p8.yaml"), "--out", tmp_path / "hertz",
+                  "-q", "--set", "solver.max_iterations=1")
+    assert r.returncode != 0
+    assert "failed after 5 cuts" in r.stderr and "repeated the same residuals" not in r.stderr, r.stderr

@@ -261,7 +261,9 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Halvings of a load step that does not converge: a step is never shorter than "
               "the nominal one halved max_cuts times (it doubles again, up to the nominal one, "
               "after two converged steps). A step of that length that does not converge ends "
-              "the run: the load cannot be carried beyond the last converged step.",
+              "the run: the load cannot be carried beyond the last converged step. A halved step "
+              "that fails with the same residuals as the longer one ends it at once: what does "
+              "not converge does not change with the load (bodies overlapping in the input).",
        .lower = at_least(0), .upper = at_most(50),
        .upper_why = "a step halved 50 times is 1e-15 of its length, below what double precision "
                     "resolves of the load factor"},

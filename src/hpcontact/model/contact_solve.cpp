@@ -188,6 +188,14 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     return why;
   };
 
+  // Whether two failed attempts' residual histories are the same (to round-off), and not empty.
+  auto same_residuals = [](const std::vector<double>& a, const std::vector<double>& b) {
+    if (a.empty() || a.size() != b.size()) return false;
+    for (size_t i = 0; i < a.size(); ++i)
+      if (!(std::abs(a[i] - b[i]) <= 1e-12 * std::max(std::abs(a[i]), std::abs(b[i])))) return false;
+    return true;
+  };
+
   // Load steps along the path parameter from `from` to `target` (factors(s) gives the
   // factors), halving a step that does not converge and doubling it again, up to the nominal
   // step, after two steps in a row converged; a step is never shorter than the nominal one
@@ -210,6 +218,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     const double nominal = (target - from) / std::max(1, steps);
     double lambda = from, step = nominal;
     int cuts = 0, in_a_row = 0;
+    std::vector<double> failed_before;  // the residuals of the last attempt that failed
     while (std::abs(target - lambda) > 1e-14 * std::max(1.0, std::abs(target))) {
       const double next = std::abs(target - lambda) < std::abs(step) * (1 + 1e-12) ? target : lambda + step;
       Factors fn = factors(next);
@@ -267,11 +276,19 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       bool structural = false;
       for (const Body& body : d.bodies) structural = structural || !body.free_rigid_motions.empty();
       const bool held_before = sol.load_steps > 0;
-      if (cuts == ss.max_cuts ||
+      // A shorter step that fails with the residuals of the longer one: what fails does not
+      // scale with the load (an interference of the input, a state the step starts from).
+      const bool unchanged = same_residuals(failed_before, rep.residual_history);
+      failed_before = rep.residual_history;
+      if (cuts == ss.max_cuts || unchanged ||
           (rep.status == solve::SolveStatus::singular && structural && !held_before)) {
         std::ostringstream os;
         os << "load step " << sol.load_steps + 1 << " (" << fn.describe() << ") failed after " << cuts
            << " cuts: " << why;
+        if (unchanged)
+          os << "; halving the step repeated the same residuals: what does not converge does not "
+                "change with the load step — bodies overlapping in the input (an interference, "
+                "which no load scales) or a state the step starts from; more cuts cannot help";
         if (cuts == ss.max_cuts && cuts > 0 && lambda != from)
           os << "; the load cannot be carried beyond the last converged step (" << converged.describe()
              << "): a step from it of 1/" << (1LL << cuts) << " of a load step (solver.max_cuts = "
