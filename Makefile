@@ -3,7 +3,7 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 PYTHON := /usr/bin/python3
 
-.PHONY: deps configure build program run test test-all test-sanitize fuzz bench bench-slurm install deb clean
+.PHONY: deps configure build program run test test-all test-sanitize fuzz bench bench-slurm bench-examples install deb clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -64,6 +64,11 @@ bench: build
 # BENCHMARKS.md's section "Studies: local processes and a Slurm job array" (about 2 minutes).
 bench-slurm: build
 	@$(PYTHON) bench/study_executors.py --hpcontact $(BUILD_DIR)/hpcontact
+
+# Every example's Newton iterations and time (a section of BENCHMARKS.md); BEFORE=path/to/an/older/hpcontact
+# measures it beside this build.
+bench-examples: program
+	@$(PYTHON) bench/examples.py --hpcontact $(BUILD_DIR)/hpcontact $(if $(BEFORE),--before $(BEFORE))
 
 # Installs the program, library, CMake package, Python module, scripts and docs under PREFIX.
 PREFIX ?= /usr/local

@@ -229,8 +229,9 @@ std::vector<SingularPoint> singular_points(const Discretization& d, const Contac
     for (const ChainEnd& end : chain_ends(b, edges)) {
       auto sp = examine_end(d, pair, u, result, b, end, tol);
       if (!sp) continue;
+      // one point seen from both bodies (a corner on the other body's end): reported once
       const bool seen = std::any_of(points.begin(), points.end(), [&](const SingularPoint& p) {
-        return std::abs(p.s - sp->s) <= 1e3 * tol;
+        return std::abs(p.s - sp->s) <= std::max({1e3 * tol, p.excluded, sp->excluded});
       });
       if (!seen) points.push_back(std::move(*sp));
     }
