@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <initializer_list>
+#include <map>
 
 #include "hpcontact/basis/quadrature.hpp"
 #include "hpcontact/core/error.hpp"
@@ -66,21 +67,20 @@ bool near_singular_point(const model::ContactPair& pair,
   return false;
 }
 
-}  // namespace
-
-ErrorEstimate estimate_error(const Solved& coarse, const Solved& enriched) {
+/// The points the estimate integrates over: per pair k and contact edge e the Gauss points of a
+/// rule exact for the difference of the two tractions, away from singular points; fn(k, e, X, w,
+/// ta, tb, sa, sb, shear) with w the weight times ds/dt, t the pressures and s the tangential
+/// tractions of the coarse and the enriched solve (s only where both have them: shear).
+template <class Fn>
+void for_each_traction_point(const Solved& coarse, const Solved& enriched, const Fn& fn) {
   const auto& a = coarse.solution;
   const auto& b = enriched.solution;
   HPC_REQUIRE(a.pairs.size() == b.pairs.size(), AdaptError,
               "estimate_error: the two solves have different contact pairs");
-  double diff2 = 0, norm2 = 0, shear_diff2 = 0, shear_norm2 = 0, capacity2 = 0;
-  bool friction = false;
   for (size_t k = 0; k < a.pairs.size(); ++k) {
     const model::BoundaryPressureProbe pa(coarse.discretization, a.pairs[k], a.u, a.multipliers_of(k));
     const model::BoundaryPressureProbe pb(enriched.discretization, b.pairs[k], b.u, b.multipliers_of(k));
     const bool shear = pa.has_tangential_traction() && pb.has_tangential_traction();
-    friction = friction || shear;
-    const double mu2 = coulomb_mu2(b.pairs[k]);
     const auto& body = enriched.discretization.bodies[b.pairs[k].body];
     for (size_t e = 0; e < b.pairs[k].edges.size(); ++e) {
       const auto& edge = body.mesh.edge(b.pairs[k].edges[e]);
@@ -93,29 +93,71 @@ ErrorEstimate estimate_error(const Solved& coarse, const Solved& enriched) {
         const Vec2 X = fem::edge_geometry(body.maps[edge.quads[0]], edge.local_edge[0], t, nullptr, &ds_dt);
         if (near_singular_point(b.pairs[k], {&a.contact[k], &b.contact[k]}, X)) continue;
         const int ke = static_cast<int>(e);
-        const double ta = pa.traction(ke, t), tb = pb.traction(ke, t);
-        diff2 += rule.weights[i] * ds_dt * (ta - tb) * (ta - tb);
-        norm2 += rule.weights[i] * ds_dt * tb * tb;
-        if (!shear) continue;
-        const double sa = pa.tangential_traction(ke, t), sb = pb.tangential_traction(ke, t);
-        shear_diff2 += rule.weights[i] * ds_dt * (sa - sb) * (sa - sb);
-        shear_norm2 += rule.weights[i] * ds_dt * sb * sb;
-        capacity2 += rule.weights[i] * ds_dt * mu2 * tb * tb;
+        const double sa = shear ? pa.tangential_traction(ke, t) : 0.0;
+        const double sb = shear ? pb.tangential_traction(ke, t) : 0.0;
+        fn(k, e, X, rule.weights[i] * ds_dt, pa.traction(ke, t), pb.traction(ke, t), sa, sb, shear);
       }
     }
   }
+}
+
+}  // namespace
+
+ErrorEstimate estimate_error(const Solved& coarse, const Solved& enriched) {
+  double diff2 = 0, norm2 = 0, shear_diff2 = 0, shear_norm2 = 0, capacity2 = 0;
+  bool friction = false;
+  for_each_traction_point(coarse, enriched, [&](size_t k, size_t, const Vec2&, double w, double ta,
+                                                double tb, double sa, double sb, bool shear) {
+    diff2 += w * (ta - tb) * (ta - tb);
+    norm2 += w * tb * tb;
+    if (!shear) return;
+    friction = true;
+    shear_diff2 += w * (sa - sb) * (sa - sb);
+    shear_norm2 += w * sb * sb;
+    capacity2 += w * coulomb_mu2(enriched.solution.pairs[k]) * tb * tb;
+  });
   ErrorEstimate est;
   if (norm2 > 0) est.pressure = std::sqrt(diff2 / norm2);
   if (friction) {
     const double scale2 = shear_scale2(shear_norm2, capacity2, norm2);
     if (scale2 > 0) est.shear = std::sqrt(shear_diff2 / scale2);
   }
-  const double ua = post::strain_energy(coarse.discretization, a.u);
-  const double ub = post::strain_energy(enriched.discretization, b.u);
+  const double ua = post::strain_energy(coarse.discretization, coarse.solution.u);
+  const double ub = post::strain_energy(enriched.discretization, enriched.solution.u);
   if (ub > 0) est.energy = std::sqrt(std::abs(ub - ua) / ub);
   est.dofs = enriched.discretization.n_free;
-  est.newton_iterations = b.newton_iterations;
+  est.newton_iterations = enriched.solution.newton_iterations;
   return est;
+}
+
+std::optional<ErrorPeak> pressure_error_peak(const Solved& coarse, const Solved& enriched) {
+  struct Edge {
+    double diff2 = 0, length = 0, peak = -1;
+    Vec2 X = Vec2::Zero();
+  };
+  std::map<std::pair<size_t, size_t>, Edge> edges;
+  double total = 0;
+  for_each_traction_point(coarse, enriched, [&](size_t k, size_t e, const Vec2& X, double w, double ta,
+                                                double tb, double, double, bool) {
+    Edge& edge = edges[{k, e}];
+    const double d2 = (ta - tb) * (ta - tb);
+    edge.diff2 += w * d2;
+    edge.length += w;
+    total += w * d2;
+    if (d2 > edge.peak) {
+      edge.peak = d2;
+      edge.X = X;
+    }
+  });
+  const auto worst = std::max_element(edges.begin(), edges.end(), [](const auto& a, const auto& b) {
+    return a.second.diff2 < b.second.diff2;
+  });
+  if (worst == edges.end() || !(total > 0)) return std::nullopt;
+  const auto& pair = enriched.solution.pairs[worst->first.first];
+  const auto& mesh = enriched.discretization.bodies[pair.body].mesh;
+  const auto& edge = mesh.edge(pair.edges[worst->first.second]);
+  return ErrorPeak{pair.body, worst->second.X, worst->second.diff2 / total, worst->second.length,
+                   {mesh.node(edge.v0), mesh.node(edge.v1)}};
 }
 
 std::vector<Eigen::VectorXd> traction_error_gradient(const Solved& coarse, const Solved& enriched) {

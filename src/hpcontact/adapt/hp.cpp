@@ -110,6 +110,54 @@ std::string limit_message(const HpOutcome& out, const HpOptions& options, const 
   return os.str();
 }
 
+/// A contact edge holding at least this share of the estimated error of the pressure is where the
+/// next centre goes, when a zone end on it has none.
+constexpr double kErrorPeakShare = 0.5;
+
+/// With a tolerance: when one contact edge holds most of the estimated error of the pressure and
+/// a zone end of the enriched solve lies within its length of the error's peak there with no
+/// centre following it (two ends nearest to one node of a coarse input mesh: the node serves
+/// one), a centre for it: the nearest vertex of the mesh the steps are built from (`base`'s)
+/// that is no centre yet and can move onto it, followed from then on as the others. Whether one
+/// was added.
+bool add_unfollowed_zone_end(const Solved& base, const Solved& coarse, const Solved& enriched,
+                             const std::vector<ZoneEnd>& ends, std::vector<Centre>& centres) {
+  const auto peak = pressure_error_peak(coarse, enriched);
+  if (!peak || peak->share < kErrorPeakShare) return false;
+  const ZoneEnd* end = nearest_end(ends, peak->body, ZoneEnd::Kind::contact, peak->X);
+  if (!end || (end->X - peak->X).norm() > peak->edge_length) return false;
+  for (const Centre& c : centres)  // followed already: a centre at it, or ending the edge
+    if (c.body == peak->body &&
+        ((c.at - end->X).norm() <= 0.1 * peak->edge_length ||
+         (c.at - peak->edge_ends[0]).norm() <= 1e-9 * (1 + peak->edge_length) ||
+         (c.at - peak->edge_ends[1]).norm() <= 1e-9 * (1 + peak->edge_length)))
+      return false;
+  const auto& mesh = base.discretization.bodies[peak->body].mesh;
+  std::vector<std::pair<double, int>> candidates;
+  for (const auto& pair : base.solution.pairs) {
+    if (pair.body != peak->body && pair.other != peak->body) continue;
+    for (int e : pair.body == peak->body ? pair.edges : pair.other_edges)
+      for (int v : {mesh.edge(e).v0, mesh.edge(e).v1})
+        candidates.push_back({(mesh.node(v) - end->X).norm(), mesh.node_id(v)});
+  }
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  for (const auto& [distance, id] : candidates) {
+    const bool taken = std::any_of(centres.begin(), centres.end(), [&](const Centre& c) {
+      return c.body == peak->body && c.node == id;
+    });
+    if (taken) continue;
+    try {
+      if (!BoundaryTrack(base.spec, peak->body, id).reaches(end->X)) continue;
+    } catch (const AdaptError&) {
+      continue;  // an end of an edge set, a corner: it cannot move
+    }
+    centres.push_back({peak->body, id, end->X, ZoneEnd::Kind::contact});
+    return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 HpOptions hp_options(const model::AdaptSpec& adapt) {
@@ -139,6 +187,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
   };
   std::vector<Centre> centres;
   model::ProblemSpec base = spec;  // the input, refined where a zone is narrow (step 0)
+  SolvedPtr base_solved;           // its solve
   DegreeCorrections corrections;
   std::string where;  // the solve under way, for a failure's message
   try {
@@ -177,6 +226,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
                            : without_ends_at_singular_points(zone_ends_of(*s, options.stick_slip),
                                                              singular_ends_of(*s));
           if (step == 0) {
+            base_solved = s;
             for (const auto& n : nearest_movable_nodes(*s, ends))
               centres.push_back({n.track.body(), n.track.node_id(), n.end.X, n.end.kind});
             add_singular_centres(*s, ends, centres);
@@ -273,6 +323,13 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       // The next mesh is centred on the zone ends of the better solve.
       const auto ends_plus = without_ends_at_singular_points(zone_ends_of(*enriched, options.stick_slip),
                                                              singular_ends_of(*enriched));
+      if (base_solved && add_unfollowed_zone_end(*base_solved, *s, *enriched, ends_plus, centres)) {
+        std::ostringstream os;
+        os.precision(6);
+        os << "hp step " << step << ": the estimated error concentrates at the zone end (" << centres.back().at.x()
+           << ", " << centres.back().at.y() << "), which no refinement follows: refining towards it too";
+        say(os.str());
+      }
       for (Centre& c : centres)
         if (const ZoneEnd* nearest = nearest_end(ends_plus, c.body, c.kind, c.at)) c.at = nearest->X;
     }

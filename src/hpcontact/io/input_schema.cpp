@@ -527,7 +527,10 @@ const std::vector<KeySpec>& input_schema() {
               "edges, examples/flat-punch/coarse-hp.yaml), around the node there (which stays) or "
               "for the other body's corner the node moved onto its foot, a zone end within the "
               "elements touching one being the point's; the estimate leaves those elements out "
-              "(the pressure is unbounded there). none: no adaptivity.",
+              "(the pressure is unbounded there). With a tolerance, when one contact edge holds "
+              "most of the estimated error and a zone end there has no refinement following it "
+              "(two zone ends at one node of a coarse input mesh), hp refines towards it too from "
+              "the next step. none: no adaptivity.",
        .choices = {"rp", "hp", "none"}},
       {.path = "adapt.tolerance", .type = T::number,
        .doc = "hp: the accuracy asked for, the relative L2 error of the contact pressure (with "
