@@ -14,14 +14,16 @@ than --timeout is stopped and shown as such.
 import argparse
 import json
 import os
-import platform
 import re
 import shutil
 import subprocess
+import sys
 import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import sections  # noqa: E402
 BEGIN, END = "<!-- kept: examples -->", "<!-- /kept: examples -->"
 
 
@@ -98,26 +100,6 @@ def section(rows, label_before, label_after, load, cpu):
     return "\n".join(lines + ["", END, ""])
 
 
-def replace_section(path, text):
-    old = open(path, encoding="utf-8").read() if os.path.exists(path) else ""
-    if BEGIN in old and END in old:
-        new = old[:old.index(BEGIN)] + text + old[old.index(END) + len(END):].lstrip("\n")
-    else:
-        new = old.rstrip("\n") + "\n\n" + text
-    with open(path, "w", encoding="utf-8") as f:
-        f.write(new)
-
-
-def cpu_name():
-    try:
-        for line in open("/proc/cpuinfo"):
-            if line.startswith("model name"):
-                return f"{line.split(':', 1)[1].strip()}, {os.cpu_count()} cores"
-    except OSError:
-        pass
-    return f"{platform.machine()}, {os.cpu_count()} cores"
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--hpcontact", default=os.path.join(ROOT, "build", "hpcontact"),
@@ -139,7 +121,8 @@ def main():
         after = run(os.path.abspath(args.hpcontact), problem, args.timeout)
         rows.append((problem, before, after))
         print(problem, before, after, flush=True)
-    replace_section(args.output, section(rows, args.label_before, args.label_after, load, cpu_name()))
+    sections.replace_section(args.output, section(rows, args.label_before, args.label_after, load, sections.cpu_name()),
+                             BEGIN, END)
 
 
 if __name__ == "__main__":

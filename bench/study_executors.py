@@ -9,7 +9,6 @@ that section only; bench/report.py keeps it when it rewrites the rest).
 import argparse
 import csv
 import os
-import platform
 import shutil
 import statistics
 import subprocess
@@ -18,6 +17,8 @@ import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import sections  # noqa: E402
 sys.path.insert(0, os.path.join(ROOT, "tests", "slurm"))
 from conftest import boot, require_slurm, start  # noqa: E402  (the tests' cluster)
 
@@ -71,26 +72,6 @@ def section(local, slurm, rows, run_mean, repeat, cpu, load):
         ""])
 
 
-def replace_section(path, text):
-    old = open(path, encoding="utf-8").read() if os.path.exists(path) else ""
-    if BEGIN in old and END in old:
-        new = old[:old.index(BEGIN)] + text + old[old.index(END) + len(END):].lstrip("\n")
-    else:
-        new = old.rstrip("\n") + "\n\n" + text
-    with open(path, "w", encoding="utf-8") as f:
-        f.write(new)
-
-
-def cpu_name():
-    try:
-        for line in open("/proc/cpuinfo"):
-            if line.startswith("model name"):
-                return f"{line.split(':', 1)[1].strip()}, {os.cpu_count()} cores"
-    except OSError:
-        pass
-    return f"{platform.machine()}, {os.cpu_count()} cores"
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--hpcontact", default=os.path.join(ROOT, "build", "hpcontact"),
@@ -119,8 +100,8 @@ def main():
             c.cancel_all()
         finally:
             c.stop()
-    text = section(local, slurm, 24, statistics.mean(runs), args.repeat, cpu_name(), load)
-    replace_section(args.output, text)
+    text = section(local, slurm, 24, statistics.mean(runs), args.repeat, sections.cpu_name(), load)
+    sections.replace_section(args.output, text, BEGIN, END)
     shutil.rmtree(folder, ignore_errors=True)
     print(text)
 

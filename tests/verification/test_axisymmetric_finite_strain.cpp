@@ -96,30 +96,29 @@ model::ProblemSpec stretched_cylinder(int p, const char* law, double lambda, boo
   return spec;
 }
 
-/// The axial force on the top: the work of the internal forces on the virtual field δu_z = 1
-/// on the top edge (its vertex modes 1, every other mode 0), which vanishes on the bottom and
-/// whose free dofs carry no residual at equilibrium.
-double top_force(const model::Discretization& d, const Eigen::VectorXd& u) {
+/// The internal force conjugate to a rigid shift of the nodes on the side `on` picks along
+/// `component` (0: r, 1: z): the work of the internal forces on the virtual field that is 1 there
+/// (its vertex modes 1, every other mode 0), which vanishes on the opposite side and whose free
+/// dofs carry no residual at equilibrium.
+template <class OnSide>
+double side_force(const model::Discretization& d, const Eigen::VectorXd& u, int component, const OnSide& on) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(d.n_dofs);
   model::FiniteStrainForces(d).add(u, f, nullptr, nullptr);
   const auto& body = d.bodies[0];
   double force = 0;
   for (int v = 0; v < body.mesh.n_nodes(); ++v)
-    if (std::abs(body.mesh.node(v).y() - 2) < 1e-12)
-      force += f(body.dof_offset + 2 * body.dofs.vertex_mode(v) + 1);
+    if (on(body.mesh.node(v))) force += f(body.dof_offset + 2 * body.dofs.vertex_mode(v) + component);
   return force;
 }
 
-/// The force on the lateral surface R = 2 along r: the work of the internal forces on the
-/// virtual field δu_r = 1 on that side (its vertex modes 1, every other mode 0), as top_force.
+/// The axial force on the top z = 2.
+double top_force(const model::Discretization& d, const Eigen::VectorXd& u) {
+  return side_force(d, u, 1, [](const Vec2& X) { return std::abs(X.y() - 2) < 1e-12; });
+}
+
+/// The force on the lateral surface R = 2 along r.
 double lateral_force(const model::Discretization& d, const Eigen::VectorXd& u) {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(d.n_dofs);
-  model::FiniteStrainForces(d).add(u, f, nullptr, nullptr);
-  const auto& body = d.bodies[0];
-  double force = 0;
-  for (int v = 0; v < body.mesh.n_nodes(); ++v)
-    if (std::abs(body.mesh.node(v).x() - 2) < 1e-12) force += f(body.dof_offset + 2 * body.dofs.vertex_mode(v));
-  return force;
+  return side_force(d, u, 0, [](const Vec2& X) { return std::abs(X.x() - 2) < 1e-12; });
 }
 
 /// The homogeneous state F = diag(1 + ε, 1, 1 + ε) (r, z, θ) of a uniform radial expansion
