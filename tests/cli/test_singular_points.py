@@ -197,3 +197,22 @@ def test_hp_reaches_1e_3_on_a_punch_with_rounded_corners(hpcontact, root, tmp_pa
     assert len(summary["adapt"]["history"]) <= steps_at_most + 1
     assert "singular_points" not in summary["contact_pairs"][0]
     assert ("which no refinement follows" in r.stdout + r.stderr) == follows_a_second_end
+
+
+def test_positions_are_given_undeformed_and_deformed(punch, hpcontact, root, tmp_path):
+    """Where a position is reported it is reported twice: the zone's extent along the surface of
+    the undeformed points (what the linear theory's closed forms compare with) and of the
+    deformed ones (zone.deformed), a singular point's `at` and `at_deformed` (the corner's row of
+    contact.csv, X and x). Hertz p = 8 (b/R = 0.2): the deformed zone ends at the deformed Γ*,
+    2.5 % inside the undeformed one."""
+    summary, rows, _ = punch
+    (sp,) = summary["contact_pairs"][0]["singular_points"]
+    (corner,) = [r for r in rows if float(r["X"]) == A]
+    assert sp["at_deformed"] == pytest.approx([float(corner["x"]), float(corner["y"])], abs=1e-9)
+    assert sp["at_deformed"][1] < -1e-4  # pushed down
+    hertz, _, _ = run(hpcontact, os.path.join(root, "examples", "hertz", "p8.yaml"), tmp_path)
+    pair = hertz["contact_pairs"][0]
+    zone = pair["zone"]
+    assert zone["to"] == pytest.approx(pair["gamma_star"][0][0], rel=1e-12)
+    assert zone["deformed"]["to"] == pytest.approx(pair["gamma_star_deformed"][0][0], rel=1e-12)
+    assert zone["deformed"]["to"] < 0.98 * zone["to"]

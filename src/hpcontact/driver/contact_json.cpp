@@ -10,6 +10,7 @@ nlohmann::json singular_points_json(const std::vector<model::SingularPoint>& poi
   nlohmann::json all = nlohmann::json::array();
   for (const auto& p : points) {
     nlohmann::json j = {{"at", {p.X.x() + 0.0, p.X.y() + 0.0}},  // + 0.0: no -0
+                        {"at_deformed", {p.x.x() + 0.0, p.x.y() + 0.0}},
                         {"s", p.s},
                         {"where", p.where},
                         {"peak", p.peak},
@@ -34,7 +35,11 @@ nlohmann::json singular_points_json(const std::vector<model::SingularPoint>& poi
 /// length from the frame's origin) and its length.
 nlohmann::json zone_json(const model::ContactPair& pair, const model::ContactResult& c) {
   const auto [lo, hi] = *c.zone;
-  nlohmann::json z = {{"from", lo}, {"to", hi}, {"length", hi - lo}};
+  nlohmann::json z = {{"from", lo + 0.0}, {"to", hi + 0.0}, {"length", hi - lo}};  // + 0.0: no -0
+  if (c.zone_deformed) {
+    const auto [dlo, dhi] = *c.zone_deformed;
+    z["deformed"] = {{"from", dlo + 0.0}, {"to", dhi + 0.0}, {"length", dhi - dlo}};
+  }
   return z;
 }
 

@@ -419,6 +419,21 @@ std::optional<double> half_width(const ContactPair& pair, double lo, double hi,
   return std::nullopt;
 }
 
+/// The zone's extent along the pair's surface measured at the deformed points: those in contact
+/// and the outer zone ends (gamma_star_deformed).
+std::pair<double, double> deformed_extent(const ContactPair& pair, const ContactResult& res) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  auto take = [&](const Vec2& x) {
+    const double s = pair.frame->coordinate(x);
+    lo = std::min(lo, s);
+    hi = std::max(hi, s);
+  };
+  for (size_t i = 0; i < res.states.size(); ++i)
+    if (pair.constraints ? res.nodes[i].active : res.states[i].gap < 0) take(res.states[i].x);
+  for (const int k : res.outer_ends) take(res.gamma_star_deformed[k]);
+  return {lo, hi};
+}
+
 ContactResult contact_result(const Discretization& d, const ContactPair& pair,
                              const Eigen::VectorXd& u, const Eigen::VectorXd* multipliers,
                              const Eigen::VectorXd* step_slips, const Eigen::VectorXd* total_slips) {
@@ -594,6 +609,7 @@ ContactResult contact_result(const Discretization& d, const ContactPair& pair,
     res.zone = {lo, hi};
     res.contact_length = hi - lo;
     res.half_width = half_width(pair, lo, hi, res.s);
+    res.zone_deformed = deformed_extent(pair, res);
   }
   res.singular_points = singular_points(d, pair, u, res);
   res.pressure_max = pressure_max_away(res, res.singular_points);

@@ -72,6 +72,9 @@ struct ContactResult {
   /// The zone's extent [lo, hi] along the pair's surface frame (ContactPair::frame: arc length
   /// from its origin, undeformed points), if any point is in contact.
   std::optional<std::pair<double, double>> zone;
+  /// The same of the deformed points (where the closed forms of the linear theory, which put the
+  /// pressure on the undeformed surface, do not compare).
+  std::optional<std::pair<double, double>> zone_deformed;
   /// Half the zone's length where that is its half width: a straight surface and a zone
   /// symmetric about the frame's origin (or a half model's, starting at it); none otherwise.
   std::optional<double> half_width;

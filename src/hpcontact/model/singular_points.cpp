@@ -189,6 +189,8 @@ std::optional<SingularPoint> examine_end(const Discretization& d, const ContactP
   }
   SingularPoint sp;
   sp.X = end.X;
+  const int vertex = body.dof_offset + 2 * body.dofs.vertex_mode(end.node);
+  sp.x = end.X + Vec2(u(vertex), u(vertex + 1));
   sp.s = s0;
   sp.foot = foot_X;
   sp.on_other = other;

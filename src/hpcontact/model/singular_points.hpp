@@ -42,6 +42,7 @@ struct SingularityFit {
 /// boundary and its pressure rises towards it.
 struct SingularPoint {
   Vec2 X;         ///< undeformed position (on the body's boundary, or the other body's corner)
+  Vec2 x;         ///< the same point deformed
   /// Its position along the pair's surface (the other body's corner: that of the undeformed
   /// point of this body it touches deformed).
   double s = 0;
