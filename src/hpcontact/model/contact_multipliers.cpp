@@ -103,8 +103,10 @@ std::shared_ptr<const PairConstraints> make_pair_constraints(const ContactPairSp
     bool any = false;
     for (int j = 0; j < n; ++j)
       if (std::abs(c->nodes.nodes[j].X.x()) <= 1e-12 * body.mesh.size() &&
-          std::abs(c->weight(j)) <= 1e-6 * edge_share[j])
-        any = c->passive[j] = 1;
+          std::abs(c->weight(j)) <= 1e-6 * edge_share[j]) {
+        c->passive[j] = 1;
+        any = true;
+      }
     if (!any) c->passive.clear();
     c->passive_row_weight = c->weight.cwiseAbs().maxCoeff();
   }

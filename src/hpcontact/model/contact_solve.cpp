@@ -160,12 +160,12 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   // A progress line per Newton iteration.
   auto newton_progress = [&]() -> solve::IterationCallback {
     if (!progress) return {};
-    const auto start = std::chrono::steady_clock::now();
-    return [&, start](int it, double rn, double dxn) {
+    const auto began = std::chrono::steady_clock::now();
+    return [&, began](int it, double rn, double dxn) {
       std::ostringstream os;
       os << "  iteration " << it << ": |R| " << rn << ", |dx| " << dxn;
       if (!pairs.empty()) os << ", " << system.points_in_contact() << " points in contact";
-      os << ", " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+      os << ", " << std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count()
          << " s";
       say(os.str());
     };
@@ -444,22 +444,22 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     if (!bordered && ss.stages.empty()) {
       if (!advance_to(0.0, first)) return failed();
     } else if (!bordered) {
-      Factors start;
+      Factors stage_start;
       for (const auto& stage : ss.stages) {
         const Factors end{Vec2(stage.displacements_x(), stage.displacements_y()), stage.loads};
         auto along = [&](double s) {
-          Factors f{start.displacements + s * (end.displacements - start.displacements),
-                    start.loads + s * (end.loads - start.loads)};
+          Factors f{stage_start.displacements + s * (end.displacements - stage_start.displacements),
+                    stage_start.loads + s * (end.loads - stage_start.loads)};
           if (staged_force) f.displacements.setConstant(factor_for(f.displacements.y()));  // a share
           return f;
         };
         const int steps = stage.steps > 0 ? stage.steps : ss.load_steps;
         const ForceTarget force =
             staged_force ? ForceTarget(ForceControl{ss.target_resultant->component, ss.target_resultant->value,
-                                                    start.displacements.y(), end.displacements.y(), false})
+                                                    stage_start.displacements.y(), end.displacements.y(), false})
                          : std::nullopt;
         if (!advance(0.0, 1.0, steps, along, force)) return failed();
-        start = end;
+        stage_start = end;
       }
     }
     // the secant on complete solves only where no step held the target itself
