@@ -80,6 +80,16 @@ def test_the_hub_end_is_singular_whichever_body_carries(runs):
         (sp,) = pair["singular_points"]
         assert sp["at"] == pytest.approx([9.99, HUB_END], abs=1e-9), carrier
         assert "body 'hub' (node 28)" in sp["where"] and sp["peak_converged"] is False
+        if carrier == "shaft":  # the shaft's point that the hub's deformed corner touches
+            shaft = sorted((float(r["Y"]), float(r["y"])) for r in rows if r["body"] == "shaft")
+            below = max(p for p in shaft if p[0] <= sp["s"])
+            above = min(p for p in shaft if p[0] > sp["s"])
+            w = (sp["s"] - below[0]) / (above[0] - below[0])
+            touched = below[1] + w * (above[1] - below[1])  # that point's deformed z
+            assert touched == pytest.approx(sp["at_deformed"][1], abs=2e-4)
+            assert sp["s"] < HUB_END - 5e-3
+        else:  # the hub's own end
+            assert sp["s"] == pytest.approx(HUB_END, abs=1e-12)
         assert sp["fit"]["exponent"] > 0.05 and sp["fit"]["points"] >= 6, carrier
         assert pair["pressure_max"] < sp["peak"], carrier
         own = [float(r["pressure"]) for r in rows if r["body"] == carrier
