@@ -60,6 +60,12 @@ class Mutation:
     expect: list   # property tests that must catch it (ctest names or pytest node ids)
 
 
+def expected(test, m):
+    """Whether a failed test is one of the mutation's property tests: its id, or a parametrized
+    case of one (`test_x[case]` of `test_x`)."""
+    return test in m.expect or test.split("[")[0] in m.expect
+
+
 S = "src/hpcontact/"
 MUTATIONS = [
     # basis
@@ -1090,7 +1096,7 @@ def main():
                     for stage, cmd in enumerate(stages):
                         # The end-to-end tests only when they can decide the verdict: no property
                         # test has failed yet, or the mutation's property tests are among them.
-                        if stage == 1 and not args.full and any(t in m.expect for t in failed) and \
+                        if stage == 1 and not args.full and any(expected(t, m) for t in failed) and \
                                 not any(t.startswith(("cli:", "cli/", "python")) for t in m.expect):
                             break
                         if stage == 1:
@@ -1100,8 +1106,8 @@ def main():
                         if status != 0 and not found:
                             found = ["(ctest failed: see mutate.log)"]
                         failed += found
-                    props = [t for t in failed if t in m.expect]
-                    others = [t for t in failed if t not in m.expect]
+                    props = [t for t in failed if expected(t, m)]
+                    others = [t for t in failed if not expected(t, m)]
                     verdict = "caught" if props else ("other only" if others else "SURVIVED")
             finally:
                 with open(path, "wb") as f:
