@@ -520,7 +520,7 @@ MUTATIONS = [
              "the singularity fitted from the pressures of the elements touching it too",
              ["cli:tests/cli/test_singular_points.py::test_the_punch_corner_is_singular_with_sadowskys_strength"]),
     Mutation("other-corner-undeformed", "model", S + "model/singular_points.cpp",
-             "    if (!pair.boundary->project(end.X + Vec2(u(dof), u(dof + 1)), foot)) return std::nullopt;",
+             "    if (!pair.boundary->project(x_end, foot)) return std::nullopt;",
              "    if (!pair.boundary->project(end.X, foot)) return std::nullopt;",
              "the other body's corner sought on this body at its undeformed place",
              ["cli:tests/cli/test_press_fit.py::test_the_hub_end_is_singular_whichever_body_carries"]),

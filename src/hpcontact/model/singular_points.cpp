@@ -146,11 +146,12 @@ std::optional<SingularPoint> examine_end(const Discretization& d, const ContactP
   if (!end.corner && on_mirror(d, body, end)) return std::nullopt;
   const Body& own = d.bodies[pair.body];
   const bool other = &body != &own;
+  const int vertex = body.dof_offset + 2 * body.dofs.vertex_mode(end.node);
+  const Vec2 x_end = end.X + Vec2(u(vertex), u(vertex + 1));  // the end deformed
   Vec2 foot_X = end.X;
   if (other) {  // the other body's corner: at the foot of its deformed position on this body
-    const int dof = body.dof_offset + 2 * body.dofs.vertex_mode(end.node);
     contact::BoundaryPoint foot;
-    if (!pair.boundary->project(end.X + Vec2(u(dof), u(dof + 1)), foot)) return std::nullopt;
+    if (!pair.boundary->project(x_end, foot)) return std::nullopt;
     foot_X = pair.boundary->undeformed(foot.edge, foot.t);
   }
   const double s0 = pair.frame->coordinate(foot_X);
@@ -189,8 +190,7 @@ std::optional<SingularPoint> examine_end(const Discretization& d, const ContactP
   }
   SingularPoint sp;
   sp.X = end.X;
-  const int vertex = body.dof_offset + 2 * body.dofs.vertex_mode(end.node);
-  sp.x = end.X + Vec2(u(vertex), u(vertex + 1));
+  sp.x = x_end;
   sp.s = s0;
   sp.foot = foot_X;
   sp.on_other = other;
