@@ -181,8 +181,9 @@ def test_bilateral_rp_moves_a_node_of_each_body_and_equals_rp8(hpcontact, root, 
 def test_bilateral_equals_unilateral_when_the_zone_end_is_a_node(hpcontact, root, tmp_path):
     """What separates bilateral.yaml from p8.yaml is the edge the zone ends in, not the exact
     method: with node 2 of each cylinder moved onto the zone end that rp8.yaml locates, p8 and
-    its bilateral twin agree to round-off — the multiplier to 1e-8 of p0 (measured 9e-11), the
-    energy per cylinder and the load factor to 1e-12 (4e-15).
+    its bilateral twin agree to Newton's tolerance — the multiplier to 1e-8 of p0 (measured
+    9e-11), the energy per cylinder and the load factor to 1e-11 (2.8e-12 at the default
+    solver.tolerance 1e-10, 2e-16 at 1e-13).
     Why the seed's mesh cannot: at an active collocation node the constraint "the node lies on
     the other boundary" has its gradient along that boundary's normal, whatever the gap's
     definition, so the upper node is pushed along the lower cylinder's normal. Where an edge is
@@ -215,8 +216,8 @@ def test_bilateral_equals_unilateral_when_the_zone_end_is_a_node(hpcontact, root
     assert len(ru) == len(rb) > 100
     assert max(abs(float(a["pressure_multiplier"]) - float(b["pressure_multiplier"]))
                for a, b in zip(ru, rb)) < 1e-8 * p0
-    assert abs(bil["strain_energy"] / (2 * uni["strain_energy"]) - 1) < 1e-12
-    assert abs(bil["load_factor"] / uni["load_factor"] - 1) < 1e-12
+    assert abs(bil["strain_energy"] / (2 * uni["strain_energy"]) - 1) < 1e-11
+    assert abs(bil["load_factor"] / uni["load_factor"] - 1) < 1e-11
 
 
 def test_obstacle_the_body_starts_inside_is_refused(hpcontact, root, tmp_path):

@@ -2,9 +2,11 @@
 // two-body penalty terms against finite differences of the contact forces.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
+#include "hpcontact/contact/point_gap.hpp"
 #include "hpcontact/contact/two_body.hpp"
 #include "hpcontact/io/problem_reader.hpp"
 #include "hpcontact/model/discretization.hpp"
@@ -121,4 +123,63 @@ TEST_F(TwoBodyContact, ForcesBalance) {
   }
   EXPECT_GT(rs.y(), 0);
   EXPECT_LT((rs + rm).norm(), 1e-10 * rs.norm());
+}
+
+// The mean-normal gap (contact[].normal: mean) of every point at a state where the boundaries
+// are tilted (the mean normal up to 0.02 rad and more from the vertical): its gradient dg_row, the derivative d2g
+// of its force direction n̄ N, and the turning of its tangent (dtau, ddt) equal central
+// differences of g, dg, τ and dt over the dofs of both bodies (relative to their largest
+// entries: < 1e-6; measured ~1e-9). The force direction itself is n̄ N on both bodies,
+// equal and opposite.
+TEST_F(TwoBodyContact, MeanNormalGapDerivativesAgreeWithDifferences) {
+  const contact::DeformableBoundary own{up.mesh, up.dofs, up.maps, up.edge_sets.at("bottom")};
+  const int ns = up.dofs.n_dofs(), nm = lo.dofs.n_dofs();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> r(-1, 1);
+  Eigen::VectorXd u(ns + nm);
+  for (int i = 0; i < ns + nm; ++i) u(i) = 0.01 * r(rng);
+  for (int i = 1; i < ns; i += 2) u(i) -= 0.06;
+  const auto gap_at = [&](const Eigen::VectorXd& x, const contact::ContactPoint& cp, bool second) {
+    own.set_displacement(x.head(ns));
+    boundary.set_displacement(x.tail(nm));
+    return contact::two_body_point_gap(cp, x.head(ns), boundary, 0, ns, second, &own, second);
+  };
+  int checked = 0;
+  double angle = 0;  // the largest angle of n̄ from the vertical: the state is tilted
+  for (const auto& cp : pts) {
+    const contact::PointGap pg = gap_at(u, cp, true);
+    if (!pg.found || pg.beyond_end) continue;
+    ASSERT_EQ(pg.dg_row.size(), pg.dg.size());
+    const int L = static_cast<int>(pg.dofs.size());
+    Eigen::VectorXd dg_fd(L), dtau_err(L);
+    Eigen::MatrixXd d2g_fd(L, L), ddt_fd(L, L), dtau_fd(2, L);
+    const double h = 1e-6;
+    for (int b = 0; b < L; ++b) {
+      Eigen::VectorXd up_ = u, um_ = u;
+      up_(pg.dofs[b]) += h;
+      um_(pg.dofs[b]) -= h;
+      const auto p = gap_at(up_, cp, false), m = gap_at(um_, cp, false);
+      ASSERT_EQ(p.dofs, pg.dofs);  // the foot stays on its edge
+      ASSERT_EQ(m.dofs, pg.dofs);
+      dg_fd(b) = (p.g - m.g) / (2 * h);
+      d2g_fd.col(b) = (p.dg - m.dg) / (2 * h);
+      ddt_fd.col(b) = (p.dt - m.dt) / (2 * h);
+      dtau_fd.col(b) = (p.tangent - m.tangent) / (2 * h);
+    }
+    const auto rel = [](const auto& a, const auto& f) { return (a - f).cwiseAbs().maxCoeff() / f.cwiseAbs().maxCoeff(); };
+    EXPECT_LT(rel(pg.dg_row, dg_fd), 1e-6);
+    EXPECT_LT(rel(pg.d2g, d2g_fd), 1e-6);
+    EXPECT_LT(rel(pg.ddt, ddt_fd), 1e-6);
+    EXPECT_LT(rel(pg.dtau, dtau_fd), 1e-6);
+    std::printf("point t = %+.3f: dg_row %.2g, d2g %.2g, ddt %.2g, dtau %.2g\n", cp.t, rel(pg.dg_row, dg_fd),
+                rel(pg.d2g, d2g_fd), rel(pg.ddt, ddt_fd), rel(pg.dtau, dtau_fd));
+    // the force direction: n̄ N_k on the point's modes (and −n̄ N_k(ξ) on the foot's), not ∂g/∂u
+    for (size_t k = 0; k < cp.modes.size(); ++k)
+      for (int c = 0; c < 2; ++c) EXPECT_DOUBLE_EQ(pg.dg(2 * k + c), cp.N(k) * pg.normal(c));
+    angle = std::max(angle, std::acos(std::clamp(-pg.normal.dot(Vec2(0, -1)), -1.0, 1.0)));
+    ++checked;
+  }
+  EXPECT_GE(checked, 6);
+  std::printf("largest tilt of the mean normal %.3g rad\n", angle);
+  EXPECT_GT(angle, 0.02);
 }

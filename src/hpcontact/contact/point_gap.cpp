@@ -106,25 +106,32 @@ PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
     return beyond_free_end(cp, pg.x, foot, offset_s, offset_m);
   }
   pg.found = true;
-  Vec2 n = foot.normal;
+  const Vec2 n_m = foot.normal;
   const Vec2 t = foot.dx_dt;
+  const Vec2 r = pg.x - foot.x;
+  const double g_m = r.dot(n_m);  // the one-sided gap: the foot is the closest point along n_m
+  Vec2 n = n_m;
+  BoundaryPoint here;
+  double mean_length = 0;  // |n_m − n_s| of the two-sided normal
   if (own) {
-    BoundaryPoint here;
     own->evaluate(cp.edge, cp.t, here);
-    const Vec2 mean = foot.normal - here.normal;
-    if (mean.norm() > 1e-8) n = mean.normalized();
+    const Vec2 mean = n_m - here.normal;
+    mean_length = mean.norm();
+    if (mean_length > 1e-8) n = mean / mean_length;
   }
+  const bool two_sided = mean_length > 1e-8;
   pg.normal = n;
   pg.tangent = friction_tangent(n);  // not t/|t|: t follows the edge's parametrisation
   pg.foot = foot.x;
   pg.foot_edge = foot.edge;
   pg.foot_t = foot.t;
-  pg.g = (pg.x - foot.x).dot(n);
+  pg.g = r.dot(n);
   const int mm = static_cast<int>(foot.modes.size());
   const int L = 2 * (ms + mm);
   pg.dofs.resize(L);
   pg.dg.resize(L);
   pg.dt.resize(L);
+  // Gt = ∂[(x_s − x_m)·t]/∂u and Dn = ∂(n_m·x_m')/∂u at fixed ξ (the one-sided kinematics)
   Eigen::VectorXd Gt = Eigen::VectorXd::Zero(L), Dn = Eigen::VectorXd::Zero(L);
   for (int k = 0; k < ms; ++k)
     for (int c = 0; c < 2; ++c) {
@@ -139,30 +146,58 @@ PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
       pg.dofs[j] = offset_m + 2 * foot.modes[k] + c;
       pg.dg(j) = -foot.N(k) * n(c);
       Gt(j) = -foot.N(k) * t(c);
-      Dn(j) = foot.dN(k) * n(c);
+      Dn(j) = foot.dN(k) * n_m(c);
       pg.dt(j) = -foot.N(k) * pg.tangent(c);
     }
-  if (second) {
-    const double a = t.squaredNorm(), kappa = master.curvature(foot), cc = a - pg.g * kappa;
-    const Eigen::VectorXd H = Gt + pg.g * Dn;
+  if (!second && !two_sided) return pg;
+  // The foot slides, δξ = H·δu / cc, and the tangent x_m' turns with it and with the other
+  // body's modes: n_m·δx_m' = W·δu, δn_m = −x_m' (W·δu) / a.
+  const double a = t.squaredNorm(), kappa = master.curvature(foot), cc = a - g_m * kappa;
+  const Eigen::VectorXd H = Gt + g_m * Dn;
+  const Eigen::VectorXd W = Dn + kappa * H / cc;
+  Eigen::MatrixXd dn_du;  // ∂n/∂u (2 × L) of the normal the gap is measured along
+  if (two_sided) {
+    // n̄ = (n_m − n_s)/|n_m − n_s|, n_s the point's own normal at its material point:
+    // δn_s = −x_s' (n_s·δx_s') / a_s, n_s·δx_s' = Ws·δu; δn̄ = (I − n̄n̄ᵀ)(δn_m − δn_s)/|n_m − n_s|.
+    Eigen::VectorXd Ws = Eigen::VectorXd::Zero(L);
+    for (size_t i = 0; i < here.modes.size(); ++i)
+      for (int k = 0; k < ms; ++k)
+        if (cp.modes[k] == here.modes[i])
+          for (int c = 0; c < 2; ++c) Ws(2 * k + c) = here.dN(i) * here.normal(c);
+    const Vec2 xs = here.dx_dt;
+    const Mat2 P = Mat2::Identity() - n * n.transpose();
+    dn_du = (P * xs) * Ws.transpose() / (xs.squaredNorm() * mean_length) -
+            (P * t) * W.transpose() / (a * mean_length);
+    // The constraint's gradient, exact: δg = n̄·(δx_s − δx_m|ξ) − (n̄·x_m') δξ + r·δn̄. The
+    // force stays λ n̄ on both bodies (dg), equal and opposite, so that mirror-image bodies
+    // receive mirror-image forces.
+    pg.dg_row = pg.dg - (n.dot(t) / cc) * H + dn_du.transpose() * r;
+  } else {
+    dn_du = -t * W.transpose() / a;
+  }
+  // ∂v/∂u of a vector field v_i = ±N_k v_c over the dofs (+ on the point's modes, − on the
+  // foot's, whose N_k(ξ) slides with the foot) of a unit vector v that turns as dv_du
+  const auto turning_field = [&](const Vec2& v, const Eigen::MatrixXd& dv_du) {
+    Eigen::MatrixXd D(L, L);
+    for (int k = 0; k < ms; ++k)
+      for (int c = 0; c < 2; ++c) D.row(2 * k + c) = cp.N(k) * dv_du.row(c);
+    for (int k = 0; k < mm; ++k)
+      for (int c = 0; c < 2; ++c)
+        D.row(2 * (ms + k) + c) = -foot.N(k) * dv_du.row(c) - (foot.dN(k) * v(c) / cc) * H.transpose();
+    return D;
+  };
+  if (second && two_sided) {
+    pg.d2g = turning_field(n, dn_du);  // ∂(force direction)/∂u: not symmetric
+  } else if (second) {
+    // ∂²g/∂u² of the one-sided closest-point gap (symmetric)
     const Eigen::MatrixXd M =
         -(Dn * H.transpose() / cc + Gt * Dn.transpose() / a + kappa * Gt * H.transpose() / (a * cc));
     pg.d2g = 0.5 * (M + M.transpose());
-    if (turning && !own) {
-      // The foot slides, δξ = H·δu / cc, and the tangent x_m' turns with it and with the other
-      // body's modes: n·δx_m' = W·δu, δn = −x_m' (W·δu) / a, δτ = Q δn. dt_i = ±N_k(ξ) τ_c
-      // changes with τ and, for the other body's modes, with N_k(ξ).
-      const Eigen::VectorXd W = Dn + kappa * H / cc;
-      const Vec2 Qt = tangent_rotation() * t;
-      pg.dtau = -Qt * W.transpose() / a;
-      pg.ddt.resize(L, L);
-      for (int k = 0; k < ms; ++k)
-        for (int c = 0; c < 2; ++c) pg.ddt.row(2 * k + c) = cp.N(k) * pg.dtau.row(c);
-      for (int k = 0; k < mm; ++k)
-        for (int c = 0; c < 2; ++c)
-          pg.ddt.row(2 * (ms + k) + c) =
-              -foot.N(k) * pg.dtau.row(c) - (foot.dN(k) * pg.tangent(c) / cc) * H.transpose();
-    }
+  }
+  if (second && turning) {
+    // τ = Q n turns with n; dt_i = ±N_k(ξ) τ_c changes with τ and with N_k(ξ)
+    pg.dtau = tangent_rotation() * dn_du;
+    pg.ddt = turning_field(pg.tangent, pg.dtau);
   }
   return pg;
 }

@@ -31,12 +31,16 @@ struct PointGap {
   int foot_edge = -1;          ///< two bodies: its edge of the other boundary, and parameter
   double foot_t = 0;
   std::vector<int> dofs;       ///< global dofs: the point's body's, then the other body's
-  Eigen::VectorXd dg;          ///< ∂g/∂u at dofs
+  /// The direction of the force a pressure puts on the dofs: ∂g/∂u, except with a mean normal
+  /// (two_body_point_gap), where it is n̄ N on both bodies and the gradient is dg_row.
+  Eigen::VectorXd dg;
+  Eigen::VectorXd dg_row;      ///< ∂g/∂u where it differs from dg (mean normal), else empty
   /// τ·∂(x − x_foot)/∂u at dofs, the foot held as a material point of the obstacle: the
   /// tangential relative displacement of the point per unit dof (friction).
   Eigen::VectorXd dt;
-  Eigen::MatrixXd d2g;         ///< ∂²g/∂u² at dofs (empty unless asked for)
-  /// With d2g and `turning` (empty with a mean normal): how the tangent turns and the foot slides with u —
+  /// ∂dg/∂u at dofs (empty unless asked for): ∂²g/∂u², symmetric, except with a mean normal
+  Eigen::MatrixXd d2g;
+  /// With d2g and `turning`: how the tangent turns and the foot slides with u —
   /// ∂τ/∂u (2 × dofs) and ∂dt/∂u (dofs × dofs, row i the derivative of dt_i), the terms of
   /// friction's tangent that a curved obstacle or another body adds to a plane's.
   Eigen::MatrixXd dtau, ddt;
@@ -53,9 +57,11 @@ PointGap rigid_point_gap(const ContactPoint& cp, const Obstacle& obstacle, const
 /// point's ContactPoint::edge counts) the gap is measured along the mean normal
 /// n̄ = (n_m − n_s)/|n_m − n_s| of the two boundaries (n_s the point's own outward normal), not
 /// the other body's alone: the two-sided pairing, which treats both bodies alike, so that
-/// mirror-image bodies press each other along the mirror's normal. Its ∂g/∂u holds n̄ and the
-/// foot's parameter fixed (exact where the bodies touch and n_m = −n_s; otherwise Newton's
-/// tangent is approximate by the angle between the normals), and ∂²g/∂u² is the one-sided one.
+/// mirror-image bodies press each other along the mirror's normal. The pressure's force is
+/// λ n̄ N on both bodies (dg: mirror-image forces on mirror-image bodies, so that a tangential
+/// traction that the mirror says is zero is zero to round-off); the constraint's gradient dg_row,
+/// d2g = ∂dg/∂u and the turning of the tangent τ = friction_tangent(n̄) are exact (n̄ turns with
+/// both boundaries, the foot slides along the other), so that Newton converges quadratically.
 PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
                             const DeformableBoundary& master, int offset_s, int offset_m, bool second,
                             const DeformableBoundary* own = nullptr, bool turning = false);

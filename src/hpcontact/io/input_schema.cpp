@@ -359,16 +359,19 @@ const std::vector<KeySpec>& input_schema() {
               "obstacle (more accurate on coarse meshes: Hertz p = 8 energy error 3.7e-4 against "
               "mortar's 1.2e-3), mortar against another body.",
        .choices = {"auto", "mortar", "collocation"}},
-      {.path = "contact[].normal", .type = T::choice, .default_yaml = "other",
+      {.path = "contact[].normal", .type = T::choice, .default_yaml = "auto",
        .doc = "augmented-lagrangian between two bodies: the direction the gap is measured and "
               "the pressure acts along. other: the other body's outward normal at the closest "
-              "point (one-sided; Newton's tangent exact). mean: the mean of both boundaries' "
-              "normals there, (n_other - n_own)/|n_other - n_own| (two-sided: both bodies "
-              "treated alike, so that two mirror-image bodies press along the mirror's normal "
-              "and equal one body on the mirror plane even where the discrete surfaces cross, "
-              "examples/hertz/bilateral.yaml; its tangent holds the mean normal fixed, so Newton "
-              "takes a few more iterations). Against a rigid obstacle only other applies.",
-       .choices = {"other", "mean"}},
+              "point (one-sided). mean: the mean of both boundaries' normals there, "
+              "(n_other - n_own)/|n_other - n_own| (two-sided: both bodies treated alike, so "
+              "that two mirror-image bodies press along the mirror's normal, equal one body on "
+              "the mirror plane even where the discrete surfaces cross, "
+              "examples/hertz/bilateral.yaml, and hold each other by friction without a "
+              "tangential traction where the mirror says there is none; the tangent is solved "
+              "by LU). auto: mean for a pair with friction between two bodies under the mortar "
+              "rule, other otherwise. "
+              "Against a rigid obstacle only other applies.",
+       .choices = {"auto", "other", "mean"}},
       {.path = "contact[].penalty", .type = T::number, .unit = "force/length³",
        .doc = "penalty: the normal penalty eps_N (seed eq. 3.19; the seed uses 1000·E), "
               "required. augmented-lagrangian: the augmentation of the active-set test and of "

@@ -664,7 +664,8 @@ class SpecBuilder {
       c.constraint = rule == "collocation" ? ConstraintRule::collocation
                      : rule == "mortar"    ? ConstraintRule::mortar
                                            : ConstraintRule::automatic;
-      c.mean_normal = node["normal"].Scalar() == "mean";
+      const std::string normal = node["normal"] ? node["normal"].Scalar() : "auto";
+      c.mean_normal = normal == "mean";
       if (c.mean_normal && c.obstacle.kind != ObstacleKind::body)
         source_.fail(node["normal"], item_path + ".normal",
                      "mean is the mean of two bodies' normals; against a rigid obstacle the "
@@ -697,6 +698,13 @@ class SpecBuilder {
                        "missing key 'penalty' (the tangential penalty eps_T, required by law: " +
                            c.friction.law + " with enforcement: penalty)");
         if (fr["penalty"]) c.friction.penalty = number(fr["penalty"]);
+        // auto: friction between two bodies, exactly enforced, presses along the mean normal,
+        // under which mirror-image bodies hold each other without a tangential traction
+        // (mortar: the two-body default; collocated nodes facing the other body's vertices
+        // would take their foot at a corner, where the mean normal turns by the kink)
+        if (normal == "auto" && c.friction.law != "none" && c.obstacle.kind == ObstacleKind::body &&
+            c.enforcement == Enforcement::augmented_lagrangian && c.constraint != ConstraintRule::collocation)
+          c.mean_normal = true;
       }
       if (const YAML::Node nd = node["normal_direction"]) {
         const auto v = point(nd);

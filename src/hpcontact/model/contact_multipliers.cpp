@@ -236,7 +236,7 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
       s.found[j] = 1;
       s.d_resultant[j] += a * pg.normal;
       s.dG_dfactor(j) -= a * pg.normal.dot(moving);
-      if (gradients) accumulate(s.dG[j], pg.dofs, pg.dg, a);
+      if (gradients) accumulate(s.dG[j], pg.dofs, pg.dg_row.size() > 0 ? pg.dg_row : pg.dg, a);
       if (tangential) {
         lambda_t_q += a * (*friction.lambda_t)(j);
         s.GT(j) += a * slip_q;

@@ -58,11 +58,12 @@ std::string no_force_to_scale(const SolverSpec& ss, const Discretization& d,
 /// terms — −p_N M between two bodies, a curve obstacle's — at a deep trial penetration: not a
 /// missing constraint), and LU outright where the block may be unsymmetric or indefinite: the
 /// seed's difference tangent (a column straddling a point's contact switch), finite strain (a
-/// body unstable under compression on its way to a stable state), friction in slip.
+/// body unstable under compression on its way to a stable state), friction in slip, a pair
+/// pressing along the mean normal.
 solve::LinearSolverKind tangent_solver(const SolverSpec& ss, const Discretization& d,
                                        const ContactSystem& system) {
   const auto kind = solve::linear_solver_kind(ss.linear, ss.where.str() + ".linear");
-  if (ss.tangent == "finite-difference" || d.finite_strain() || system.has_friction())
+  if (ss.tangent == "finite-difference" || d.finite_strain() || system.has_unsymmetric_tangent())
     return solve::LinearSolverKind::lu;
   return kind == solve::LinearSolverKind::cholmod ? solve::LinearSolverKind::cholmod_else_lu : kind;
 }

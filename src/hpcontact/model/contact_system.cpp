@@ -146,6 +146,13 @@ bool ContactSystem::has_friction() const {
   return false;
 }
 
+bool ContactSystem::has_unsymmetric_tangent() const {
+  if (has_friction()) return true;
+  for (const auto& pair : pairs_)
+    if (pair.constraints && pair.constraints->mean_normal) return true;
+  return false;
+}
+
 Eigen::VectorXd ContactSystem::unknowns(const Eigen::VectorXd& u,
                                         const std::vector<Eigen::VectorXd>& multipliers) const {
   Eigen::VectorXd x = Eigen::VectorXd::Zero(size());

@@ -85,6 +85,9 @@ public:
   Eigen::VectorXd load_vector() const;
   const Vec2& displacement_factors() const { return factors_; }
   bool has_friction() const;
+  /// Whether the displacement block of a tangent may be unsymmetric: friction, or a pair
+  /// pressing along the mean normal (its force direction is not the gap's gradient).
+  bool has_unsymmetric_tangent() const;
   /// The unknowns x of all dofs u and the multipliers of each pair (empty for penalty pairs; an
   /// empty list: zero multipliers), α = the current factor under force control.
   Eigen::VectorXd unknowns(const Eigen::VectorXd& u,
