@@ -909,6 +909,21 @@ MUTATIONS = [
              "  (void)replaced;",
              "the earlier summary.json stays while the new files move in: a commit failing half way leaves it beside new results",
              ["OutputFolderAtomicity.AFailedRenameLeavesNoSummaryOfAnUnfinishedRun"]),
+    Mutation("one-sided-normal-by-default", "io", S + "io/problem_reader.cpp",
+             "          c.mean_normal = true;",
+             "          c.mean_normal = false;",
+             "friction between two bodies presses along the other body's normal: mirror images shear each other",
+             ["cli:tests/cli/test_mirror_friction.py::test_no_shear_between_mirror_images"]),
+    Mutation("mean-normal-foot-fixed", "contact", S + "contact/point_gap.cpp",
+             "    pg.dg_row = pg.dg - (n.dot(t) / cc) * H + dn_du.transpose() * r;",
+             "    pg.dg_row = pg.dg + dn_du.transpose() * r;",
+             "the mean normal's constraint gradient forgets that the foot slides along the other boundary",
+             ["TwoBodyContact.MeanNormalGapDerivativesAgreeWithDifferences"]),
+    Mutation("mean-normal-force-along-gradient", "contact", S + "contact/point_gap.cpp",
+             "    pg.d2g = turning_field(n, dn_du);  // ∂(force direction)/∂u: not symmetric",
+             "    pg.d2g = turning_field(n, dn_du).transpose();",
+             "the derivative of the mean normal's force direction transposed (the tangent of another force)",
+             ["TwoBodyContact.MeanNormalGapDerivativesAgreeWithDifferences"]),
 ]
 
 

@@ -226,7 +226,7 @@ def body_lines(name, radius, E, nu, nodes, quads, contact_edges, arcs, cut, sign
             f"radius: {num(radius)}}}}}" for a, b in contact_edges + arcs]
     es = lambda edges: ", ".join(f"[{a}, {b}]" for a, b in edges)  # noqa: E731
     out += ["    edge_sets:", f"      contact: [{es(contact_edges)}]", f"      cut: [{es(cut)}]",
-            "    constraints:", *constraints, "    loads:", *loads]
+            "    constraints:", *constraints, *(["    loads:", *loads] if loads else [])]
     return out
 
 
@@ -253,6 +253,11 @@ def main():
     ap.add_argument("--layers", type=int, default=2, help="layers on each side of a grading point (default %(default)s)")
     ap.add_argument("--degree", type=int, default=4, help="p-version degree (default %(default)s)")
     ap.add_argument("--steps", type=int, default=2, help="load steps of the shearing stage (default %(default)s)")
+    ap.add_argument("--shear-displacement", type=float,
+                    help="shear by moving the cuts instead of a traction: the upper cut by +D/2 in x, the "
+                         "lower by -D/2 (each held in x from the start, so neither an overlap nor a pinned "
+                         "node is needed: --overlap defaults to 0); Q is then what the run carries "
+                         "(summary.json tangential_force)")
     ap.add_argument("--case", default="partial-slip", help="the file's case name (default %(default)s)")
     ap.add_argument("--mesh", choices=["structured", "polar"], default="structured",
                     help="structured: the Coons grid graded along the arc (--grade-at, --factor, "
@@ -280,7 +285,7 @@ def main():
         ap.error(f"--force too large: 2a = {2 * a:.3g} must stay below {0.8 * xc:.3g}")
     delta = args.displacement if args.displacement is not None else approach(R, args.force, args.E, args.nu, a)
     if args.overlap is None:
-        args.overlap = delta / 20
+        args.overlap = delta / 20 if args.shear_displacement is None else 0.0
     Q = args.ratio * args.mu * args.force
     if args.mesh == "polar":
         if not (args.ring_ratio > 1 and args.sectors >= 4 and args.sectors % 2 == 0):
@@ -311,18 +316,28 @@ def main():
            f"description: Partial slip of two equal cylinders R = {num(R)} mm, P = {num(args.force)} N/mm "
            f"then Q = {num(Q)} N/mm, mu = {num(args.mu)}, p = {args.degree}.",
            "", "bodies:"]
+    if args.shear_displacement is None:
+        upper_held = [f"      - {{edges: [cut], uy: {num(-(delta - args.overlap))}}}"]
+        lower_held = ["      - {edges: [cut], uy: 0}", f"      - {{nodes: [{centre}], ux: 0}}"]
+        upper_loads, lower_loads = [shear(1)], [shear(-1)]
+        stages = ["    - {displacements: 1, loads: 0, steps: 1}",
+                  f"    - {{displacements: 1, loads: 1, steps: {args.steps}}}"]
+    else:
+        half = num(args.shear_displacement / 2)
+        upper_held = [f"      - {{edges: [cut], ux: {half}, uy: {num(-(delta - args.overlap))}}}"]
+        lower_held = [f"      - {{edges: [cut], ux: -{half}, uy: 0}}"]
+        upper_loads, lower_loads = [], []
+        stages = ["    - {displacements_x: 0, displacements_y: 1, loads: 0, steps: 1}",
+                  f"    - {{displacements_x: 1, displacements_y: 1, loads: 0, steps: {args.steps}}}"]
     out += body_lines("upper", R, args.E, args.nu, nodes, quads, contact, arcs, cut, +1,
-                      [f"      - {{edges: [cut], uy: {num(-(delta - args.overlap))}}}"], [shear(1)],
-                      -args.overlap)
+                      upper_held, upper_loads, -args.overlap)
     out += body_lines("lower", R, args.E, args.nu, nodes, quads, contact, arcs, cut, -1,
-                      ["      - {edges: [cut], uy: 0}", f"      - {{nodes: [{centre}], ux: 0}}"],
-                      [shear(-1)])
+                      lower_held, lower_loads)
     out += ["", "contact:", "  - body: upper", "    edges: [contact]",
             "    obstacle: {type: body, body: lower, edges: [contact]}",
             f"    friction: {{law: coulomb, mu: {num(args.mu)}}}", "",
             "discretization:", "  method: p", f"  degree: {args.degree}", "  condense: true", "",
-            "solver:", "  stages:", "    - {displacements: 1, loads: 0, steps: 1}",
-            f"    - {{displacements: 1, loads: 1, steps: {args.steps}}}"]
+            "solver:", "  stages:", *stages]
     if args.hp_tolerance is not None or args.hp_steps is not None:
         out += ["", "adapt:", "  method: hp"]
     if args.hp_tolerance is not None:
