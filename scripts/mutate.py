@@ -924,6 +924,11 @@ MUTATIONS = [
              "    pg.d2g = turning_field(n, dn_du).transpose();",
              "the derivative of the mean normal's force direction transposed (the tangent of another force)",
              ["TwoBodyContact.MeanNormalGapDerivativesAgreeWithDifferences"]),
+    Mutation("interference-unramped", "model", S + "model/contact_multipliers.cpp",
+             "      pg.g += relief.remaining * overlap_q;",
+             "      pg.g += overlap_q;",
+             "a ramped interference relieved from the start, whatever the factor: its first step carries the whole fit",
+             ["cli:tests/cli/test_press_fit.py::test_a_ramped_interference_presses_step_by_step_to_the_same_fit"]),
 ]
 
 

@@ -8,7 +8,7 @@ import os
 
 import pytest
 
-from conftest import csv_rows
+from conftest import csv_rows, expect_refused
 
 CASE = os.path.join("examples", "lame", "press-fit-short-hub.yaml")
 HUB_CARRIES = "contact[0]={body: hub, edges: [bore], obstacle: {type: body, body: shaft, edges: [outer]}}"
@@ -111,3 +111,35 @@ def test_cuts_that_repeat_the_residuals_stop_at_once(hpcontact, root, tmp_path):
                   "-q", "--set", "solver.max_iterations=1")
     assert r.returncode != 0
     assert "failed after 5 cuts" in r.stderr and "repeated the same residuals" not in r.stderr, r.stderr
+
+
+def test_a_ramped_interference_presses_step_by_step_to_the_same_fit(runs, hpcontact, root, tmp_path):
+    """contact[].interference: ramp relieves the input's overlap with the displacement factor:
+    the hub carrying, in four load steps, none cut, at most 8 Newton iterations each (4–6
+    measured); the ring force grows with the factor (each step's resultant f times the last's
+    to 1e-3: 1.6e-4 measured, the contact's geometry changes a little on the way) and ends at the
+    fit the unramped run finds at once: normal force, peak pressure and strain energy to 1e-8."""
+    out = tmp_path / "ramp"
+    ramped = HUB_CARRIES[:-1] + ", interference: ramp}"
+    r = hpcontact("run", os.path.join(root, CASE), "--out", out, "-q", "--set", ramped,
+                  "--set", "solver.load_steps=4")
+    assert r.returncode == 0, r.stderr
+    steps = csv_rows(out / "path.csv")
+    assert [float(s["displacement_factor"]) for s in steps] == [0.25, 0.5, 0.75, 1.0]
+    assert all(int(s["iterations"]) <= 8 for s in steps)
+    last = float(steps[-1]["resultant_x"])
+    for s in steps:
+        assert float(s["resultant_x"]) == pytest.approx(float(s["displacement_factor"]) * last, rel=1e-3)
+    summary = json.loads((out / "summary.json").read_text())
+    at_once, _ = runs["hub"]
+    for key in ("normal_force", "pressure_max"):
+        assert summary["contact_pairs"][0][key] == pytest.approx(at_once["contact_pairs"][0][key], rel=1e-8), key
+    assert summary["strain_energy"] == pytest.approx(at_once["strain_energy"], rel=1e-8)
+
+
+def test_a_ramp_is_refused_where_it_means_nothing(hpcontact, root, tmp_path):
+    """The penalty takes an overlap as a penetration from the start: interference: ramp with
+    enforcement: penalty is refused naming the key, before any solve."""
+    expect_refused(hpcontact, os.path.join(root, CASE), tmp_path / "out",
+                   ["contact[0].enforcement=penalty", "contact[0].penalty=2.1e8", "contact[0].interference=ramp"],
+                   "contact[0].interference", 2)

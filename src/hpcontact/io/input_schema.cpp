@@ -372,6 +372,16 @@ const std::vector<KeySpec>& input_schema() {
               "rule, other otherwise. "
               "Against a rigid obstacle only other applies.",
        .choices = {"auto", "other", "mean"}},
+      {.path = "contact[].interference", .type = T::choice, .default_yaml = "initial",
+       .doc = "augmented-lagrangian: what an overlap of the bodies in the input (an interference "
+              "fit: a shaft meshed larger than its bore) does. initial: it is there from the "
+              "first load step on. ramp: it is relieved in proportion to the factor on the "
+              "prescribed displacements (displacements_y where displacements_x and _y differ), "
+              "closed at factor 1 — the bodies are pressed together step by step, as a shrink fit "
+              "cools, e.g. with friction, whose path matters, or an interference too large for "
+              "one step; each multiplier node's weighted overlap at the undeformed state is "
+              "added to its gap times (1 - factor). The answer at factor 1 is initial's.",
+       .choices = {"initial", "ramp"}},
       {.path = "contact[].penalty", .type = T::number, .unit = "force/length³",
        .doc = "penalty: the normal penalty eps_N (seed eq. 3.19; the seed uses 1000·E), "
               "required. augmented-lagrangian: the augmentation of the active-set test and of "

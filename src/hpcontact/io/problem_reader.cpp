@@ -674,6 +674,11 @@ class SpecBuilder {
         source_.fail(node["normal"], item_path + ".normal",
                      "mean applies to augmented-lagrangian (exact) enforcement; the penalty "
                      "measures its gaps along the other body's normal");
+      c.ramp_interference = node["interference"].Scalar() == "ramp";
+      if (c.ramp_interference && c.enforcement == Enforcement::penalty)
+        source_.fail(node["interference"], item_path + ".interference",
+                     "ramp applies to augmented-lagrangian (exact) enforcement; the penalty "
+                     "takes an overlap of the input as a penetration from the start");
       if (node["penalty"]) c.penalty = number(node["penalty"]);
       else if (c.enforcement == Enforcement::penalty)
         source_.fail(node, item_path, "missing key 'penalty' (required by enforcement: penalty)");

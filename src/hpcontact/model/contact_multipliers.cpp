@@ -68,6 +68,7 @@ std::shared_ptr<const PairConstraints> make_pair_constraints(const ContactPairSp
   c->segmented = two_bodies && c->rule == ConstraintRule::mortar;
   c->segment_quadrature = spec.quadrature;
   c->mean_normal = two_bodies && spec.mean_normal;
+  c->ramp_interference = spec.ramp_interference;
   for (const auto& ce : chain) c->edges.push_back(ce.edge);
   c->nodes = contact::multiplier_nodes(body.mesh, body.dofs, body.maps, chain, body.out_of_plane());
   const int n = c->nodes.size();
@@ -151,7 +152,8 @@ void merge(std::vector<std::pair<int, double>>& g) {
 ConstraintState evaluate_constraints(const Discretization& d, const ContactPair& pair,
                                      const Eigen::VectorXd& u, const Eigen::VectorXd& lambda,
                                      Eigen::VectorXd* R, std::vector<Eigen::Triplet<double>>* t,
-                                     bool gradients, const FrictionInputs& friction) {
+                                     bool gradients, const FrictionInputs& friction,
+                                     const InterferenceRelief& relief) {
   const PairConstraints& c = *pair.constraints;
   const Body& body = d.bodies[pair.body];
   const int n = c.size();
@@ -211,6 +213,18 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
       if (pg.found && !pg.beyond_end) covered[j] += std::abs(a);
     }
     if (!pg.found) continue;
+    // the overlap still to be relieved here, o(s) = Σ_j L_j(s) o_j (a_qj = w_q L_j(s_q))
+    double overlap_q = 0;
+    if (relief.overlap) {
+      double weight = 0;
+      for (const auto& [j, a] : coefficients[q]) {
+        overlap_q += a * (*relief.overlap)(j);
+        weight += a;
+      }
+      overlap_q = weight != 0 ? overlap_q / weight : 0.0;
+      pg.g += relief.remaining * overlap_q;
+      ps.gap = pg.g;
+    }
     // the multiplier at the point, times its weight: λ_q = Σ_j a_qj λ_j [force]
     double lambda_q = 0, w_q = 0, lambda_t_q = 0;
     // tangential slip since the last converged step: τ·Δ(x − x_foot), the foot a material point
@@ -235,7 +249,7 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
       s.G(j) += a * pg.g;
       s.found[j] = 1;
       s.d_resultant[j] += a * pg.normal;
-      s.dG_dfactor(j) -= a * pg.normal.dot(moving);
+      s.dG_dfactor(j) -= a * (pg.normal.dot(moving) + overlap_q);
       if (gradients) accumulate(s.dG[j], pg.dofs, pg.dg_row.size() > 0 ? pg.dg_row : pg.dg, a);
       if (tangential) {
         lambda_t_q += a * (*friction.lambda_t)(j);
@@ -289,6 +303,27 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
   }
   if (c.segmented) s.segment_points = std::move(seg_points);
   return s;
+}
+
+Eigen::VectorXd initial_overlaps(const Discretization& d, const ContactPair& pair) {
+  const PairConstraints& c = *pair.constraints;
+  const Body& body = d.bodies[pair.body];
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(body.dofs.n_dofs());
+  if (pair.other >= 0) {
+    pair.other_boundary->set_displacement(Eigen::VectorXd::Zero(d.bodies[pair.other].dofs.n_dofs()));
+    pair.boundary->set_displacement(zero);
+  }
+  Eigen::VectorXd overlap = Eigen::VectorXd::Zero(c.size());
+  for (int j = 0; j < c.size(); ++j) {
+    const auto& cp = c.node_points[j];
+    const contact::PointGap pg =
+        pair.other < 0 ? contact::rigid_point_gap(cp, *pair.obstacle, zero, body.dof_offset, false)
+                       : contact::two_body_point_gap(cp, zero, *pair.other_boundary, body.dof_offset,
+                                                     d.bodies[pair.other].dof_offset, false,
+                                                     c.mean_normal ? pair.boundary.get() : nullptr);
+    if (pg.found && !pg.beyond_end) overlap(j) = std::max(0.0, -pg.g);
+  }
+  return overlap;
 }
 
 bool has_foot(const contact::ContactPoint& cp, const Eigen::VectorXd& u,

@@ -54,6 +54,8 @@ struct PairConstraints {
   bool segmented = false;
   /// Two bodies: the gap along the mean normal of both boundaries (two_body_point_gap's `own`).
   bool mean_normal = false;
+  /// The overlap of the input is ramped in with the displacement factor (ContactSystem).
+  bool ramp_interference = false;
   int segment_quadrature = 0;
   std::vector<int> edges;  ///< the mesh edge of each edge of the nodes (chain order)
   /// Friction at the nodes: a tangential multiplier λ_T,j (the traction along τ the other side
@@ -110,16 +112,31 @@ struct FrictionInputs {
   Vec2 obstacle_increment = Vec2::Zero();
 };
 
+/// An overlap of the input relieved step by step (contact[].interference: ramp): the gap of a
+/// point is g + remaining · o(s), o the overlap at the undeformed state interpolated from the
+/// multiplier nodes' (the nodes' own Lagrange polynomials, as the pressure), `remaining` = 1 − the
+/// displacement factor.
+struct InterferenceRelief {
+  const Eigen::VectorXd* overlap = nullptr;  ///< per node, max(0, −g) at the undeformed state
+  double remaining = 0;
+};
+
+/// The overlaps of `pair`'s multiplier nodes at the undeformed state: max(0, −g) of each node's
+/// point where it has a foot on the other side, 0 where it has none.
+Eigen::VectorXd initial_overlaps(const Discretization& d, const ContactPair& pair);
+
 /// Evaluates the constraints of `pair` at u and lambda; subtracts the contact forces from R (all
 /// dofs, the residual K u − f − f_c) when R is not null, adds the curvature part of their
 /// tangent, −Σ_q λ_q ∇²g_N(x_q), to t when t is not null, and fills the gradients dG when
 /// `gradients`. With friction (the pair's law and friction.lambda_t given) also the tangential
 /// slips, their gradients and forces; with t the tangent of the tangential force, Σ_q λ_T,q ∂dt_q/∂u,
-/// and the slips' gradients include how τ turns and the foot slides (not with normal: mean).
+/// and the slips' gradients include how τ turns and the foot slides. With `relief` the gaps are
+/// those of the ramped interference, and dG_dfactor takes −o(s).
 ConstraintState evaluate_constraints(const Discretization& d, const ContactPair& pair,
                                      const Eigen::VectorXd& u, const Eigen::VectorXd& lambda,
                                      Eigen::VectorXd* R, std::vector<Eigen::Triplet<double>>* t,
-                                     bool gradients, const FrictionInputs& friction = {});
+                                     bool gradients, const FrictionInputs& friction = {},
+                                     const InterferenceRelief& relief = {});
 
 /// The multipliers of the passive nodes from their edges' others: dλ_h/dt = 0 at the node (the
 /// pressure of a solid of revolution is even in r at its axis).

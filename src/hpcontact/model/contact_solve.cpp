@@ -289,7 +289,8 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
         if (unchanged)
           os << "; halving the step repeated the same residuals: what does not converge does not "
                 "change with the load step — bodies overlapping in the input (an interference, "
-                "which no load scales) or a state the step starts from; more cuts cannot help";
+                "which no load scales: contact[].interference: ramp relieves it step by step) or "
+                "a state the step starts from; more cuts cannot help";
         if (cuts == ss.max_cuts && cuts > 0 && lambda != from)
           os << "; the load cannot be carried beyond the last converged step (" << converged.describe()
              << "): a step from it of 1/" << (1LL << cuts) << " of a load step (solver.max_cuts = "

@@ -31,6 +31,10 @@ ContactSystem::ContactSystem(const Discretization& d, const std::vector<ContactP
     if (pair.constraints) n_z_ += pair.constraints->size() * (pair.constraints->has_friction() ? 2 : 1);
   }
   gamma_ = Eigen::VectorXd::Zero(n_z_);
+  initial_overlap_.resize(pairs_.size());
+  for (size_t k = 0; k < pairs_.size(); ++k)
+    if (const auto& c = pairs_[k].constraints; c && c->ramp_interference)
+      initial_overlap_[k] = initial_overlaps(d_, pairs_[k]);
   // The augmentation keeps the displacement block definite where only the contact holds a body
   // or the finite-strain tangent is indefinite. Bodies held by their constraints at small strain
   // need none: the Newton step is the same, and the block is K at every iteration (one
@@ -144,6 +148,12 @@ bool ContactSystem::has_friction() const {
   for (const auto& pair : pairs_)
     if (pair.memory || (pair.constraints && pair.constraints->has_friction())) return true;
   return false;
+}
+
+InterferenceRelief ContactSystem::relief(size_t k, double f) const {
+  // g + (1 − f) o: at f = 0 the overlapping bodies just touch, at f = 1 the input's overlap holds
+  if (initial_overlap_[k].size() == 0 || f >= 1) return {};
+  return {&initial_overlap_[k], 1 - f};
 }
 
 bool ContactSystem::has_unsymmetric_tangent() const {
@@ -344,7 +354,8 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
                                                 : Eigen::VectorXd();
     const FrictionInputs fi = tangential ? friction_inputs(pair, lambda_t, u_committed_, factors_committed_, factors)
                                          : FrictionInputs{};
-    const ConstraintState s = evaluate_constraints(d_, pair, u, lambda, &R, t, T != nullptr, fi);
+    const ConstraintState s =
+        evaluate_constraints(d_, pair, u, lambda, &R, t, T != nullptr, fi, relief(k, factors.y()));
     deepest_.resize(pairs_.size());
     deepest_[k] = {};
     for (const auto& q : s.points)

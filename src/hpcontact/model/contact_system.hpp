@@ -189,6 +189,11 @@ private:
     Vec2 x = Vec2::Zero();
   };
   mutable std::vector<Deepest> deepest_;
+  /// Per exact pair with a ramped interference, its multiplier nodes' initial_overlaps (empty
+  /// otherwise).
+  std::vector<Eigen::VectorXd> initial_overlap_;
+  /// What pair k's gaps still take of its initial overlap at the displacement factor f.
+  InterferenceRelief relief(size_t k, double f) const;
   std::vector<char> tangent_states_, previous_tangent_states_;
   /// Per pair with exact friction: (Σ W_j λ_j, Σ W_j λ_T,j) at x, the normal and tangential
   /// resultants of its multipliers (zero for the other pairs).

@@ -235,6 +235,10 @@ struct ContactPairSpec {
   /// Between two bodies, exact enforcement: the gap along the mean of both boundaries' normals
   /// (two-sided) instead of the other body's normal (one-sided).
   bool mean_normal = false;
+  /// Exact enforcement: an overlap of the bodies in the input (an interference fit) is relieved
+  /// in proportion to the factor on the prescribed displacements, closed at factor 1, instead of
+  /// being there from the start (contact[].interference: ramp).
+  bool ramp_interference = false;
   /// eps_N [force/length³]: the penalty; with augmented_lagrangian the augmentation (0: the
   /// default E p² / h at each node), a parameter of convergence speed, not of the answer.
   double penalty = 0;
