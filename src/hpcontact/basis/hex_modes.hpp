@@ -5,7 +5,7 @@
 //              V7 -----E6----> V6           zeta
 //             /|              /|             ^   eta
 //           E7 |            E5 |             |  /
-//           /  E11          /  E10           | /
+//           /  E10          /  E11           | /
 //         V4 -----E4----> V5   |             |/
 //          |   |           |   |             +------> xi
 //          |   V3 -----E2--|-> V2
@@ -18,8 +18,9 @@
 //   the edge is that coordinate), as in the quad (quad_modes.hpp):
 //     along xi:   E0 V0->V1, E2 V3->V2, E4 V4->V5, E6 V7->V6
 //     along eta:  E1 V1->V2, E3 V0->V3, E5 V5->V6, E7 V4->V7
-//     along zeta: E8 V0->V4, E9 V1->V5, E10 V2->V6, E11 V3->V7
-//   (E0..E3 are the quad's E1..E4 on the bottom face, E4..E7 the same on the top.)
+//     along zeta: E8 V0->V4, E9 V1->V5, E10 V3->V7, E11 V2->V6
+//   (VTK's edge order. E0..E3 are the quad's E1..E4 on the bottom face, E4..E7 the same on the
+//   top.)
 //
 //   Faces (VTK and deal.II order) with their local axes (s, t): s is the lower of the two free
 //   reference coordinates, t the higher, both along the positive axis; the origin (s, t) =
@@ -55,7 +56,7 @@ inline constexpr int kHexVertexCoordinates[8][3] = {{-1, -1, -1}, {1, -1, -1}, {
 /// Local edge e runs from local vertex kHexEdgeVertices[e][0] to [e][1], along reference axis
 /// kHexEdgeAxis[e] (0: xi, 1: eta, 2: zeta), in its positive direction.
 inline constexpr int kHexEdgeVertices[12][2] = {{0, 1}, {1, 2}, {3, 2}, {0, 3}, {4, 5}, {5, 6},
-                                                {7, 6}, {4, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+                                                {7, 6}, {4, 7}, {0, 4}, {1, 5}, {3, 7}, {2, 6}};
 inline constexpr int kHexEdgeAxis[12] = {0, 1, 0, 1, 0, 1, 0, 1, 2, 2, 2, 2};
 
 /// Local face f: its vertices at (s, t) = (-1,-1), (1,-1), (1,1), (-1,1); the reference axes of

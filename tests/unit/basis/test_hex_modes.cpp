@@ -166,7 +166,8 @@ int trunk_dimension(int p) {
 
 // The tables shall agree with the header's drawing: each edge joins two vertices differing only
 // along its axis, from -1 to +1; each face's four vertices lie on it, the second one step along s
-// from the origin, the fourth one step along t, the third opposite.
+// from the origin, the fourth one step along t, the third opposite; s x t is outward on F1, F2,
+// F5 only.
 TEST(HierarchicHex, ReferenceTablesAreConsistent) {
   const auto& X = hb::kHexVertexCoordinates;
   for (int e = 0; e < 12; ++e) {
@@ -186,6 +187,10 @@ TEST(HierarchicHex, ReferenceTablesAreConsistent) {
     EXPECT_LT(s, t);
     EXPECT_TRUE(n != s && n != t);
     const std::array<std::array<int, 2>, 4> st{{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}};
+    // s x t along the normal axis: + where the header says outward (F1, F2, F5).
+    const int cross = (n == 1 ? -1 : 1);  // e_xi x e_zeta = -e_eta, the others +
+    const int outward = f % 2 == 0 ? -1 : 1;
+    EXPECT_EQ(cross * outward > 0, f == 1 || f == 2 || f == 5) << "face " << f;
     for (int k = 0; k < 4; ++k) {
       EXPECT_EQ(X[v[k]][n], f % 2 == 0 ? -1 : 1) << "face " << f;
       EXPECT_EQ(X[v[k]][s], st[k][0]) << "face " << f << " vertex " << k;
@@ -333,7 +338,7 @@ TEST(HierarchicHex, ModeOrderAndFactors) {
                           {1, 1, 1}, {0, 1, 1},  // V
                           {2, 0, 0}, {1, 2, 0}, {2, 1, 0}, {0, 2, 0}, {2, 0, 1}, {1, 2, 1},
                           {2, 1, 1}, {0, 2, 1},                        // E0-7
-                          {0, 0, 2}, {1, 0, 2}, {1, 1, 2}, {0, 1, 2},  // E8-11
+                          {0, 0, 2}, {1, 0, 2}, {0, 1, 2}, {1, 1, 2},  // E8-11
                           {0, 2, 2}, {1, 2, 2}, {2, 0, 2}, {2, 1, 2}, {2, 2, 0}, {2, 2, 1},  // F0-5
                           {2, 2, 2}};
   EXPECT_EQ(isotropic(2, hb::Space::tensor_product).mode_indices(), p2);
