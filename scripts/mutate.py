@@ -929,6 +929,12 @@ MUTATIONS = [
              "      pg.g += overlap_q;",
              "a ramped interference relieved from the start, whatever the factor: its first step carries the whole fit",
              ["cli:tests/cli/test_press_fit.py::test_a_ramped_interference_presses_step_by_step_to_the_same_fit"]),
+    Mutation("touching-node-starts-inactive", "model", S + "model/contact_solve.cpp",
+             "    system.activate_touching(x);",
+             "    (void)0;",
+             "a body touching its partner at one point starts with no active node: held by friction alone, its tangent is singular",
+             ["cli:tests/cli/test_roller_block_friction.py::test_pressed_and_sheared_from_a_one_point_touch",
+              "cli:tests/cli/test_mirror_friction.py::test_touching_at_one_point_friction_holds_the_body_from_the_start"]),
 ]
 
 

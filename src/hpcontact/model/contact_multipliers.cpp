@@ -2,6 +2,8 @@
 // and their evaluation at a state — weighted gaps, gradients, forces and curvature terms.
 #include "hpcontact/model/contact_multipliers.hpp"
 
+#include <limits>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -305,7 +307,7 @@ ConstraintState evaluate_constraints(const Discretization& d, const ContactPair&
   return s;
 }
 
-Eigen::VectorXd initial_overlaps(const Discretization& d, const ContactPair& pair) {
+Eigen::VectorXd undeformed_node_gaps(const Discretization& d, const ContactPair& pair) {
   const PairConstraints& c = *pair.constraints;
   const Body& body = d.bodies[pair.body];
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(body.dofs.n_dofs());
@@ -313,7 +315,7 @@ Eigen::VectorXd initial_overlaps(const Discretization& d, const ContactPair& pai
     pair.other_boundary->set_displacement(Eigen::VectorXd::Zero(d.bodies[pair.other].dofs.n_dofs()));
     pair.boundary->set_displacement(zero);
   }
-  Eigen::VectorXd overlap = Eigen::VectorXd::Zero(c.size());
+  Eigen::VectorXd gaps = Eigen::VectorXd::Constant(c.size(), std::numeric_limits<double>::infinity());
   for (int j = 0; j < c.size(); ++j) {
     const auto& cp = c.node_points[j];
     const contact::PointGap pg =
@@ -321,9 +323,13 @@ Eigen::VectorXd initial_overlaps(const Discretization& d, const ContactPair& pai
                        : contact::two_body_point_gap(cp, zero, *pair.other_boundary, body.dof_offset,
                                                      d.bodies[pair.other].dof_offset, false,
                                                      c.mean_normal ? pair.boundary.get() : nullptr);
-    if (pg.found && !pg.beyond_end) overlap(j) = std::max(0.0, -pg.g);
+    if (pg.found && !pg.beyond_end) gaps(j) = pg.g;
   }
-  return overlap;
+  return gaps;
+}
+
+Eigen::VectorXd initial_overlaps(const Discretization& d, const ContactPair& pair) {
+  return (-undeformed_node_gaps(d, pair)).cwiseMax(0.0);
 }
 
 bool has_foot(const contact::ContactPoint& cp, const Eigen::VectorXd& u,

@@ -121,8 +121,10 @@ struct InterferenceRelief {
   double remaining = 0;
 };
 
-/// The overlaps of `pair`'s multiplier nodes at the undeformed state: max(0, −g) of each node's
-/// point where it has a foot on the other side, 0 where it has none.
+/// The gap of each of `pair`'s multiplier nodes' own point at the undeformed state (+∞ where it
+/// has no foot on the other side).
+Eigen::VectorXd undeformed_node_gaps(const Discretization& d, const ContactPair& pair);
+/// Their overlaps: max(0, −g), 0 where a node has no foot.
 Eigen::VectorXd initial_overlaps(const Discretization& d, const ContactPair& pair);
 
 /// Evaluates the constraints of `pair` at u and lambda; subtracts the contact forces from R (all

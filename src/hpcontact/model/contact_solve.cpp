@@ -344,6 +344,8 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   if (warm) {
     system.set_factors(first, first);
     x = system.unknowns(start.u, start.multipliers);
+  } else {
+    system.activate_touching(x);
   }
   bool secant = ss.target_resultant.has_value();  // force control by the secant on full solves
   if (ss.control == "arc-length") {

@@ -150,6 +150,24 @@ bool ContactSystem::has_friction() const {
   return false;
 }
 
+void ContactSystem::activate_touching(Eigen::VectorXd& x) const {
+  const Eigen::VectorXd u = full(x);
+  for (size_t k = 0; k < pairs_.size(); ++k) {
+    const ContactPair& pair = pairs_[k];
+    if (!pair.constraints) continue;
+    const PairConstraints& c = *pair.constraints;
+    const double touching = 1e-9 * d_.bodies[pair.body].mesh.size();
+    const Eigen::VectorXd g = undeformed_node_gaps(d_, pair);
+    const int o = n_u_ + z_offset_[k];
+    const ConstraintState s = evaluate_constraints(d_, pair, u, x.segment(o, c.size()), nullptr, nullptr,
+                                                   false, {}, relief(k, displacement_factors(x).y()));
+    for (int j = 0; j < c.size(); ++j)
+      if (s.found[j] && c.weight(j) > 0 &&
+          (std::abs(g(j)) <= touching || (initial_overlap_[k].size() > 0 && initial_overlap_[k](j) > 0)))
+        x(o + j) = std::max(x(o + j), (1 + 1e-9) * c.scale(j) * std::max(0.0, s.G(j)) / c.weight(j));
+  }
+}
+
 InterferenceRelief ContactSystem::relief(size_t k, double f) const {
   // g + (1 − f) o: at f = 0 the overlapping bodies just touch, at f = 1 the input's overlap holds
   if (initial_overlap_[k].size() == 0 || f >= 1) return {};

@@ -52,6 +52,14 @@ public:
   /// the active nodes of exactly enforced pairs).
   int points_in_contact() const { return points_in_contact_; }
 
+  /// Before the first load step from the undeformed state (x there): the multiplier nodes that
+  /// touch the other side at their own point (|g| <= 1e-9 of the body's size) — a curved body
+  /// touching at one point, whose weighted gap the rising surface around the node makes
+  /// positive — or whose ramped overlap (contact[].interference: ramp) makes them touch, start
+  /// active: their multiplier the least that passes the active-set test. Otherwise no node
+  /// would be active in the first Newton iteration and a body that only the contact (and its
+  /// friction) holds would be free.
+  void activate_touching(Eigen::VectorXd& x) const;
   /// The factors on the prescribed displacements (and obstacle displacements) and on the loads.
   void set_factors(double displacements, double loads) { set_factors(Vec2(displacements, displacements), loads); }
   /// Separate factors on the x and the y components of the prescribed displacements.

@@ -1,0 +1,52 @@
+"""A steel roller (R = 15) on an aluminium block with Coulomb friction (mu = 0.1), coarse Gmsh
+meshes, the roller touching the block at one point in the input (no overlap) and held in x by
+nothing but friction: pressed by force control to P = 1000 N/mm, then sheared by Q = 50 N/mm
+(tests/cli/data/roller-block-friction/, p = 8).
+
+Before, the first Newton iteration found no multiplier node active — the mortar-weighted gap of
+the node touching at (0, 0) is positive where the arc rises from it (2.9e-4 mm) — and the
+tangent was singular ("held only by contact against translation in x"). A node touching at its
+own point now starts active (ContactSystem::activate_touching)."""
+import json
+import math
+import os
+
+import pytest
+
+CASE = os.path.join("tests", "cli", "data", "roller-block-friction", "roller-block-friction.yaml")
+E_STAR = 1 / ((1 - 0.3 ** 2) / 210000 + (1 - 0.33 ** 2) / 70000)
+B_HERTZ = math.sqrt(4 * 1000 * 15 / (math.pi * E_STAR))  # two-body Hertz, R* = 15: 0.5709
+
+
+def run(hpcontact, root, out, *settings):
+    args = ["run", os.path.join(root, CASE), "--out", out, "-q"]
+    for s in settings:
+        args += ["--set", s]
+    r = hpcontact(*args)
+    assert r.returncode == 0, r.stderr
+    return json.loads((out / "summary.json").read_text())
+
+
+def test_pressed_and_sheared_from_a_one_point_touch(hpcontact, root, tmp_path):
+    """Both stages converge (11 Newton iterations measured; at most 20), the contact carries
+    P = 1000 and Q = 50 to 1e-8, and the shear moves the zone sideways (its ends no longer
+    symmetric: 7e-3 b measured, at least 1e-3 b)."""
+    s = run(hpcontact, root, tmp_path / "sheared")
+    pair = s["contact_pairs"][0]
+    assert s["newton_iterations_total"] <= 20
+    assert pair["normal_force"] == pytest.approx(1000, rel=1e-8)
+    assert abs(pair["tangential_force"]) == pytest.approx(50, rel=1e-8)
+    zone = pair["zone"]
+    assert abs(zone["from"] + zone["to"]) > 1e-3 * B_HERTZ
+
+
+def test_pressed_zone_is_symmetric(hpcontact, root, tmp_path):
+    """The pressing stage alone: the zone's ends symmetric to 1e-6 of b (1.3e-9 measured). On
+    this coarse mesh the zone lies inside one element and its half width is 6.3 % below two-body
+    Hertz's b at p = 8 (−2.0 % at p = 6, +13 % at p = 10): within 10 % here; the issue's 1 % needs
+    hp, which does not yet converge on this model (its first refinement's force-controlled step
+    stalls)."""
+    s = run(hpcontact, root, tmp_path / "pressed", "solver.stages=[{displacements: 1, loads: 0}]")
+    zone = s["contact_pairs"][0]["zone"]
+    assert abs(zone["from"] + zone["to"]) <= 1e-6 * B_HERTZ
+    assert zone["to"] == pytest.approx(B_HERTZ, rel=0.10)
