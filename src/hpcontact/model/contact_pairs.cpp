@@ -109,16 +109,43 @@ contact::SurfaceFramePtr common_tangent(const ContactPair& pair) {
   return contact::line_frame(pair.reference_point, pair.tangent);
 }
 
+/// The body's undeformed point nearest the rigid circle (outside it): the nearest of its contact
+/// points and edge ends, then the foot of the centre on its contact edges where that is nearer
+/// (inside an edge). Where the surfaces first touch: the common tangent of the linear theory is
+/// the circle's tangent there (a block under a roller; a half model or an axisymmetric body
+/// touching on its mirror line or axis, where the contact edges end).
+Vec2 nearest_to_circle(const Body& body, const ContactPair& pair, const std::vector<contact::ChainEdge>& chain,
+                       const Vec2& centre) {
+  std::vector<Vec2> candidates;
+  for (const auto& cp : pair.points) candidates.push_back(cp.X);
+  for (const auto& ce : chain) {
+    candidates.push_back(body.mesh.node(ce.start));
+    candidates.push_back(body.mesh.node(ce.end));
+  }
+  Vec2 nearest = candidates.front();
+  for (const auto& X : candidates)
+    if ((X - centre).norm() < (nearest - centre).norm()) nearest = X;
+  auto boundary = std::make_shared<contact::DeformableBoundary>(body.mesh, body.dofs, body.maps, pair.edges);
+  boundary->set_displacement(Eigen::VectorXd::Zero(body.dofs.n_dofs()));
+  if (contact::BoundaryPoint foot; boundary->project(centre, foot) &&
+                                   (foot.x - centre).norm() < (nearest - centre).norm())
+    nearest = foot.x;
+  return nearest;
+}
+
 /// The frame against a rigid circle: the circle where the body's contact edges are an arc
 /// conforming with it (a pin in a rigid hole), angles from the middle of its contact edges;
-/// otherwise the circle's tangent at the foot of that middle (a block under a roller).
-contact::SurfaceFramePtr circle_frame(const Body& body, const ContactPair& pair, const Vec2& centre,
+/// otherwise the circle's tangent at the foot of the body's point nearest it (outside the
+/// circle: nearest_to_circle) or of the middle of its contact edges (inside).
+contact::SurfaceFramePtr circle_frame(const Body& body, const ContactPair& pair,
+                                      const std::vector<contact::ChainEdge>& chain, const Vec2& centre,
                                       double radius, bool inside) {
   const Vec2 middle = pair.points[pair.points.size() / 2].X;
   const auto own = undeformed_surface(body, pair.edges, middle)->circle();
   if (own && contact::conforming(*own, {centre, radius}))
     return contact::arc_frame(centre, radius, middle, inside);
-  const Vec2 radial = (middle - centre).normalized();
+  const Vec2 towards = inside ? middle : nearest_to_circle(body, pair, chain, centre);
+  const Vec2 radial = (towards - centre).normalized();
   const Vec2 foot = centre + radius * radial, n = inside ? Vec2(-radial) : radial;
   Vec2 t(n.y(), -n.x());
   if (t.x() < -1e-12 || (std::abs(t.x()) <= 1e-12 && t.y() < 0)) t = -t;
@@ -190,7 +217,12 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       pair.obstacle = std::make_shared<contact::RigidCircle>(Vec2(o.center[0], o.center[1]),
                                                              o.radius, o.inside);
       pair.reference_point = Vec2(o.center[0], o.center[1]);
-      pair.frame = circle_frame(body, pair, Vec2(o.center[0], o.center[1]), o.radius, o.inside);
+      pair.frame = circle_frame(body, pair, chain, Vec2(o.center[0], o.center[1]), o.radius, o.inside);
+      // The normal force along the frame's normal where it is a line (the circle's normal where
+      // the surfaces first touch), as against a plane: not the resultant's direction, which an
+      // axisymmetric body's meridian tractions tilt (their x-components do not cancel in the
+      // section, only round the circle).
+      if (pair.frame->straight()) pair.force_direction = pair.frame->normal(pair.reference_point);
     } else {
       const Body& other = body_named(d, o.body, cs.where, &pair.other);
       HPC_REQUIRE(pair.other != pair.body, InputError, cs.where.str(),
