@@ -7,9 +7,9 @@
 namespace hpcontact::fem {
 
 CondensedElement condense(const Eigen::MatrixXd& K, const Eigen::VectorXd& f, int n_modes,
-                          int n_internal) {
+                          int n_internal, int n_components) {
   CondensedElement c;
-  for (int comp = 0; comp < 2; ++comp)
+  for (int comp = 0; comp < n_components; ++comp)
     for (int a = 0; a < n_modes; ++a)
       (a < n_modes - n_internal ? c.external : c.internal).push_back(comp * n_modes + a);
   const int ne = static_cast<int>(c.external.size()), ni = static_cast<int>(c.internal.size());

@@ -7,8 +7,8 @@
 
 namespace hpcontact::fem {
 
-/// Splits the local dofs of an element (component-blocked, n_modes per component, the last
-/// n_internal modes internal) into external and internal ones and eliminates the internal ones:
+/// Splits the local dofs of an element (component-blocked, n_modes per component, n_components
+/// components: 2 in the plane, 3 for a hexahedron; the last n_internal modes internal) into external and internal ones and eliminates the internal ones:
 ///   K_c = K_ee - K_ei K_ii^{-1} K_ie,   f_c = f_e - K_ei K_ii^{-1} f_i.
 /// The internal solution is recovered from the external one by u_i = K_ii^{-1} (λ f_i - K_ie u_e),
 /// λ the factor on the load f.
@@ -25,6 +25,6 @@ struct CondensedElement {
 };
 
 CondensedElement condense(const Eigen::MatrixXd& K, const Eigen::VectorXd& f, int n_modes,
-                          int n_internal);
+                          int n_internal, int n_components = 2);
 
 }  // namespace hpcontact::fem

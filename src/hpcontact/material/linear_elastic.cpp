@@ -1,4 +1,4 @@
-// Plane elasticity matrices.
+// Elasticity matrices: the 3D law and the plane ones.
 #include "hpcontact/material/linear_elastic.hpp"
 
 #include <cmath>
@@ -28,6 +28,14 @@ Elasticity LinearElastic::D() const {
   return D;
 }
 
+Elasticity3 LinearElastic::D3() const {
+  const double l = lambda(), m = mu();
+  Elasticity3 D = Elasticity3::Zero();
+  D.topLeftCorner<3, 3>().setConstant(l);
+  D.diagonal() << l + 2 * m, l + 2 * m, l + 2 * m, m, m, m;
+  return D;
+}
+
 double LinearElastic::sigma_zz(const Voigt& sigma) const {
   return plane == Plane::strain ? poisson_ratio * (sigma(0) + sigma(1)) : 0.0;
 }
@@ -36,6 +44,8 @@ double LinearElastic::lambda() const {
   const double nu = poisson_ratio;
   return youngs_modulus * nu / ((1 + nu) * (1 - 2 * nu));
 }
+
+double LinearElastic::mu() const { return youngs_modulus / (2 * (1 + poisson_ratio)); }
 
 double LinearElastic::plane_modulus() const {
   return plane == Plane::stress ? youngs_modulus
