@@ -13,6 +13,7 @@
 #include <Eigen/SparseLU>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/model/contact_solve_failure.hpp"
 #include "hpcontact/model/contact_system.hpp"
 #include "hpcontact/model/load_scale.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
@@ -21,37 +22,6 @@
 namespace hpcontact::model {
 
 namespace {
-
-/// Why force control has nothing to scale: the first pair's resultant R at the state u of the
-/// displacement factor `factor` has no component `component`. Says which of the usual causes it
-/// is: nothing prescribed to scale, the force in the other component, or no contact (and how far
-/// the body is from it).
-std::string no_force_to_scale(const SolverSpec& ss, const Discretization& d,
-                              const ContactPair& pair, const Eigen::VectorXd& u,
-                              const Eigen::VectorXd* multipliers, double factor, const Vec2& R) {
-  const auto& tr = *ss.target_resultant;
-  const char* axis = tr.component == 0 ? "x" : "y";
-  std::ostringstream os;
-  os << ss.where.str() << ".target_resultant: the prescribed displacements (factor " << factor
-     << ") give the contact resultant (" << R.x() << ", " << R.y() << "), no force in " << axis
-     << " to scale to the target " << tr.value << ": ";
-  const ContactResult c = evaluate_contact(d, pair, u, multipliers);
-  double closest = std::numeric_limits<double>::infinity();
-  for (const auto& st : c.states) closest = std::min(closest, st.gap);
-  if (d.prescribed.cwiseAbs().maxCoeff() == 0)
-    os << "no displacement is prescribed, and force control scales only prescribed "
-          "displacements (give the push as ux or uy)";
-  else if (std::abs(R(1 - tr.component)) > 0)
-    os << "the force is in " << (tr.component == 0 ? "y" : "x")
-       << "; is target_resultant.component right?";
-  else if (closest > 0)
-    os << "the body does not reach the obstacle (its closest contact point stays " << closest
-       << " away): give a larger push, or check the obstacle's position and normal and the push's "
-          "sign";
-  else
-    os << "points touch the obstacle but press on nothing (is the push's sign right?)";
-  return os.str();
-}
 
 /// The sparse solver of the tangent's displacement block: the input's (solver.linear), with
 /// CHOLMOD giving way to LU when a tangent is not positive definite (the contact's curvature
@@ -174,27 +144,7 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
 
   // Why a Newton solve failed, with the inverted element or the unknown whose pivot vanished.
   auto failure_reason = [&](const solve::SolveReport& rep) {
-    std::string why = rep.message;
-    if (rep.status == solve::SolveStatus::not_finite && !system.failure().empty())
-      why += " (" + system.failure() + ")";
-    if (rep.status == solve::SolveStatus::singular) {
-      std::vector<char> frictional(d.bodies.size(), 0);
-      for (const auto& pair : pairs)
-        if (pair.friction.active() || (pair.constraints && pair.constraints->has_friction()))
-          for (int b : {pair.body, pair.other})
-            if (b >= 0) frictional[b] = 1;
-      const std::string where = explain_singular(d, rep.singular_row, frictional);
-      if (!where.empty()) why += " (" + where + ")";
-    }
-    return why;
-  };
-
-  // Whether two failed attempts' residual histories are the same (to round-off), and not empty.
-  auto same_residuals = [](const std::vector<double>& a, const std::vector<double>& b) {
-    if (a.empty() || a.size() != b.size()) return false;
-    for (size_t i = 0; i < a.size(); ++i)
-      if (!(std::abs(a[i] - b[i]) <= 1e-12 * std::max(std::abs(a[i]), std::abs(b[i])))) return false;
-    return true;
+    return newton_failure_reason(rep, d, pairs, system);
   };
 
   // Load steps along the path parameter from `from` to `target` (factors(s) gives the
@@ -283,21 +233,11 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
       failed_before = rep.residual_history;
       if (cuts == ss.max_cuts || unchanged ||
           (rep.status == solve::SolveStatus::singular && structural && !held_before)) {
-        std::ostringstream os;
-        os << "load step " << sol.load_steps + 1 << " (" << fn.describe() << ") failed after " << cuts
-           << " cuts: " << why;
-        if (unchanged)
-          os << "; halving the step repeated the same residuals: what does not converge does not "
-                "change with the load step — bodies overlapping in the input (an interference, "
-                "which no load scales: contact[].interference: ramp relieves it step by step) or "
-                "a state the step starts from; more cuts cannot help";
-        if (cuts == ss.max_cuts && cuts > 0 && lambda != from)
-          os << "; the load cannot be carried beyond the last converged step (" << converged.describe()
-             << "): a step from it of 1/" << (1LL << cuts) << " of a load step (solver.max_cuts = "
-             << ss.max_cuts << " halvings) does not converge" << system.capacity_used();
-        os << "; residual history:";
-        for (double r : rep.residual_history) os << ' ' << r;
-        sol.message = os.str();
+        const bool at_capacity = cuts == ss.max_cuts && cuts > 0 && lambda != from;
+        sol.message = failed_step_message({sol.load_steps + 1, fn.describe(), cuts, ss.max_cuts, why,
+                                           unchanged, at_capacity, converged.describe(),
+                                           at_capacity ? system.capacity_used() : std::string(),
+                                           rep.residual_history});
         return false;
       }
       ++cuts;
