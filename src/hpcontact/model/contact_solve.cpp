@@ -136,6 +136,8 @@ public:
   NonlinearSolution solve();
 
 private:
+  // The path's parts, each documented at its definition. Those returning bool: whether they
+  // got to their end (if not, sol_.message says why).
   void say(const std::string& s) const {
     if (progress_) progress_(s);
   }
@@ -151,6 +153,7 @@ private:
   bool advance_to(double from, double target) {
     return advance(from, target, ss_.load_steps, Factors::proportional);
   }
+  /// A load step's Newton solve: the unknowns it ended at, the factors it reached, its report.
   struct StepAttempt {
     Eigen::VectorXd x;
     Factors factors;
@@ -174,7 +177,7 @@ private:
   const StepFn& on_step_;
   std::vector<ContactPair> pairs_;
   ContactSystem system_;
-  solve::NewtonOptions newton_;
+  solve::NewtonOptions newton_options_;
   NonlinearSolution sol_;
   Eigen::VectorXd x_;    ///< the unknowns: of the last converged step, or of a start state
   int monitor_dof_ = -1;  ///< the monitored node's displacement dofs, if any
@@ -192,7 +195,7 @@ LoadPath::LoadPath(const ProblemSpec& spec, const Discretization& d, const Progr
       system_(d, pairs_, spec.discretization.condense,
               ss_.tangent == "finite-difference" ? ContactSystem::Tangent::seed_difference
                                                  : ContactSystem::Tangent::analytic),
-      newton_(newton_options(ss_, d, system_, pairs_)) {
+      newton_options_(newton_options(ss_, d, system_, pairs_)) {
   // Force control with friction: the secant on complete solves would go back and forth along
   // the load path, which friction remembers; force-controlled load steps instead (below).
   HPC_REQUIRE(!system_.has_friction() || !ss_.target_resultant ||
@@ -249,7 +252,7 @@ solve::IterationCallback LoadPath::newton_progress() const {
 
 /// Newton's method on the system from x, counted in the solution.
 solve::SolveReport LoadPath::newton(Eigen::VectorXd& x) {
-  const auto rep = solve::newton(system_, x, newton_, newton_progress());
+  const auto rep = solve::newton(system_, x, newton_options_, newton_progress());
   sol_.newton_iterations += rep.iterations;
   sol_.factorizations += rep.factorizations;
   return rep;
@@ -377,8 +380,10 @@ LoadPath::StepAttempt LoadPath::attempt_step(double s, const FactorsAt& factors,
   if (force)
     add_force_target(force->component, force->share(s) * force->value, force->scales_loads, a.x,
                      a.factors.displacements.y());
-  newton_.reference_norm = system_.force_scale(a.x);
-  if (force) newton_.reference_norm = std::max(newton_.reference_norm, force->share(s) * force->value);
+  newton_options_.reference_norm = system_.force_scale(a.x);
+  if (force)
+    newton_options_.reference_norm =
+        std::max(newton_options_.reference_norm, force->share(s) * force->value);
   a.report = newton(a.x);
   if (force) {
     const double alpha = system_.displacement_factor(a.x);
@@ -470,7 +475,7 @@ bool LoadPath::force_control_at_once() {
   const Eigen::VectorXd x0 = x_;
   system_.set_factors(first_, first_);
   add_force_target(tr.component, tr.value, true, x_, first_);
-  newton_.reference_norm = std::max(system_.force_scale(x_), tr.value);
+  newton_options_.reference_norm = std::max(system_.force_scale(x_), tr.value);
   const auto rep = newton(x_);
   const double alpha = system_.displacement_factor(x_);
   drop_force_target(x_);
