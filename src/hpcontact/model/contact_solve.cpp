@@ -1,57 +1,28 @@
 // Contact solve: R(u) = K u - lambda f - f_c(u) = 0 over the free dofs, with the penalty contact
-// force f_c and its consistent tangent; load steps with cut-back; secant on lambda for a target
-// resultant.
+// force f_c and its consistent tangent; load steps with cut-back; force control by the bordered
+// system or the secant on lambda for a target resultant; the arc-length method on the loads.
 #include "hpcontact/model/contact_solve.hpp"
-
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
+#include <functional>
+#include <optional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <Eigen/SparseLU>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/model/contact_solve_failure.hpp"
 #include "hpcontact/model/contact_system.hpp"
 #include "hpcontact/model/load_scale.hpp"
-#include "hpcontact/model/rigid_motion.hpp"
 #include "hpcontact/solve/arc_length.hpp"
 
 namespace hpcontact::model {
 
 namespace {
-
-/// Why force control has nothing to scale: the first pair's resultant R at the state u of the
-/// displacement factor `factor` has no component `component`. Says which of the usual causes it
-/// is: nothing prescribed to scale, the force in the other component, or no contact (and how far
-/// the body is from it).
-std::string no_force_to_scale(const SolverSpec& ss, const Discretization& d,
-                              const ContactPair& pair, const Eigen::VectorXd& u,
-                              const Eigen::VectorXd* multipliers, double factor, const Vec2& R) {
-  const auto& tr = *ss.target_resultant;
-  const char* axis = tr.component == 0 ? "x" : "y";
-  std::ostringstream os;
-  os << ss.where.str() << ".target_resultant: the prescribed displacements (factor " << factor
-     << ") give the contact resultant (" << R.x() << ", " << R.y() << "), no force in " << axis
-     << " to scale to the target " << tr.value << ": ";
-  const ContactResult c = evaluate_contact(d, pair, u, multipliers);
-  double closest = std::numeric_limits<double>::infinity();
-  for (const auto& st : c.states) closest = std::min(closest, st.gap);
-  if (d.prescribed.cwiseAbs().maxCoeff() == 0)
-    os << "no displacement is prescribed, and force control scales only prescribed "
-          "displacements (give the push as ux or uy)";
-  else if (std::abs(R(1 - tr.component)) > 0)
-    os << "the force is in " << (tr.component == 0 ? "y" : "x")
-       << "; is target_resultant.component right?";
-  else if (closest > 0)
-    os << "the body does not reach the obstacle (its closest contact point stays " << closest
-       << " away): give a larger push, or check the obstacle's position and normal and the push's "
-          "sign";
-  else
-    os << "points touch the obstacle but press on nothing (is the push's sign right?)";
-  return os.str();
-}
 
 /// The sparse solver of the tangent's displacement block: the input's (solver.linear), with
 /// CHOLMOD giving way to LU when a tangent is not positive definite (the contact's curvature
@@ -68,11 +39,9 @@ solve::LinearSolverKind tangent_solver(const SolverSpec& ss, const Discretizatio
   return kind == solve::LinearSolverKind::cholmod ? solve::LinearSolverKind::cholmod_else_lu : kind;
 }
 
-}  // namespace
-
-NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d,
-                                const ProgressFn& progress, const StartState& start,
-                                const StepFn& on_step) {
+/// The problem's contact pairs, checked against the solver's settings: the target force's scale,
+/// the difference tangent for rigid obstacles only.
+std::vector<ContactPair> checked_pairs(const ProblemSpec& spec, const Discretization& d) {
   const SolverSpec& ss = spec.solver;
   auto pairs = make_contact_pairs(spec, d);
   if (!pairs.empty()) require_force_scale(spec, d, pairs.front().body, pairs.front().other);
@@ -80,9 +49,13 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     HPC_REQUIRE(pair.other < 0 || ss.tangent == "analytic", InputError, ss.where.str(),
                 ".tangent: finite-difference is implemented for rigid obstacles only; contact "
                 "between two bodies needs tangent: analytic");
-  ContactSystem system(d, pairs, spec.discretization.condense,
-                       ss.tangent == "finite-difference" ? ContactSystem::Tangent::seed_difference
-                                                         : ContactSystem::Tangent::analytic);
+  return pairs;
+}
+
+/// Newton's options for the load steps (its reference norm is set per step).
+solve::NewtonOptions newton_options(const SolverSpec& ss, const Discretization& d,
+                                    const ContactSystem& system,
+                                    const std::vector<ContactPair>& pairs) {
   solve::NewtonOptions no;
   no.max_iterations = ss.max_iterations;
   no.tolerance = ss.tolerance;
@@ -94,435 +67,536 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
     return p.other >= 0 && !p.constraints;
   });
   no.line_search = ss.line_search == "on" || (ss.line_search == "auto" && (system.has_friction() || two_bodies));
+  return no;
+}
+
+/// The first displacement dof (x, y next to it) of solver.monitor's node, -1 if none.
+int monitored_dof(const SolverSpec& ss, const Discretization& d) {
+  if (ss.monitor_body.empty()) return -1;
+  int b = -1;
+  const Body& body = body_named(d, ss.monitor_body, ss.where, &b);
+  const int v = body.mesh.node_index(ss.monitor_node);
+  HPC_REQUIRE(v >= 0, InputError, ss.where.str(), ".monitor.node: no node ", ss.monitor_node,
+              " in body '", ss.monitor_body, "'");
+  return body.dof_offset + 2 * body.dofs.vertex_mode(v);
+}
+
+/// The factors of a point on the load path.
+struct Factors {
+  Vec2 displacements = Vec2::Zero();  ///< on the prescribed displacements' x and y components
+  double loads = 0;
+  static Factors proportional(double lambda) { return {Vec2(lambda, lambda), lambda}; }
+  /// "factor 0.5", "factor 0.5 (loads 1)", "factors (0, 1) (loads 0)"
+  std::string describe() const {
+    std::ostringstream os;
+    if (displacements.x() == displacements.y()) os << "factor " << displacements.x();
+    else os << "factors (" << displacements.x() << ", " << displacements.y() << ")";
+    if (loads != displacements.x() || displacements.x() != displacements.y()) os << " (loads " << loads << ")";
+    return os.str();
+  }
+};
+/// The factors at a value of the path parameter.
+using FactorsAt = std::function<Factors(double)>;
+
+/// Force-controlled load steps: at the path parameter s the factor on the prescribed
+/// displacements is the unknown of the bordered system whose target is share(s) × value.
+struct ForceControl {
+  int component;
+  double value;
+  double share_from = 0, share_to = 1;  ///< the share of value at s = 0 and s = 1
+  bool scales_loads = true;             ///< the loads' factor is the unknown too
+  double share(double s) const { return share_from + s * (share_to - share_from); }
+};
+using ForceTarget = std::optional<ForceControl>;
+
+/// The secant's next factor towards the target force, from the factors l0, l1 and their
+/// resultants' misses f0, f1 (resultant − target).
+double secant_factor(double l0, double f0, double l1, double f1, double target) {
+  // The resultant grows like a power of the factor as the contact zone widens (Hertz:
+  // a little faster than linearly): the secant on log F over log λ, which is exact for a
+  // power law, when both points have a force; else the secant on F over λ.
+  const double F0 = f0 + target, F1 = f1 + target;
+  const double k = std::log(F1 / F0) / std::log(l1 / l0);
+  return F0 > 0 && F1 > 0 && l0 > 0 && l1 > 0 && std::isfinite(k) && k > 0.2 && k < 5
+             ? l1 * std::pow(target / F1, 1 / k)
+             : l1 - f1 * (l1 - l0) / (f1 - f0);
+}
+
+/// The contact problem along its load path: the contact system, its unknowns and the solution
+/// built step by step, which the path's steps share. A failed path keeps the last converged
+/// state, marked not converged.
+class LoadPath {
+public:
+  LoadPath(const ProblemSpec& spec, const Discretization& d, const ProgressFn& progress,
+           const StartState& start, const StepFn& on_step);
+  LoadPath(const LoadPath&) = delete;  // the system keeps a reference to pairs_
+  LoadPath& operator=(const LoadPath&) = delete;
+
+  /// Follows the load path to its end (once).
+  NonlinearSolution solve();
+
+private:
+  // The path's parts, each documented at its definition. Those returning bool: whether they
+  // got to their end (if not, sol_.message says why).
+  void say(const std::string& s) const {
+    if (progress_) progress_(s);
+  }
+  solve::IterationCallback newton_progress() const;
+  solve::SolveReport newton(Eigen::VectorXd& x);
+  void add_force_target(int component, double value, bool scales_loads, Eigen::VectorXd& x,
+                        double guess);
+  void drop_force_target(Eigen::VectorXd& x);
+  void record(const Factors& f, int iterations, double arc);
+  void set_out();
+  bool advance(double from, double target, int steps, const FactorsAt& factors,
+               const ForceTarget& force = std::nullopt);
+  bool advance_to(double from, double target) {
+    return advance(from, target, ss_.load_steps, Factors::proportional);
+  }
+  /// A load step's Newton solve: the unknowns it ended at, the factors it reached, its report.
+  struct StepAttempt {
+    Eigen::VectorXd x;
+    Factors factors;
+    solve::SolveReport report;
+  };
+  StepAttempt attempt_step(double s, const FactorsAt& factors, const ForceTarget& force);
+  void accept_step(StepAttempt attempt);
+  bool arc_length_path();
+  bool accept_arc_length_step(const Eigen::VectorXd& x, const solve::ArcLengthStep& st);
+  double factor_for(double share) const;
+  bool force_controlled_steps();
+  bool force_control_at_once();
+  bool staged_path();
+  bool secant_on_factor();
+  NonlinearSolution result(bool converged);
+
+  const SolverSpec& ss_;
+  const Discretization& d_;
+  const ProgressFn& progress_;
+  const StartState& start_;
+  const StepFn& on_step_;
+  std::vector<ContactPair> pairs_;
+  ContactSystem system_;
+  solve::NewtonOptions newton_options_;
+  NonlinearSolution sol_;
+  Eigen::VectorXd x_;    ///< the unknowns: of the last converged step, or of a start state
+  int monitor_dof_ = -1;  ///< the monitored node's displacement dofs, if any
+  Factors converged_;     ///< the factors of the last converged step
+  /// The first factor: 1 (the displacements as prescribed) or, under force control, a factor
+  /// the caller expects to be close (the previous mesh's, in an adaptive loop).
+  double first_ = 1;
+  std::string first_attempt_;  ///< why force control as one system gave way, if it did
+};
+
+LoadPath::LoadPath(const ProblemSpec& spec, const Discretization& d, const ProgressFn& progress,
+                   const StartState& start, const StepFn& on_step)
+    : ss_(spec.solver), d_(d), progress_(progress), start_(start), on_step_(on_step),
+      pairs_(checked_pairs(spec, d)),
+      system_(d, pairs_, spec.discretization.condense,
+              ss_.tangent == "finite-difference" ? ContactSystem::Tangent::seed_difference
+                                                 : ContactSystem::Tangent::analytic),
+      newton_options_(newton_options(ss_, d, system_, pairs_)) {
   // Force control with friction: the secant on complete solves would go back and forth along
   // the load path, which friction remembers; force-controlled load steps instead (below).
-  HPC_REQUIRE(!system.has_friction() || !ss.target_resultant ||
-                  (!pairs.empty() && pairs.front().constraints),
-              InputError, ss.where.str(),
+  HPC_REQUIRE(!system_.has_friction() || !ss_.target_resultant ||
+                  (!pairs_.empty() && pairs_.front().constraints),
+              InputError, ss_.where.str(),
               ".target_resultant: force control with friction needs the first contact pair "
               "enforced exactly (enforcement: augmented-lagrangian): its factor is then an "
               "unknown of every load step; the penalty's secant on complete solves would go back "
               "and forth along the load path, which friction remembers");
+  sol_.elastic = system_.elastic();
+  x_ = Eigen::VectorXd::Zero(system_.size());
+  monitor_dof_ = monitored_dof(ss_, d);
+  first_ = ss_.target_resultant && start.factor > 0 ? start.factor : 1.0;
+}
 
-  NonlinearSolution sol;
-  sol.elastic = system.elastic();
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(system.size());
-  // The monitored node's displacement dofs, if any.
-  int monitor_dof = -1;
-  if (!ss.monitor_body.empty()) {
-    int b = -1;
-    const Body& body = body_named(d, ss.monitor_body, ss.where, &b);
-    const int v = body.mesh.node_index(ss.monitor_node);
-    HPC_REQUIRE(v >= 0, InputError, ss.where.str(), ".monitor.node: no node ", ss.monitor_node,
-                " in body '", ss.monitor_body, "'");
-    monitor_dof = body.dof_offset + 2 * body.dofs.vertex_mode(v);
-  }
-  struct Factors {
-    Vec2 displacements = Vec2::Zero();  ///< on the prescribed displacements' x and y components
-    double loads = 0;
-    static Factors proportional(double lambda) { return {Vec2(lambda, lambda), lambda}; }
-    /// "factor 0.5", "factor 0.5 (loads 1)", "factors (0, 1) (loads 0)"
-    std::string describe() const {
-      std::ostringstream os;
-      if (displacements.x() == displacements.y()) os << "factor " << displacements.x();
-      else os << "factors (" << displacements.x() << ", " << displacements.y() << ")";
-      if (loads != displacements.x() || displacements.x() != displacements.y()) os << " (loads " << loads << ")";
-      return os.str();
-    }
-  };
-  auto record = [&](const Factors& f, int iterations, double arc) {
-    NonlinearSolution::PathPoint p{f.displacements.y(), f.loads, f.displacements, Vec2::Zero(),
-                                   Vec2::Zero(), iterations, arc};
-    const Eigen::VectorXd u = system.solution(x);
-    const auto multipliers = system.multipliers(x);
-    if (monitor_dof >= 0) p.monitor = Vec2(u(monitor_dof), u(monitor_dof + 1));
-    if (!pairs.empty())
-      p.resultant = contact_resultant(d, pairs.front(), u,
-                                      multipliers[0].size() ? &multipliers[0] : nullptr);
-    sol.path.push_back(p);
-    if (on_step) on_step(u, p, pairs, multipliers);
-  };
-  // The contact results at the end (converged or not).
-  auto finish = [&]() {
-    sol.multipliers = system.multipliers(x);
-    // x is the state committed last: its step's slips and the path's were measured then
-    const auto& slips = system.step_slips();
-    const auto& totals = system.total_slips();
-    for (size_t k = 0; k < pairs.size(); ++k)
-      sol.contact.push_back(evaluate_contact(d, pairs[k], sol.u, sol.multipliers_of(k),
-                                             slips[k].size() ? &slips[k] : nullptr,
-                                             totals[k].size() ? &totals[k] : nullptr));
-  };
-  Factors converged;  // the factors of the last converged step
-  auto say = [&](const std::string& s) {
-    if (progress) progress(s);
-  };
-
-  // A progress line per Newton iteration.
-  auto newton_progress = [&]() -> solve::IterationCallback {
-    if (!progress) return {};
-    const auto began = std::chrono::steady_clock::now();
-    return [&, began](int it, double rn, double dxn) {
-      std::ostringstream os;
-      os << "  iteration " << it << ": |R| " << rn << ", |dx| " << dxn;
-      if (!pairs.empty()) os << ", " << system.points_in_contact() << " points in contact";
-      os << ", " << std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count()
-         << " s";
-      say(os.str());
-    };
-  };
-
-  // Why a Newton solve failed, with the inverted element or the unknown whose pivot vanished.
-  auto failure_reason = [&](const solve::SolveReport& rep) {
-    std::string why = rep.message;
-    if (rep.status == solve::SolveStatus::not_finite && !system.failure().empty())
-      why += " (" + system.failure() + ")";
-    if (rep.status == solve::SolveStatus::singular) {
-      std::vector<char> frictional(d.bodies.size(), 0);
-      for (const auto& pair : pairs)
-        if (pair.friction.active() || (pair.constraints && pair.constraints->has_friction()))
-          for (int b : {pair.body, pair.other})
-            if (b >= 0) frictional[b] = 1;
-      const std::string where = explain_singular(d, rep.singular_row, frictional);
-      if (!where.empty()) why += " (" + where + ")";
-    }
-    return why;
-  };
-
-  // Whether two failed attempts' residual histories are the same (to round-off), and not empty.
-  auto same_residuals = [](const std::vector<double>& a, const std::vector<double>& b) {
-    if (a.empty() || a.size() != b.size()) return false;
-    for (size_t i = 0; i < a.size(); ++i)
-      if (!(std::abs(a[i] - b[i]) <= 1e-12 * std::max(std::abs(a[i]), std::abs(b[i])))) return false;
-    return true;
-  };
-
-  // Load steps along the path parameter from `from` to `target` (factors(s) gives the
-  // factors), halving a step that does not converge and doubling it again, up to the nominal
-  // step, after two steps in a row converged; a step is never shorter than the nominal one
-  // halved max_cuts times (`cuts` counts the halvings the current step has, not those in a row:
-  // a load that cannot be carried beyond some factor, e.g. a shear at the friction's capacity,
-  // was otherwise approached by ever shorter steps for ever, 0.75, 0.875, 0.9375, ...). With
-  // `force`, force-controlled steps: at s the factor on the prescribed displacements is the
-  // unknown of the bordered system whose target is share(s) × value (factors(s) then gives its
-  // first guess, and the loads' factor unless they follow the unknown).
-  struct ForceControl {
-    int component;
-    double value;
-    double share_from = 0, share_to = 1;  ///< the share of value at s = 0 and s = 1
-    bool scales_loads = true;             ///< the loads' factor is the unknown too
-    double share(double s) const { return share_from + s * (share_to - share_from); }
-  };
-  using ForceTarget = std::optional<ForceControl>;
-  auto advance = [&](double from, double target, int steps, const auto& factors,
-                     const ForceTarget& force = std::nullopt) -> bool {
-    const double nominal = (target - from) / std::max(1, steps);
-    double lambda = from, step = nominal;
-    int cuts = 0, in_a_row = 0;
-    std::vector<double> failed_before;  // the residuals of the last attempt that failed
-    while (std::abs(target - lambda) > 1e-14 * std::max(1.0, std::abs(target))) {
-      const double next = std::abs(target - lambda) < std::abs(step) * (1 + 1e-12) ? target : lambda + step;
-      Factors fn = factors(next);
-      system.set_factors(fn.displacements, fn.loads);
-      Eigen::VectorXd trial = x;
-      if (force) {
-        system.set_force_target(std::make_pair(force->component, force->share(next) * force->value),
-                                force->scales_loads);
-        trial.conservativeResize(system.size());
-        trial(system.size() - 1) = fn.displacements.y();
-      }
-      no.reference_norm = system.force_scale(trial);
-      if (force) no.reference_norm = std::max(no.reference_norm, force->share(next) * force->value);
-      const auto rep = solve::newton(system, trial, no, newton_progress());
-      sol.newton_iterations += rep.iterations;
-      sol.factorizations += rep.factorizations;
-      if (force) {
-        const double alpha = system.displacement_factor(trial);
-        fn = force->scales_loads ? Factors::proportional(alpha) : Factors{Vec2(alpha, alpha), fn.loads};
-        system.set_force_target(std::nullopt);
-        trial.conservativeResize(system.size());
-        system.set_factors(fn.displacements, fn.loads);
-      }
-      if (rep.ok()) {
-        x = trial;
-        lambda = next;
-        converged = fn;
-        system.commit(x);
- record(fn, rep.iterations, 0.0);
-        ++sol.load_steps;
-        std::ostringstream os;
-        os << "load step " << sol.load_steps << ": " << fn.describe() << ", " << rep.iterations << " Newton iterations, |R| " << rep.residual_history.front()
-           << " -> " << rep.residual_history.back();
-        say(os.str());
-        if (++in_a_row >= 2 && cuts > 0) {
-          --cuts;
-          step *= 2;
-          in_a_row = 0;
-        }
-        continue;
-      }
-      in_a_row = 0;
-      if (rep.status == solve::SolveStatus::stopped) {  // asked to stop: no cuts, keep what converged
-        std::ostringstream os;
-        os << "load step " << sol.load_steps + 1 << " (" << fn.describe() << "): " << rep.message;
-        sol.message = os.str();
-        return false;
-      }
-      const std::string why = failure_reason(rep);
-      // A tangent made singular by a body that only contact holds (its constraints leave a
-      // rigid motion free) stays singular on a shorter step when nothing has converged yet (no
-      // contact holds it at all): no cuts then. After converged steps a singular tangent in
-      // mid-Newton is a near-mechanism of this step (every point slipping on the way to a
-      // shear near the friction's capacity, an active set that lost its last node): cut.
-      bool structural = false;
-      for (const Body& body : d.bodies) structural = structural || !body.free_rigid_motions.empty();
-      const bool held_before = sol.load_steps > 0;
-      // A shorter step that fails with the residuals of the longer one: what fails does not
-      // scale with the load (an interference of the input, a state the step starts from).
-      const bool unchanged = same_residuals(failed_before, rep.residual_history);
-      failed_before = rep.residual_history;
-      if (cuts == ss.max_cuts || unchanged ||
-          (rep.status == solve::SolveStatus::singular && structural && !held_before)) {
-        std::ostringstream os;
-        os << "load step " << sol.load_steps + 1 << " (" << fn.describe() << ") failed after " << cuts
-           << " cuts: " << why;
-        if (unchanged)
-          os << "; halving the step repeated the same residuals: what does not converge does not "
-                "change with the load step — bodies overlapping in the input (an interference, "
-                "which no load scales: contact[].interference: ramp relieves it step by step) or "
-                "a state the step starts from; more cuts cannot help";
-        if (cuts == ss.max_cuts && cuts > 0 && lambda != from)
-          os << "; the load cannot be carried beyond the last converged step (" << converged.describe()
-             << "): a step from it of 1/" << (1LL << cuts) << " of a load step (solver.max_cuts = "
-             << ss.max_cuts << " halvings) does not converge" << system.capacity_used();
-        os << "; residual history:";
-        for (double r : rep.residual_history) os << ' ' << r;
-        sol.message = os.str();
-        return false;
-      }
-      ++cuts;
-      step *= 0.5;
-      say("load step did not converge (" + why + "): cutting the step to " +
-          std::to_string(step));
-    }
-    return true;
-  };
-  auto proportional = [](double lambda) { return Factors::proportional(lambda); };
-  auto advance_to = [&](double from, double target) {
-    return advance(from, target, ss.load_steps, proportional);
-  };
-
-  // The first factor: 1 (the displacements as prescribed) or, under force control, a factor
-  // the caller expects to be close (the previous mesh's, in an adaptive loop).
-  const double first = ss.target_resultant && start.factor > 0 ? start.factor : 1.0;
-  double lambda = 0;
-  // A failed run keeps the last converged state, marked not converged.
-  std::string first_attempt;  // why force control as one system gave way, if it did
-  auto failed = [&]() {
-    if (!first_attempt.empty()) sol.message = first_attempt + "; then " + sol.message;
-    system.set_force_target(std::nullopt);
-    x.conservativeResize(system.size());
-    system.set_factors(converged.displacements, converged.loads);
-    sol.u = system.solution(x);
-    sol.load_factor = converged.displacements.y();
-    sol.displacement_factors = converged.displacements;
-    sol.loads_factor = converged.loads;
-    finish();
-    sol.pairs = pairs;
-    return sol;
-  };
-  // Points in contact in the unloaded state (touching: g = 0) are anchored from the start, so
-  // that friction holds them in the first load step already.
-  system.set_factors(0, 0);
-  system.commit(x);
-  // A warm start (an adaptive loop's previous solution): its dofs and multipliers, at the
-  // factor force control starts from; for exactly enforced pairs without friction (whose path
-  // it would skip; the penalty keeps the seed's solves from the undeformed state).
-  const bool exact = std::all_of(pairs.begin(), pairs.end(),
-                                 [](const ContactPair& p) { return p.constraints != nullptr; });
-  const bool warm = start.u.size() == d.n_dofs && !system.has_friction() && exact && !pairs.empty();
-  if (warm) {
-    system.set_factors(first, first);
-    x = system.unknowns(start.u, start.multipliers);
-  } else {
-    system.activate_touching(x);
-  }
-  bool secant = ss.target_resultant.has_value();  // force control by the secant on full solves
-  if (ss.control == "arc-length") {
-    // Prescribed displacements first (loads at 0), then the arc-length path of the loads.
-    if (d.prescribed.cwiseAbs().maxCoeff() > 0 &&
-        !advance(0.0, 1.0, ss.load_steps, [](double s) { return Factors{Vec2(s, s), 0}; }))
-      return failed();
-    system.set_factors(1, 0);
-    LoadsOnPath path(system);
-    solve::ArcLengthOptions ao;
-    ao.steps = ss.load_steps;
-    ao.max_iterations = ss.max_iterations;
-    ao.tolerance = ss.tolerance;
-    ao.linear_solver = solve::LinearSolverKind::lu;
-    ao.reference_norm = system.load_vector().norm();
-    HPC_REQUIRE(ao.reference_norm > 0, InputError, ss.where.str(),
-                ".control: arc-length scales the loads, and there are none");
-    double lf = 0;
-    Eigen::VectorXd xa = x;
-    const auto rep = solve::arc_length(path, xa, lf, ao, [&](const Eigen::VectorXd& xs,
-                                                              const solve::ArcLengthStep& st) {
-      x = xs;
-      converged = {Vec2(1, 1), st.lambda};
-      system.set_factors(1, st.lambda);
-      system.commit(x);
-      ++sol.load_steps;
-      record(converged, st.iterations, st.length);
-      std::ostringstream os;
-      os << "arc-length step " << sol.load_steps << ": load factor " << st.lambda << ", "
-         << st.iterations << " iterations, length " << st.length;
-      say(os.str());
-      return true;
-    });
-    sol.newton_iterations += rep.iterations;
-    if (!rep.reached) {
-      sol.message = rep.message;
-      return failed();
-    }
+NonlinearSolution LoadPath::solve() {
+  set_out();
+  bool secant = ss_.target_resultant.has_value();  // force control by the secant on full solves
+  if (ss_.control == "arc-length") {
+    if (!arc_length_path()) return result(false);
   } else {
     // Force control of an exactly enforced pair: the factor is one more unknown of Newton's
     // system, its equation the target resultant (bordered), from the start at once. Should that
     // not converge, the load-controlled steps and the secant below take over.
-    bool bordered = ss.stages.empty() && ss.target_resultant && !pairs.empty() && pairs.front().constraints;
-    // The first guess of the factor that carries `share` of the target force in a
-    // force-controlled load step: the last step's, scaled by the force it carried.
-    auto factor_for = [&](double share) {
-      const auto& tr = *ss.target_resultant;
-      if (sol.path.empty()) return first * share;
-      const auto& last = sol.path.back();
-      const double carried = std::abs(last.resultant(tr.component));
-      return carried > 0 ? last.displacements * share * tr.value / carried : first * share;
-    };
-    if (bordered && system.has_friction()) {
-      // With friction the path matters: load steps, each to its share of the target force,
-      // the factor an unknown of each.
-      const auto& tr = *ss.target_resultant;
-      auto guess = [&](double s) { return Factors::proportional(factor_for(s)); };
-      if (!advance(0.0, 1.0, ss.load_steps, guess, ForceControl{tr.component, tr.value}))
-        return failed();
+    bool bordered = ss_.stages.empty() && ss_.target_resultant && !pairs_.empty() && pairs_.front().constraints;
+    if (bordered && system_.has_friction()) {
+      if (!force_controlled_steps()) return result(false);
     } else if (bordered) {
-      const auto& tr = *ss.target_resultant;
-      const Eigen::VectorXd x0 = x;
-      system.set_factors(first, first);
-      system.set_force_target(std::make_pair(tr.component, tr.value));
-      x.conservativeResize(system.size());
-      x(system.size() - 1) = first;
-      no.reference_norm = std::max(system.force_scale(x), tr.value);
-      const auto rep = solve::newton(system, x, no, newton_progress());
-      sol.newton_iterations += rep.iterations;
-      sol.factorizations += rep.factorizations;
-      const double alpha = system.displacement_factor(x);
-      system.set_force_target(std::nullopt);
-      x.conservativeResize(system.size());
-      if (rep.ok()) {
-        system.set_factors(alpha, alpha);
-        converged = Factors::proportional(alpha);
-        record(converged, rep.iterations, 0.0);
-        ++sol.load_steps;
-        std::ostringstream os;
-        os << "load step " << sol.load_steps << ": factor " << alpha << " (force control), "
-           << rep.iterations << " Newton iterations, |R| " << rep.residual_history.front()
-           << " -> " << rep.residual_history.back();
-        say(os.str());
-      } else {
-        first_attempt = "force control as one Newton system did not converge (" + rep.message + ")";
-        say("force control as one Newton system did not converge (" + failure_reason(rep) +
-            "): load steps and the secant on the factor instead");
-        x = x0;
-        bordered = false;
-      }
+      bordered = force_control_at_once();
     }
-    // Stages under force control (an exactly enforced first pair): a stage's `displacements`
-    // is the share of the target force it reaches (the factor is the unknown) while its loads go
-    // linearly — e.g. press to the force, then shear at that force held.
-    const bool staged_force = !ss.stages.empty() && ss.target_resultant;
-    HPC_REQUIRE(!staged_force || (!pairs.empty() && pairs.front().constraints), InputError, ss.where.str(),
-                ".target_resultant with stages needs the first contact pair enforced exactly "
-                "(enforcement: augmented-lagrangian): the factor on the prescribed displacements is "
-                "then an unknown of every load step");
-    if (!bordered && ss.stages.empty()) {
-      if (!advance_to(0.0, first)) return failed();
-    } else if (!bordered) {
-      Factors stage_start;
-      for (const auto& stage : ss.stages) {
-        const Factors end{Vec2(stage.displacements_x(), stage.displacements_y()), stage.loads};
-        auto along = [&](double s) {
-          Factors f{stage_start.displacements + s * (end.displacements - stage_start.displacements),
-                    stage_start.loads + s * (end.loads - stage_start.loads)};
-          if (staged_force) f.displacements.setConstant(factor_for(f.displacements.y()));  // a share
-          return f;
-        };
-        const int steps = stage.steps > 0 ? stage.steps : ss.load_steps;
-        const ForceTarget force =
-            staged_force ? ForceTarget(ForceControl{ss.target_resultant->component, ss.target_resultant->value,
-                                                    stage_start.displacements.y(), end.displacements.y(), false})
-                         : std::nullopt;
-        if (!advance(0.0, 1.0, steps, along, force)) return failed();
-        stage_start = end;
-      }
-    }
-    // the secant on complete solves only where no step held the target itself
-    secant = ss.target_resultant && !bordered && !staged_force;
+    if (!bordered && (ss_.stages.empty() ? !advance_to(0.0, first_) : !staged_path()))
+      return result(false);
+    // the secant on complete solves only where no step held the target itself (stages under
+    // force control hold it in every step)
+    secant = ss_.target_resultant && !bordered && ss_.stages.empty();
   }
-  lambda = first;
-  if (secant) {
-    const auto& tr = *ss.target_resultant;
-    HPC_REQUIRE(!pairs.empty(), InputError, ss.where.str(),
-                ".target_resultant: needs a contact pair to measure the resultant");
-    // The resultant of the last converged step, as record() took it for the load path.
-    auto measured = [&]() { return std::abs(sol.path.back().resultant(tr.component)); };
-    double l0 = lambda, f0 = measured() - tr.value;
-    if (!(f0 + tr.value > 0)) {
-      const auto multipliers = system.multipliers(x);
-      throw InputError(no_force_to_scale(ss, d, pairs.front(), system.solution(x),
-                                         multipliers[0].size() ? &multipliers[0] : nullptr, l0,
-                                         sol.path.back().resultant));
-    }
-    double l1 = l0 * tr.value / (f0 + tr.value);
-    for (int it = 0; it < 50; ++it) {
-      if (!advance_to(lambda, l1)) return failed();
-      lambda = l1;
-      const double f1 = measured() - tr.value;
-      std::ostringstream os;
-      os << "force control: factor " << l1 << ", resultant " << f1 + tr.value << " (target "
-         << tr.value << ")";
-      say(os.str());
-      if (std::abs(f1) <= tr.tolerance * tr.value) break;
-      // The resultant grows like a power of the factor as the contact zone widens (Hertz:
-      // a little faster than linearly): the secant on log F over log λ, which is exact for a
-      // power law, when both points have a force; else the secant on F over λ.
-      const double F0 = f0 + tr.value, F1 = f1 + tr.value;
-      const double k = std::log(F1 / F0) / std::log(l1 / l0);
-      const double l2 = F0 > 0 && F1 > 0 && l0 > 0 && l1 > 0 && std::isfinite(k) && k > 0.2 && k < 5
-                            ? l1 * std::pow(tr.value / F1, 1 / k)
-                            : l1 - f1 * (l1 - l0) / (f1 - f0);
-      l0 = l1;
-      f0 = f1;
-      l1 = l2;
-      if (it == 49) {
-        sol.message = "force control did not reach the target resultant in 50 secant iterations";
-        return failed();
-      }
-    }
-  }
-  system.set_force_target(std::nullopt);
-  x.conservativeResize(system.size());
-  system.set_factors(converged.displacements, converged.loads);
-  sol.u = system.solution(x);
-  sol.load_factor = converged.displacements.y();
-  sol.displacement_factors = converged.displacements;
-  sol.loads_factor = converged.loads;
-  sol.converged = true;
-  finish();
-  sol.pairs = std::move(pairs);
-  return sol;
+  if (secant && !secant_on_factor()) return result(false);
+  return result(true);
 }
 
+// A progress line per Newton iteration.
+solve::IterationCallback LoadPath::newton_progress() const {
+  if (!progress_) return {};
+  const auto began = std::chrono::steady_clock::now();
+  return [this, began](int it, double rn, double dxn) {
+    std::ostringstream os;
+    os << "  iteration " << it << ": |R| " << rn << ", |dx| " << dxn;
+    if (!pairs_.empty()) os << ", " << system_.points_in_contact() << " points in contact";
+    os << ", " << std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count()
+       << " s";
+    say(os.str());
+  };
+}
+
+/// Newton's method on the system from x, counted in the solution.
+solve::SolveReport LoadPath::newton(Eigen::VectorXd& x) {
+  const auto rep = solve::newton(system_, x, newton_options_, newton_progress());
+  sol_.newton_iterations += rep.iterations;
+  sol_.factorizations += rep.factorizations;
+  return rep;
+}
+
+/// Makes the factor on the prescribed displacements the unknown of the bordered system, whose
+/// row is the target resultant `value` in `component`; x gains that unknown, at `guess`.
+void LoadPath::add_force_target(int component, double value, bool scales_loads,
+                                Eigen::VectorXd& x, double guess) {
+  system_.set_force_target(std::make_pair(component, value), scales_loads);
+  x.conservativeResize(system_.size());
+  x(system_.size() - 1) = guess;
+}
+
+/// Back to load control: x loses the factor's unknown.
+void LoadPath::drop_force_target(Eigen::VectorXd& x) {
+  system_.set_force_target(std::nullopt);
+  x.conservativeResize(system_.size());
+}
+
+/// A point of the load path at the converged state x_, passed on to on_step.
+void LoadPath::record(const Factors& f, int iterations, double arc) {
+  NonlinearSolution::PathPoint p{f.displacements.y(), f.loads, f.displacements, Vec2::Zero(),
+                                 Vec2::Zero(), iterations, arc};
+  const Eigen::VectorXd u = system_.solution(x_);
+  const auto multipliers = system_.multipliers(x_);
+  if (monitor_dof_ >= 0) p.monitor = Vec2(u(monitor_dof_), u(monitor_dof_ + 1));
+  if (!pairs_.empty())
+    p.resultant = contact_resultant(d_, pairs_.front(), u,
+                                    multipliers[0].size() ? &multipliers[0] : nullptr);
+  sol_.path.push_back(p);
+  if (on_step_) on_step_(u, p, pairs_, multipliers);
+}
+
+/// The state the path sets out from: unloaded, or a warm start.
+void LoadPath::set_out() {
+  // Points in contact in the unloaded state (touching: g = 0) are anchored from the start, so
+  // that friction holds them in the first load step already.
+  system_.set_factors(0, 0);
+  system_.commit(x_);
+  // A warm start (an adaptive loop's previous solution): its dofs and multipliers, at the
+  // factor force control starts from; for exactly enforced pairs without friction (whose path
+  // it would skip; the penalty keeps the seed's solves from the undeformed state).
+  const bool exact = std::all_of(pairs_.begin(), pairs_.end(),
+                                 [](const ContactPair& p) { return p.constraints != nullptr; });
+  const bool warm = start_.u.size() == d_.n_dofs && !system_.has_friction() && exact && !pairs_.empty();
+  if (warm) {
+    system_.set_factors(first_, first_);
+    x_ = system_.unknowns(start_.u, start_.multipliers);
+  } else {
+    system_.activate_touching(x_);
+  }
+}
+
+// Load steps along the path parameter from `from` to `target` (factors(s) gives the
+// factors), halving a step that does not converge and doubling it again, up to the nominal
+// step, after two steps in a row converged; a step is never shorter than the nominal one
+// halved max_cuts times (`cuts` counts the halvings the current step has, not those in a row:
+// a load that cannot be carried beyond some factor, e.g. a shear at the friction's capacity,
+// was otherwise approached by ever shorter steps for ever, 0.75, 0.875, 0.9375, ...). With
+// `force`, force-controlled steps (attempt_step).
+bool LoadPath::advance(double from, double target, int steps, const FactorsAt& factors,
+                       const ForceTarget& force) {
+  const double nominal = (target - from) / std::max(1, steps);
+  double lambda = from, step = nominal;
+  int cuts = 0, in_a_row = 0;
+  std::vector<double> failed_before;  // the residuals of the last attempt that failed
+  while (std::abs(target - lambda) > 1e-14 * std::max(1.0, std::abs(target))) {
+    const double next = std::abs(target - lambda) < std::abs(step) * (1 + 1e-12) ? target : lambda + step;
+    StepAttempt attempt = attempt_step(next, factors, force);
+    const solve::SolveReport& rep = attempt.report;
+    if (rep.ok()) {
+      lambda = next;
+      accept_step(std::move(attempt));
+      if (++in_a_row >= 2 && cuts > 0) {
+        --cuts;
+        step *= 2;
+        in_a_row = 0;
+      }
+      continue;
+    }
+    in_a_row = 0;
+    const std::string factors_now = attempt.factors.describe();
+    if (rep.status == solve::SolveStatus::stopped) {  // asked to stop: no cuts, keep what converged
+      sol_.message = "load step " + std::to_string(sol_.load_steps + 1) + " (" + factors_now + "): " + rep.message;
+      return false;
+    }
+    const std::string why = newton_failure_reason(rep, d_, pairs_, system_);
+    // A tangent made singular by a body that only contact holds (its constraints leave a
+    // rigid motion free) stays singular on a shorter step when nothing has converged yet (no
+    // contact holds it at all): no cuts then. After converged steps a singular tangent in
+    // mid-Newton is a near-mechanism of this step (every point slipping on the way to a
+    // shear near the friction's capacity, an active set that lost its last node): cut.
+    bool structural = false;
+    for (const Body& body : d_.bodies) structural = structural || !body.free_rigid_motions.empty();
+    const bool held_before = sol_.load_steps > 0;
+    // A shorter step that fails with the residuals of the longer one: what fails does not
+    // scale with the load (an interference of the input, a state the step starts from).
+    const bool unchanged = same_residuals(failed_before, rep.residual_history);
+    failed_before = rep.residual_history;
+    if (cuts == ss_.max_cuts || unchanged ||
+        (rep.status == solve::SolveStatus::singular && structural && !held_before)) {
+      const bool at_capacity = cuts == ss_.max_cuts && cuts > 0 && lambda != from;
+      sol_.message = failed_step_message({sol_.load_steps + 1, factors_now, cuts, ss_.max_cuts, why,
+                                          unchanged, at_capacity, converged_.describe(),
+                                          at_capacity ? system_.capacity_used() : std::string(),
+                                          rep.residual_history});
+      return false;
+    }
+    ++cuts;
+    step *= 0.5;
+    say("load step did not converge (" + why + "): cutting the step to " + std::to_string(step));
+  }
+  return true;
+}
+
+// A load step's Newton solve at the path parameter s, from the last converged state. With
+// `force`, force-controlled: the factor on the prescribed displacements is the unknown of the
+// bordered system whose target is share(s) × value (factors(s) then gives its first guess, and
+// the loads' factor unless they follow the unknown); the factors it reached are the attempt's.
+LoadPath::StepAttempt LoadPath::attempt_step(double s, const FactorsAt& factors,
+                                             const ForceTarget& force) {
+  StepAttempt a{x_, factors(s), {}};
+  system_.set_factors(a.factors.displacements, a.factors.loads);
+  if (force)
+    add_force_target(force->component, force->share(s) * force->value, force->scales_loads, a.x,
+                     a.factors.displacements.y());
+  newton_options_.reference_norm = system_.force_scale(a.x);
+  if (force)
+    newton_options_.reference_norm =
+        std::max(newton_options_.reference_norm, force->share(s) * force->value);
+  a.report = newton(a.x);
+  if (force) {
+    const double alpha = system_.displacement_factor(a.x);
+    a.factors = force->scales_loads ? Factors::proportional(alpha) : Factors{Vec2(alpha, alpha), a.factors.loads};
+    drop_force_target(a.x);
+    system_.set_factors(a.factors.displacements, a.factors.loads);
+  }
+  return a;
+}
+
+/// A converged load step: its state committed (friction's history) and recorded.
+void LoadPath::accept_step(StepAttempt attempt) {
+  x_ = std::move(attempt.x);
+  converged_ = attempt.factors;
+  system_.commit(x_);
+  record(converged_, attempt.report.iterations, 0.0);
+  ++sol_.load_steps;
+  std::ostringstream os;
+  os << "load step " << sol_.load_steps << ": " << converged_.describe() << ", "
+     << attempt.report.iterations << " Newton iterations, |R| "
+     << attempt.report.residual_history.front() << " -> " << attempt.report.residual_history.back();
+  say(os.str());
+}
+
+/// Prescribed displacements first (loads at 0), then the arc-length path of the loads.
+bool LoadPath::arc_length_path() {
+  if (d_.prescribed.cwiseAbs().maxCoeff() > 0 &&
+      !advance(0.0, 1.0, ss_.load_steps, [](double s) { return Factors{Vec2(s, s), 0}; }))
+    return false;
+  system_.set_factors(1, 0);
+  LoadsOnPath path(system_);
+  solve::ArcLengthOptions ao;
+  ao.steps = ss_.load_steps;
+  ao.max_iterations = ss_.max_iterations;
+  ao.tolerance = ss_.tolerance;
+  ao.linear_solver = solve::LinearSolverKind::lu;
+  ao.reference_norm = system_.load_vector().norm();
+  HPC_REQUIRE(ao.reference_norm > 0, InputError, ss_.where.str(),
+              ".control: arc-length scales the loads, and there are none");
+  double lf = 0;
+  Eigen::VectorXd xa = x_;
+  const auto rep = solve::arc_length(path, xa, lf, ao, [this](const Eigen::VectorXd& xs,
+                                                              const solve::ArcLengthStep& st) {
+    return accept_arc_length_step(xs, st);
+  });
+  sol_.newton_iterations += rep.iterations;
+  if (rep.reached) return true;
+  sol_.message = rep.message;
+  return false;
+}
+
+/// A converged arc-length step at the state x: committed and recorded; the path goes on.
+bool LoadPath::accept_arc_length_step(const Eigen::VectorXd& x, const solve::ArcLengthStep& st) {
+  x_ = x;
+  converged_ = {Vec2(1, 1), st.lambda};
+  system_.set_factors(1, st.lambda);
+  system_.commit(x_);
+  ++sol_.load_steps;
+  record(converged_, st.iterations, st.length);
+  std::ostringstream os;
+  os << "arc-length step " << sol_.load_steps << ": load factor " << st.lambda << ", "
+     << st.iterations << " iterations, length " << st.length;
+  say(os.str());
+  return true;
+}
+
+// The first guess of the factor that carries `share` of the target force in a
+// force-controlled load step: the last step's, scaled by the force it carried.
+double LoadPath::factor_for(double share) const {
+  const auto& tr = *ss_.target_resultant;
+  if (sol_.path.empty()) return first_ * share;
+  const auto& last = sol_.path.back();
+  const double carried = std::abs(last.resultant(tr.component));
+  return carried > 0 ? last.displacements * share * tr.value / carried : first_ * share;
+}
+
+// Force control with friction, where the path matters: load steps, each to its share of the
+// target force, the factor an unknown of each.
+bool LoadPath::force_controlled_steps() {
+  const auto& tr = *ss_.target_resultant;
+  auto guess = [&](double s) { return Factors::proportional(factor_for(s)); };
+  return advance(0.0, 1.0, ss_.load_steps, guess, ForceControl{tr.component, tr.value});
+}
+
+// Force control as one Newton system, the factor its unknown from the first guess on: whether it
+// converged (if not, the state it started from is back and the progress says why).
+bool LoadPath::force_control_at_once() {
+  const auto& tr = *ss_.target_resultant;
+  const Eigen::VectorXd x0 = x_;
+  system_.set_factors(first_, first_);
+  add_force_target(tr.component, tr.value, true, x_, first_);
+  newton_options_.reference_norm = std::max(system_.force_scale(x_), tr.value);
+  const auto rep = newton(x_);
+  const double alpha = system_.displacement_factor(x_);
+  drop_force_target(x_);
+  if (!rep.ok()) {
+    first_attempt_ = "force control as one Newton system did not converge (" + rep.message + ")";
+    say("force control as one Newton system did not converge (" +
+        newton_failure_reason(rep, d_, pairs_, system_) +
+        "): load steps and the secant on the factor instead");
+    x_ = x0;
+    return false;
+  }
+  system_.set_factors(alpha, alpha);
+  converged_ = Factors::proportional(alpha);
+  record(converged_, rep.iterations, 0.0);
+  ++sol_.load_steps;
+  std::ostringstream os;
+  os << "load step " << sol_.load_steps << ": factor " << alpha << " (force control), "
+     << rep.iterations << " Newton iterations, |R| " << rep.residual_history.front() << " -> "
+     << rep.residual_history.back();
+  say(os.str());
+  return true;
+}
+
+// The stages one after the other, each from the end of the one before. Under force control (an
+// exactly enforced first pair) a stage's `displacements` is the share of the target force it
+// reaches (the factor is the unknown) while its loads go linearly — e.g. press to the force,
+// then shear at that force held.
+bool LoadPath::staged_path() {
+  const bool staged_force = !ss_.stages.empty() && ss_.target_resultant;
+  HPC_REQUIRE(!staged_force || (!pairs_.empty() && pairs_.front().constraints), InputError, ss_.where.str(),
+              ".target_resultant with stages needs the first contact pair enforced exactly "
+              "(enforcement: augmented-lagrangian): the factor on the prescribed displacements is "
+              "then an unknown of every load step");
+  Factors stage_start;
+  for (const auto& stage : ss_.stages) {
+    const Factors end{Vec2(stage.displacements_x(), stage.displacements_y()), stage.loads};
+    auto along = [&](double s) {
+      Factors f{stage_start.displacements + s * (end.displacements - stage_start.displacements),
+                stage_start.loads + s * (end.loads - stage_start.loads)};
+      if (staged_force) f.displacements.setConstant(factor_for(f.displacements.y()));  // a share
+      return f;
+    };
+    const int steps = stage.steps > 0 ? stage.steps : ss_.load_steps;
+    const ForceTarget force =
+        staged_force ? ForceTarget(ForceControl{ss_.target_resultant->component, ss_.target_resultant->value,
+                                                stage_start.displacements.y(), end.displacements.y(), false})
+                     : std::nullopt;
+    if (!advance(0.0, 1.0, steps, along, force)) return false;
+    stage_start = end;
+  }
+  return true;
+}
+
+// Force control by the secant on the factor over complete load-controlled solves, each from the
+// last one's state, until the first pair's resultant is the target's to its tolerance.
+bool LoadPath::secant_on_factor() {
+  const auto& tr = *ss_.target_resultant;
+  HPC_REQUIRE(!pairs_.empty(), InputError, ss_.where.str(),
+              ".target_resultant: needs a contact pair to measure the resultant");
+  // The resultant of the last converged step, as record() took it for the load path.
+  auto measured = [&]() { return std::abs(sol_.path.back().resultant(tr.component)); };
+  double lambda = first_;
+  double l0 = lambda, f0 = measured() - tr.value;
+  if (!(f0 + tr.value > 0)) {
+    const auto multipliers = system_.multipliers(x_);
+    throw InputError(no_force_to_scale(ss_, d_, pairs_.front(), system_.solution(x_),
+                                       multipliers[0].size() ? &multipliers[0] : nullptr, l0,
+                                       sol_.path.back().resultant));
+  }
+  double l1 = l0 * tr.value / (f0 + tr.value);
+  for (int it = 0; it < 50; ++it) {
+    if (!advance_to(lambda, l1)) return false;
+    lambda = l1;
+    const double f1 = measured() - tr.value;
+    std::ostringstream os;
+    os << "force control: factor " << l1 << ", resultant " << f1 + tr.value << " (target "
+       << tr.value << ")";
+    say(os.str());
+    if (std::abs(f1) <= tr.tolerance * tr.value) break;
+    const double l2 = secant_factor(l0, f0, l1, f1, tr.value);
+    l0 = l1;
+    f0 = f1;
+    l1 = l2;
+    if (it == 49) {
+      sol_.message = "force control did not reach the target resultant in 50 secant iterations";
+      return false;
+    }
+  }
+  return true;
+}
+
+// The solution at the last converged state (converged or not), with its contact results.
+NonlinearSolution LoadPath::result(bool converged) {
+  if (!converged && !first_attempt_.empty()) sol_.message = first_attempt_ + "; then " + sol_.message;
+  drop_force_target(x_);
+  system_.set_factors(converged_.displacements, converged_.loads);
+  sol_.u = system_.solution(x_);
+  sol_.load_factor = converged_.displacements.y();
+  sol_.displacement_factors = converged_.displacements;
+  sol_.loads_factor = converged_.loads;
+  sol_.converged = converged;
+  sol_.multipliers = system_.multipliers(x_);
+  // x_ is the state committed last: its step's slips and the path's were measured then
+  const auto& slips = system_.step_slips();
+  const auto& totals = system_.total_slips();
+  for (size_t k = 0; k < pairs_.size(); ++k)
+    sol_.contact.push_back(evaluate_contact(d_, pairs_[k], sol_.u, sol_.multipliers_of(k),
+                                            slips[k].size() ? &slips[k] : nullptr,
+                                            totals[k].size() ? &totals[k] : nullptr));
+  sol_.pairs = std::move(pairs_);
+  return std::move(sol_);
+}
+
+}  // namespace
+
+NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d,
+                                const ProgressFn& progress, const StartState& start,
+                                const StepFn& on_step) {
+  LoadPath path(spec, d, progress, start, on_step);
+  return path.solve();
+}
 namespace {
 
 /// With friction, the pairs with the histories the last load step started from: what its Newton
