@@ -908,8 +908,8 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
     // output), so it is held to the same bounds, with its defaults.
     const std::string effective =
         ": the effective input (input.yaml, the problem with its defaults filled in) ";
-    if (const std::size_t values = count_yaml_values(root); values > kMaxYamlValues)
-      throw InputError(file_label + effective + "has " + std::to_string(values) +
+    if (const std::size_t effective_values = count_yaml_values(root); effective_values > kMaxYamlValues)
+      throw InputError(file_label + effective + "has " + std::to_string(effective_values) +
                        " YAML values, more than the " + std::to_string(kMaxYamlValues) +
                        " a problem file may have, so it could not be read back: give fewer "
                        "elements");
