@@ -118,6 +118,33 @@ def element_section(runs):
     return out
 
 
+def hex_element_section(runs):
+    rows = []
+    for p in range(1, 9):
+        for space, name in ((0, "tensor"), (1, "trunk")):
+            b = central(runs, f"BM_HexElementStiffness/{p}/{space}")
+            if b:
+                rows.append((p, name, space, b))
+    if not rows:
+        return []
+    out = ["## 3D: hexahedron stiffness against p", "",
+           "One distorted trilinear hexahedron (bench/bench_hex_element.cpp): its values at the",
+           "(p + 1)³ Gauss points and the 3n × 3n stiffness from the six products M_kl = G_k G_lᵀ",
+           "(fem/hex_elasticity.hpp), not a per-point Bᵀ D B. One thread. No sum factorisation yet.", "",
+           "| p | space | modes | matrix size | Gauss points | time | spread |",
+           "|---:|---|---:|---:|---:|---:|---:|"]
+    for p, name, space, b in rows:
+        modes, points = int(b["modes"]), int(b["gauss_points"])
+        out.append(f"| {p} | {name} | {modes} | {3 * modes} | {points} | {fmt_time(b['real_time'])} | "
+                   f"{spread(runs, f'BM_HexElementStiffness/{p}/{space}')} |")
+    t4, t8 = central(runs, "BM_HexElementStiffness/4/0"), central(runs, "BM_HexElementStiffness/8/0")
+    if t4 and t8:
+        slope = math.log(t8["real_time"] / t4["real_time"]) / math.log(2.0)
+        out += ["", f"Tensor space, p = 4 to 8: the time grows like p^{slope:.1f} (modes² × Gauss "
+                    "points like p^9; sum factorisation would make it p^7)."]
+    return out
+
+
 def solve_section(runs):
     out = ["## Whole problems", "",
            "The Hertz quarter circle 2×2 (4 elements, 2 of them curved, prescribed displacement, no",
@@ -438,7 +465,7 @@ def main(results_path, output_path, reference_blas_path=None):
             width=95),
         "",
     ]
-    lines += element_section(runs) + [""] + solve_section(runs) + [""] + blas_section(runs, reference_blas_path)
+    lines += element_section(runs) + [""] + hex_element_section(runs) + [""] + solve_section(runs) + [""] + blas_section(runs, reference_blas_path)
     lines += enforcement_section(runs) + [""] + contact_section(runs) + [""] + adapt_section(runs) + [""] + nonlinear_section(runs) + [""]
     lines += kept_sections(output_path)
     with open(output_path, "w", encoding="utf-8") as f:
