@@ -59,7 +59,26 @@ HexMap HexMap::triquadratic(const std::array<Vec3, 27>& nodes) {
   return m;
 }
 
+HexMap HexMap::blending(const geometry::BlendingHex& geometry) {
+  HexMap m;
+  m.kind_ = HexMapKind::blending;
+  m.nodes_.assign(geometry.vertices.begin(), geometry.vertices.end());
+  for (const auto& x : basis::kHexVertexCoordinates) m.reference_.push_back({x[0], x[1], x[2]});
+  m.blend_ = geometry;
+  return m;
+}
+
+int HexMap::polynomial_degree() const {
+  switch (kind_) {
+    case HexMapKind::trilinear: return 1;
+    case HexMapKind::triquadratic: return 2;
+    case HexMapKind::blending: return kBlendingQuadratureDegree;
+  }
+  return 2;
+}
+
 Vec3 HexMap::map(double xi, double eta, double zeta, Mat3* J) const {
+  if (kind_ == HexMapKind::blending) return blend_.map(xi, eta, zeta, J);
   // x = sum_n x_n L_n(xi) L_n(eta) L_n(zeta), J's columns the three partial derivatives.
   const int q = polynomial_degree();
   Vec3 x = Vec3::Zero();
@@ -99,7 +118,8 @@ void check_hex_jacobian(const HexMap& map, std::string_view context, int element
       for (double zeta : rule.points) add(xi, eta, zeta);
   for (const auto& c : basis::kHexVertexCoordinates) add(c[0], c[1], c[2]);
   // Unlike the 2D check (element_map.cpp), a vanishing det J at a corner is refused too: a
-  // polynomial map has no smooth 180° corners, only collapsed edges and faces.
+  // polynomial map has no smooth 180° corners, only collapsed edges and faces (a blending map could
+  // have one where two faces on one surface meet; such a hexahedron is refused as degenerate).
   for (const Point& p : points)
     HPC_REQUIRE(p.det > 1e-12 * scale && std::isfinite(p.det), MeshError, context, ": element ",
                 element, " has a ", p.det >= 0 ? "vanishing" : "negative",

@@ -7,6 +7,8 @@
 
 #include <Eigen/Dense>
 
+#include "hpcontact/geometry/blending_hex.hpp"
+
 namespace hpcontact::mesh {
 
 using Vec3 = Eigen::Vector3d;
@@ -21,25 +23,27 @@ using Mat3 = Eigen::Matrix3d;
 ///   26      the centre.
 extern const int kHex27Nodes[27][3];
 
-/// Which kind of map a HexMap is. A blending (Gordon–Hall transfinite) map from exact faces and
-/// edges is meant to join as a third kind: it would carry its faces' geometry beside the nodes
-/// and answer map() and polynomial_degree() (the latter a quadrature policy, as a blending map is
-/// not a polynomial) through the same interface.
-enum class HexMapKind { trilinear, triquadratic };
+/// Which kind of map a HexMap is: Lagrange interpolation of nodes, or the blending (Gordon–Hall
+/// transfinite) map of exact faces and edges (geometry/blending_hex.hpp).
+enum class HexMapKind { trilinear, triquadratic, blending };
 
 /// Geometry of one hexahedron: Lagrange interpolation of its nodes, trilinear (8 vertices) or
-/// triquadratic (27 nodes in Gmsh's order, kHex27Nodes). A value type, one per element.
+/// triquadratic (27 nodes in Gmsh's order, kHex27Nodes), or the blending map of its vertices
+/// and the exact surfaces of its faces. A value type, one per element.
 class HexMap {
  public:
   /// The trilinear map of the 8 vertices (order of basis/hex_modes.hpp).
   static HexMap trilinear(const std::array<Vec3, 8>& vertices);
   /// The triquadratic map of a HEX27's nodes in Gmsh's order (kHex27Nodes).
   static HexMap triquadratic(const std::array<Vec3, 27>& nodes);
+  /// The blending map of an exact hexahedron (geometry::blending_hex builds and checks one).
+  static HexMap blending(const geometry::BlendingHex& geometry);
 
   HexMapKind kind() const { return kind_; }
-  /// Degree of x(xi) in each reference coordinate: 1 (trilinear) or 2 (triquadratic).
-  int polynomial_degree() const { return kind_ == HexMapKind::trilinear ? 1 : 2; }
-  /// The nodes, in the order they were given.
+  /// Degree of x(xi) in each reference coordinate: 1 (trilinear) or 2 (triquadratic); for a
+  /// blending map, which is not a polynomial, a quadrature policy: kBlendingQuadratureDegree.
+  int polynomial_degree() const;
+  /// The nodes, in the order they were given (a blending map's: its 8 vertices).
   const std::vector<Vec3>& nodes() const { return nodes_; }
 
   /// x(xi, eta, zeta); if J is given, J = [dx/dxi, dx/deta, dx/dzeta] (columns).
@@ -49,7 +53,14 @@ class HexMap {
   HexMapKind kind_ = HexMapKind::trilinear;
   std::vector<Vec3> nodes_;
   std::vector<std::array<int, 3>> reference_;  ///< each node's reference position in {-1, 0, 1}^3
+  geometry::BlendingHex blend_;                 ///< the geometry of a blending map
 };
+
+/// The degree a blending map counts as in quadrature rules (points p + 3 per direction for the
+/// stiffness, hex_gauss_points): its rational geometry terms are smooth and resolved by three
+/// extra points to well below the discretisation error for p = 1..8 (measured on the thick
+/// sphere, tests/verification/test_hex_sphere.cpp: p + 3 and p + 6 points agree in the energy).
+inline constexpr int kBlendingQuadratureDegree = 3;
 
 /// Checks det J > 0 at an n × n × n Gauss grid and at the 8 corners (beyond round-off: 1e-12 of
 /// the map's scale (|J|_F / √3)³); throws MeshError naming `context`, the element and the
