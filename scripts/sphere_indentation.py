@@ -39,6 +39,9 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from flat_punch_mesh import Mesh  # noqa: E402  (nodes by position, quads counter-clockwise)
+
 
 # ---------------------------------------------------------------------------------------------
 # The closed forms
@@ -166,23 +169,6 @@ def radial_traction_lift(X, x, traction, a, R, E, nu):
 
 # ---------------------------------------------------------------------------------------------
 # The problem file
-
-
-class Mesh:
-    def __init__(self):
-        self.nodes, self.elements = {}, []
-
-    def node(self, x, y):
-        key = (round(x, 12), round(y, 12))
-        if key not in self.nodes:
-            self.nodes[key] = len(self.nodes) + 1
-        return self.nodes[key]
-
-    def quad(self, *points):
-        """An element through the points in either order: stored counter-clockwise."""
-        area = sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(points, points[1:] + points[:1]))
-        ids = [self.node(*p) for p in points]
-        self.elements.append(ids if area > 0 else ids[::-1])
 
 
 def build_mesh(box, cells, size, ratio):
