@@ -935,6 +935,17 @@ MUTATIONS = [
              "a body touching its partner at one point starts with no active node: held by friction alone, its tangent is singular",
              ["cli:tests/cli/test_roller_block_friction.py::test_pressed_and_sheared_from_a_one_point_touch",
               "cli:tests/cli/test_mirror_friction.py::test_touching_at_one_point_friction_holds_the_body_from_the_start"]),
+    Mutation("hex-face-flip-ignored", "basis", S + "basis/hex_modes.cpp",
+             "        const bool negative = (o.flip1 && i % 2 == 1) != (o.flip2 && j % 2 == 1);",
+             "        const bool negative = (o.flip1 && i % 2 == 1);",
+             "a face whose second global axis runs against the element's keeps its odd modes: the trace jumps across the face",
+             ["HexConformity.TwoElementsAgreeOnTheirFaceInEveryOrientation"]),
+    Mutation("hex-shear-transpose-dropped", "fem", S + "fem/hex_elasticity.cpp",
+             "      K.block(i * n, j * n, n, n) = lambda * M[i][j] + mu * M[i][j].transpose();",
+             "      K.block(i * n, j * n, n, n) = lambda * M[i][j];",
+             "the hexahedron's stiffness loses the μ ∇vᵀ:∇u coupling of different components (the patch test cannot see a wrong law: any constant stress balances)",
+             ["HexStiffness.BlockKernelIsBtDB"]),
+]
 ]
 
 
