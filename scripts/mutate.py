@@ -946,7 +946,6 @@ MUTATIONS = [
              "the hexahedron's stiffness loses the μ ∇vᵀ:∇u coupling of different components (the patch test cannot see a wrong law: any constant stress balances)",
              ["HexStiffness.BlockKernelIsBtDB"]),
 ]
-]
 
 
 
