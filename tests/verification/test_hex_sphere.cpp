@@ -138,7 +138,7 @@ OctantSolution solve_octant(int p, bool fine_energy = false) {
 /// energy at p = 8) and the 2D axisymmetric hemisphere of examples/lame/thick-sphere.yaml
 /// (a = 10, b = 20, p_i = 100, E = 200000, ν = 0.3; p = 8, times 2), scaled by U ∝ p_i² a³ / E to
 /// this file's sphere, have the same energy to the discretisation error of both (each within
-/// 1.6e-9 of Lamé's; they differ by 2.2e-11 measured): |U_3D − U_2D| <= (U − U_3D) + (U − U_2D).
+/// 1.5e-9 of Lamé's; they differ by 1.7e-15 of U measured): |U_3D − U_2D| <= (U − U_3D) + (U − U_2D).
 void expect_axisymmetric_model_agrees(double octants) {
   const double exact = 8 * lame().strain_energy(pi / 2);
   const auto spec = io::read_problem(std::string(HPC_SOURCE_DIR) + "/examples/lame/thick-sphere.yaml");
@@ -161,10 +161,10 @@ void expect_axisymmetric_model_agrees(double octants) {
 // Π = U − W = −U over a subspace, so Π_FE >= Π_exact, i.e. U_FE <= U_exact, and
 // ||u − u_FE||²_E / ||u||²_E = (U_exact − U_FE) / U_exact. For p = 1..8 (3 elements, tensor
 // product): U_FE <= U_exact (to 1e-12 relative), the error squared decreases with every p, it is
-// <= 1e-8 at p = 8 (measured 1.57e-9; the energy-norm error 4.0e-5), and the least-squares slope
+// <= 1e-8 at p = 8 (measured 1.54e-9; the energy-norm error 3.9e-5), and the least-squares slope
 // of ln(error²) against p over p = 2..8 is <= −2.4 (measured −2.86, a factor 17.5 per degree in
 // the squared error, 4.2 in the energy-norm error); the inner surface moves by Lamé's u(a) radially,
-// to 2e-6 of u(a) at p = 8 (measured 8.4e-7) at p + 2 Gauss points per direction of each face.
+// to 2e-6 of u(a) at p = 8 (measured 7.2e-9; 8.4e-7 when the arcs were projected chords) at p + 2 Gauss points per direction of each face.
 // At p = 8 the whole sphere's energy is also the 2D axisymmetric model's, to the discretisation
 // error of both (expect_axisymmetric_model_agrees). About 9 s on this machine (p = 8 alone 6 s).
 TEST(HexSphere, EnergyConvergesExponentiallyFromBelow) {

@@ -45,19 +45,13 @@ FaceEdges face_edges(int f) {
           edge_between(v[0], v[3])};
 }
 
-/// E_e(t) and dE/dt: the chord's image under the edge's surface.
+/// E_e(t) and dE/dt: the chord, or the curve of the edge's surface between its ends.
 Vec3 edge_point(const BlendingHex& h, int e, double t, Vec3* dE) {
   const Vec3& A = h.vertices[kEdgeVertices[e][0]];
   const Vec3& B = h.vertices[kEdgeVertices[e][1]];
-  const Vec3 chord = 0.5 * (1 - t) * A + 0.5 * (1 + t) * B;
-  if (!h.edges[e]) {
-    if (dE) *dE = 0.5 * (B - A);
-    return chord;
-  }
-  Mat3 dQ;
-  const Vec3 x = h.edges[e]->onto(chord, dE ? &dQ : nullptr);
-  if (dE) *dE = dQ * (0.5 * (B - A));
-  return x;
+  if (h.edges[e]) return h.edges[e]->edge(A, B, t, dE);
+  if (dE) *dE = 0.5 * (B - A);
+  return 0.5 * (1 - t) * A + 0.5 * (1 + t) * B;
 }
 
 /// F_f(s, t) and its partial derivatives: the surface's image of the 2D blending of the edges.
@@ -158,7 +152,7 @@ BlendingHex blending_hex(const std::array<Vec3, 8>& vertices,
     for (int e : {k.bottom, k.right, k.top, k.left}) {
       HPC_REQUIRE(!h.edges[e] || h.edges[e] == faces[f], InputError, context, ": edge E", e,
                   " lies on two curved surfaces, ", h.edges[e]->describe(), " and ",
-                  faces[f]->describe(), ": the image of a chord cannot follow their intersection");
+                  faces[f]->describe(), ": neither surface's curve follows their intersection");
       h.edges[e] = faces[f];
     }
   }

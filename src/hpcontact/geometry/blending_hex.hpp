@@ -13,7 +13,9 @@ namespace hpcontact::geometry {
 /// e from kHexEdgeVertices[e][0] to [e][1] along the positive direction of its axis, face f
 /// with local axes (s, t) = kHexFaceAxes[f]).
 ///
-///   edge e:  E_e(t)    = Q_e((1 − t)/2 A + (1 + t)/2 B),   Q_e = edges[e]->onto, or the identity
+///   edge e:  E_e(t)    = edges[e]->edge(A, B, t) (surface.hpp: a sphere's great-circle arc and a
+///                        cylinder's circle, generator or helix, each uniform in angle), or the
+///                        chord (1 − t)/2 A + (1 + t)/2 B
 ///   face f:  F_f(s, t) = P_f(T_f(s, t)),                    P_f = faces[f]->onto, or the identity
 /// with T_f the 2D blending map of its four edges (seed eq. 2.76),
 ///   T_f = (1−t)/2 E_b(s) + (1+t)/2 E_t(s) + (1−s)/2 E_l(t) + (1+s)/2 E_r(t) − bilinear(corners),
@@ -25,7 +27,7 @@ namespace hpcontact::geometry {
 /// vertices share its image, and a face on a surface lies on it exactly.
 struct BlendingHex {
   std::array<Vec3, 8> vertices;
-  /// The surface each edge is mapped onto (a chord's image), or null for a straight edge.
+  /// The surface whose curve (Surface::edge) each edge follows, or null for a straight edge.
   std::array<SurfacePtr, 12> edges;
   /// The surface each face is mapped onto, or null: the face is then the transfinite
   /// interpolant of its edges (flat if they lie in one plane, a ruled-like patch otherwise).
@@ -39,7 +41,7 @@ struct BlendingHex {
 /// The blending hexahedron of 8 vertices and the surfaces of its faces (null: none). Each edge
 /// takes the curved (not flat()) surface of its two faces, and is straight when both are flat or
 /// null. Throws InputError naming `context`: an edge between two different curved surfaces (the
-/// edge's curve would be their intersection, which a chord's image cannot give); a vertex not on
+/// edge's curve would be their intersection, which neither surface's curve gives); a vertex not on
 /// the surface of one of its faces; an edge whose image leaves the surface of one of its faces
 /// (e.g. a sphere's arc against a plane not through its centre), checked at 5 points of each
 /// edge, to 1e-10 of the element's size.

@@ -4,9 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "hpcontact/core/error.hpp"
@@ -89,4 +91,45 @@ TEST(Surface, RefusesDegenerateInput) {
     EXPECT_NE(std::string(e.what()).find("sphere(centre=(1,0,0), R=1)"), std::string::npos)
         << e.what();
   }
+}
+
+// The curves of edges on a surface (Surface::edge) shall be uniform in angle: a circle of a
+// cylinder's normal plane is the 2D CircularArc's parametrisation c + R (cos θ, sin θ), θ linear
+// in t; a generator is the straight chord; a sphere's edge is the great-circle arc (slerp), and
+// each has the derivative its finite differences give (to 1e-8) and lies on its surface.
+TEST(Surface, EdgesAreUniformInAngle) {
+  const double R = 1.5, t0 = 0.2, t1 = 1.3, z = 0.7;
+  const Cylinder cylinder(Vec3(0, 0, -2), Vec3(0, 0, 3), R);
+  const Vec3 A(R * std::cos(t0), R * std::sin(t0), z), B(R * std::cos(t1), R * std::sin(t1), z);
+  for (double t : {-1.0, -0.6, 0.0, 0.35, 1.0}) {
+    const double th = t0 + 0.5 * (t + 1) * (t1 - t0);
+    EXPECT_LT((cylinder.edge(A, B, t) - Vec3(R * std::cos(th), R * std::sin(th), z)).norm(), 1e-15);
+    const Vec3 G = A + Vec3(0, 0, 2.5);  // a generator from A
+    EXPECT_LT((cylinder.edge(A, G, t) - (0.5 * (1 - t) * A + 0.5 * (1 + t) * G)).norm(), 1e-15);
+  }
+  const Sphere sphere(Vec3(0.3, -0.2, 1.1), 2.5);
+  const Vec3 P = sphere.onto(Vec3(2, 1, 0)), Q = sphere.onto(Vec3(-1, 2, 3));
+  const Vec3 p = (P - sphere.centre()).normalized(), q = (Q - sphere.centre()).normalized();
+  const double angle = std::acos(p.dot(q));
+  for (double t : {-1.0, -0.6, 0.0, 0.35, 1.0}) {
+    const Vec3 x = sphere.edge(P, Q, t);
+    const Vec3 n = (x - sphere.centre()).normalized();
+    EXPECT_NEAR((x - sphere.centre()).norm(), 2.5, 1e-14);
+    EXPECT_NEAR(std::acos(std::min(1.0, n.dot(p))), 0.5 * (t + 1) * angle, 1e-7);
+    EXPECT_NEAR(n.dot(p.cross(q)), 0, 1e-14);  // on the great circle through P and Q
+  }
+  const Cylinder tilted(Vec3(1, 2, 3), Vec3(1, 1, 0.5), 1.5);
+  const Vec3 C = tilted.onto(Vec3(3, 0, 1)), D = tilted.onto(Vec3(0, 4, 5));
+  const double h = 1e-6;
+  for (const auto& [s, a, b] : {std::tuple<const Surface*, Vec3, Vec3>{&sphere, P, Q},
+                                std::tuple<const Surface*, Vec3, Vec3>{&tilted, C, D},
+                                std::tuple<const Surface*, Vec3, Vec3>{&cylinder, A, B}})
+    for (double t : {-0.9, 0.1, 0.8}) {
+      Vec3 dE;
+      const Vec3 x = s->edge(a, b, t, &dE);
+      if (s != &cylinder) EXPECT_LT(std::abs(level(*s, x)), 1e-13);  // level(): the tilted one
+      const Vec3 fd = (s->edge(a, b, t + h) - s->edge(a, b, t - h)) / (2 * h);
+      EXPECT_LT((dE - fd).norm(), 1e-8 * (1 + dE.norm())) << s->describe() << " t = " << t;
+    }
+  EXPECT_THROW(sphere.edge(P, 2 * sphere.centre() - P, 0.0), InputError);
 }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <random>
 #include <string>
@@ -14,6 +15,7 @@
 #include "hpcontact/basis/hex_modes.hpp"
 #include "hpcontact/basis/quadrature.hpp"
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/geometry/blending.hpp"
 #include "hpcontact/mesh/hex_map.hpp"
 #include "hpcontact/mesh/shell_octant.hpp"
 
@@ -230,4 +232,48 @@ TEST(BlendingHex, RefusesInconsistentSurfaces) {
   EXPECT_NE(message({nullptr, nullptr, plane, nullptr, sphere, nullptr}).find(
                 "test hex: edge E0 leaves plane"),
             std::string::npos);
+}
+
+// A hexahedron extruded from a plane blending quadrilateral (an annulus sector with exact arcs
+// and straight radial edges; the cylinders on its curved faces, planes z = z0, z1 on the others)
+// shall have the 2D map in every section: x(xi, eta, zeta) = (X_2D(xi, eta), z(zeta)), to 1e-14,
+// and the Jacobian [J_2D 0; 0 (z1 − z0)/2]; its cylinder faces lie on the cylinders, uniform in
+// angle (the 2D CircularArc's parametrisation).
+TEST(BlendingHex, ExtrudedQuadHasThePlaneMapInEverySection) {
+  const double r0 = 1.0, r1 = 1.7, a0 = 0.3, a1 = 1.2, z0 = -0.4, z1 = 0.5;
+  auto polar = [](double r, double a) { return hpcontact::Vec2(r * std::cos(a), r * std::sin(a)); };
+  geometry::BlendingQuad q;
+  q.vertices = {polar(r0, a0), polar(r1, a0), polar(r1, a1), polar(r0, a1)};
+  q.edges = {nullptr, std::make_shared<geometry::CircularArc>(hpcontact::Vec2::Zero(), r1, a0, a1),
+             nullptr, std::make_shared<geometry::CircularArc>(hpcontact::Vec2::Zero(), r0, a0, a1)};
+  std::array<Vec3, 8> v;
+  for (int i = 0; i < 4; ++i) {
+    v[i] = Vec3(q.vertices[i].x(), q.vertices[i].y(), z0);
+    v[i + 4] = Vec3(q.vertices[i].x(), q.vertices[i].y(), z1);
+  }
+  const auto inner = std::make_shared<geometry::Cylinder>(Vec3::Zero(), Vec3::UnitZ(), r0);
+  const auto outer = std::make_shared<geometry::Cylinder>(Vec3(0, 0, 3), Vec3(0, 0, -2), r1);
+  const std::array<geometry::SurfacePtr, 6> faces{
+      inner, outer, nullptr, nullptr,
+      std::make_shared<geometry::Plane>(Vec3(0, 0, z0), Vec3::UnitZ()),
+      std::make_shared<geometry::Plane>(Vec3(0, 0, z1), Vec3(0, 0, -1))};
+  const auto h = geometry::blending_hex(v, faces, "extruded");
+  for (double xi : {-1.0, -0.77, 0.1, 0.6, 1.0})
+    for (double eta : {-1.0, -0.3, 0.45, 1.0})
+      for (double zeta : {-1.0, -0.2, 0.9, 1.0}) {
+        Mat3 J;
+        const Vec3 x = h.map(xi, eta, zeta, &J);
+        hpcontact::Mat2 J2;
+        const hpcontact::Vec2 x2 = q.map(xi, eta, &J2);
+        EXPECT_LT((x - Vec3(x2.x(), x2.y(), 0.5 * (1 - zeta) * z0 + 0.5 * (1 + zeta) * z1)).norm(),
+                  1e-14);
+        Mat3 expected = Mat3::Zero();
+        expected.topLeftCorner<2, 2>() = J2;
+        expected(2, 2) = 0.5 * (z1 - z0);
+        EXPECT_LT((J - expected).norm(), 1e-13);
+        if (xi == -1.0) {  // on the inner cylinder, at the angle a0 + (eta + 1)/2 (a1 − a0)
+          const double a = a0 + 0.5 * (eta + 1) * (a1 - a0);
+          EXPECT_LT((x.head<2>() - polar(r0, a)).norm(), 1e-15);
+        }
+      }
 }
