@@ -149,7 +149,7 @@ PointGap two_body_point_gap(const ContactPoint& cp, const Eigen::VectorXd& u_s,
       Dn(j) = foot.dN(k) * n_m(c);
       pg.dt(j) = -foot.N(k) * pg.tangent(c);
     }
-  if (!second && !two_sided) return pg;
+  if (!second) return pg;  // a residual needs g, dg and dt alone
   // The foot slides, δξ = H·δu / cc, and the tangent x_m' turns with it and with the other
   // body's modes: n_m·δx_m' = W·δu, δn_m = −x_m' (W·δu) / a.
   const double a = t.squaredNorm(), kappa = master.curvature(foot), cc = a - g_m * kappa;

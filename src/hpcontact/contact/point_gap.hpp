@@ -34,7 +34,7 @@ struct PointGap {
   /// The direction of the force a pressure puts on the dofs: ∂g/∂u, except with a mean normal
   /// (two_body_point_gap), where it is n̄ N on both bodies and the gradient is dg_row.
   Eigen::VectorXd dg;
-  Eigen::VectorXd dg_row;      ///< ∂g/∂u where it differs from dg (mean normal), else empty
+  Eigen::VectorXd dg_row;      ///< with `second`: ∂g/∂u where it differs from dg (mean normal), else empty
   /// τ·∂(x − x_foot)/∂u at dofs, the foot held as a material point of the obstacle: the
   /// tangential relative displacement of the point per unit dof (friction).
   Eigen::VectorXd dt;

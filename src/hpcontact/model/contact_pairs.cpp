@@ -95,12 +95,17 @@ void refuse_repeated_planes(const ProblemSpec& spec, const std::vector<ContactPa
     }
 }
 
+/// A body's contact edges as a boundary at the undeformed state.
+std::shared_ptr<contact::DeformableBoundary> undeformed_boundary(const Body& body, const std::vector<int>& edges) {
+  auto boundary = std::make_shared<contact::DeformableBoundary>(body.mesh, body.dofs, body.maps, edges);
+  boundary->set_displacement(Eigen::VectorXd::Zero(body.dofs.n_dofs()));
+  return boundary;
+}
+
 /// A body's contact edges, undeformed, as a surface (contact::surface_of).
 contact::SurfaceFramePtr undeformed_surface(const Body& body, const std::vector<int>& edges,
                                             const Vec2& origin) {
-  auto boundary = std::make_shared<contact::DeformableBoundary>(body.mesh, body.dofs, body.maps, edges);
-  boundary->set_displacement(Eigen::VectorXd::Zero(body.dofs.n_dofs()));
-  return contact::surface_of(boundary, origin);
+  return contact::surface_of(undeformed_boundary(body, edges), origin);
 }
 
 /// The common tangent of the linear theory, the line through reference_point along tangent:
@@ -125,9 +130,7 @@ Vec2 nearest_to_circle(const Body& body, const ContactPair& pair, const std::vec
   Vec2 nearest = candidates.front();
   for (const auto& X : candidates)
     if ((X - centre).norm() < (nearest - centre).norm()) nearest = X;
-  auto boundary = std::make_shared<contact::DeformableBoundary>(body.mesh, body.dofs, body.maps, pair.edges);
-  boundary->set_displacement(Eigen::VectorXd::Zero(body.dofs.n_dofs()));
-  if (contact::BoundaryPoint foot; boundary->project(centre, foot) &&
+  if (contact::BoundaryPoint foot; undeformed_boundary(body, pair.edges)->project(centre, foot) &&
                                    (foot.x - centre).norm() < (nearest - centre).norm())
     nearest = foot.x;
   return nearest;

@@ -162,8 +162,7 @@ void ContactSystem::activate_touching(Eigen::VectorXd& x) const {
     const ConstraintState s = evaluate_constraints(d_, pair, u, x.segment(o, c.size()), nullptr, nullptr,
                                                    false, {}, relief(k, displacement_factors(x).y()));
     for (int j = 0; j < c.size(); ++j)
-      if (s.found[j] && c.weight(j) > 0 &&
-          (std::abs(g(j)) <= touching || (initial_overlap_[k].size() > 0 && initial_overlap_[k](j) > 0)))
+      if (s.found[j] && c.weight(j) > 0 && g(j) <= touching)  // touching or overlapping
         x(o + j) = std::max(x(o + j), (1 + 1e-9) * c.scale(j) * std::max(0.0, s.G(j)) / c.weight(j));
   }
 }
