@@ -945,6 +945,11 @@ MUTATIONS = [
              "      K.block(i * n, j * n, n, n) = lambda * M[i][j];",
              "the hexahedron's stiffness loses the μ ∇vᵀ:∇u coupling of different components (the patch test cannot see a wrong law: any constant stress balances)",
              ["HexStiffness.BlockKernelIsBtDB"]),
+    Mutation("face-modes-incomplete", "fem", S + "fem/hex_dof_map.cpp",
+             "  for (int k = 0; k < n_face_modes(face); ++k) modes.push_back(face_first_mode(face) + k);",
+             "  for (int k = 0; k + 1 < n_face_modes(face); ++k) modes.push_back(face_first_mode(face) + k);",
+             "a condition on a hexahedron's face leaves its last face mode free",
+             ["HexDofMap.ModesOnAFaceAreThoseNonZeroOnIt"]),
 ]
 
 

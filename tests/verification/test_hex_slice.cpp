@@ -101,19 +101,10 @@ double plane_strain_energy(int p) {
   return post::strain_energy(d, sol.u);
 }
 
-/// Dofs of component `component` of every mode on the boundary face (h, lf).
+/// Dofs of component `component` of every mode on the boundary face (element h, local face lf).
 void add_face_dofs(const mesh::HexTopology& t, const fem::HexDofMap& dofs, int h, int lf,
                    int component, std::set<int>& fixed) {
-  const int face = t.hex_face(h, lf);
-  const auto& corners = t.face(face).vertices;
-  std::set<int> modes;
-  for (int c = 0; c < 4; ++c) {
-    modes.insert(dofs.vertex_mode(corners[c]));
-    const int e = t.find_edge(corners[c], corners[(c + 1) % 4]);
-    for (int k = 2; k <= dofs.edge_degree(e); ++k) modes.insert(dofs.edge_mode(e, k));
-  }
-  for (int k = 0; k < dofs.n_face_modes(face); ++k) modes.insert(dofs.face_first_mode(face) + k);
-  for (int m : modes) fixed.insert(3 * m + component);
+  for (int m : dofs.modes_on_face(t, t.hex_face(h, lf))) fixed.insert(3 * m + component);
 }
 
 struct SliceSolution {

@@ -100,4 +100,16 @@ HexDofMap::HexDofMap(const mesh::HexTopology& topology, const HexSpaceOptions& o
   }
 }
 
+std::vector<int> HexDofMap::modes_on_face(const mesh::HexTopology& topology, int face) const {
+  const auto& corners = topology.face(face).vertices;
+  std::vector<int> modes;
+  for (int c = 0; c < 4; ++c) {
+    modes.push_back(vertex_mode(corners[c]));
+    const int e = topology.find_edge(corners[c], corners[(c + 1) % 4]);
+    for (int k = 2; k <= edge_degree(e); ++k) modes.push_back(edge_mode(e, k));
+  }
+  for (int k = 0; k < n_face_modes(face); ++k) modes.push_back(face_first_mode(face) + k);
+  return modes;
+}
+
 }  // namespace hpcontact::fem

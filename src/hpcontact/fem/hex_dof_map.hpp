@@ -55,6 +55,9 @@ class HexDofMap {
   /// The face's modes are face_first_mode .. face_first_mode + n_face_modes - 1 in the order above.
   int face_first_mode(int face) const { return face_first_mode_[face]; }
   int n_face_modes(int face) const;
+  /// Every mode that is non-zero on a face of `topology` (the map's own): its four vertex modes,
+  /// the modes of its four edges, its face modes — what a condition on the face constrains.
+  std::vector<int> modes_on_face(const mesh::HexTopology& topology, int face) const;
 
  private:
   basis::Space space_ = basis::Space::tensor_product;

@@ -235,3 +235,32 @@ TEST(HexDofMap, BadDegreesAreRejected) {
         << e.what();
   }
 }
+
+// modes_on_face is what a condition on a face constrains: on the shuffled 2×2×2 block (tensor
+// p = 3, trunk p = 5), for every element and local face, the modes non-zero at a point inside
+// the face (the element's own basis evaluated there) are exactly modes_on_face of its global
+// face: (p + 1)² of them for the tensor space, none internal.
+TEST(HexDofMap, ModesOnAFaceAreThoseNonZeroOnIt) {
+  for (const auto& [p, space] : {std::pair{3, basis::Space::tensor_product}, std::pair{5, basis::Space::trunk}}) {
+    const mesh::HexTopology t(shuffled_block(3), 27);
+    const fem::HexDofMap d(t, uniform(p, t.n_hexes(), space));
+    for (int h = 0; h < t.n_hexes(); ++h) {
+      const auto& es = d.element(h);
+      std::vector<double> N(es.n_modes());
+      for (int lf = 0; lf < 6; ++lf) {
+        const auto on_face = d.modes_on_face(t, t.hex_face(h, lf));
+        const std::set<int> expected(on_face.begin(), on_face.end());
+        ASSERT_EQ(expected.size(), on_face.size()) << "a mode listed twice";
+        if (space == basis::Space::tensor_product) EXPECT_EQ(static_cast<int>(on_face.size()), (p + 1) * (p + 1));
+        std::array<double, 3> xi{0.31, -0.47, 0.23};
+        xi[basis::kHexFaceNormalAxis[lf]] = lf % 2 == 0 ? -1.0 : 1.0;
+        es.hierarchic.evaluate(xi[0], xi[1], xi[2], N.data(), nullptr, nullptr, nullptr);
+        std::set<int> nonzero;
+        for (int a = 0; a < es.n_modes(); ++a)
+          if (std::abs(N[a]) > 1e-12) nonzero.insert(es.modes[a]);
+        EXPECT_EQ(nonzero, expected) << "element " << h << " face " << lf << " p " << p;
+        for (int m : on_face) EXPECT_LT(m, d.n_external_modes());
+      }
+    }
+  }
+}
