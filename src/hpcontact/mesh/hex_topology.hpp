@@ -44,6 +44,7 @@ class HexTopology {
   /// by more than two elements or by two whose corners go round it in different orders.
   HexTopology(std::vector<std::array<int, 8>> hexes, int n_nodes,
               std::string context = "hexahedral mesh");
+  HexTopology() = default;  ///< no elements
 
   int n_nodes() const { return n_nodes_; }
   int n_hexes() const { return static_cast<int>(hexes_.size()); }

@@ -6,12 +6,10 @@
 #include <vector>
 
 #include "hpcontact/mesh/hex_map.hpp"
+#include "hpcontact/mesh/hex_mesh.hpp"
 #include "hpcontact/mesh/hex_topology.hpp"
 
 namespace hpcontact::mesh {
-
-/// A local face of an element: (element, local face 0..5).
-using ElementFace = std::pair<int, int>;
 
 /// The octant x, y, z >= 0 of the shell a <= |x| <= b (centre at the origin) in 3 n_layers
 /// blending hexahedra: the octant of the sphere is cut into three curvilinear quadrilaterals (the
