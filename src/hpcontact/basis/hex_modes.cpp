@@ -101,6 +101,13 @@ std::vector<std::array<int, 3>> HierarchicHex::mode_indices() const {
   return ijk;
 }
 
+std::vector<double> HierarchicHex::mode_signs() const {
+  std::vector<double> signs;
+  signs.reserve(n_modes());
+  each_mode(*this, [&](const std::array<int, 3>&, double sign) { signs.push_back(sign); });
+  return signs;
+}
+
 void HierarchicHex::evaluate(double xi, double eta, double zeta, double* N, double* dN_dxi,
                              double* dN_deta, double* dN_dzeta) const {
   // Always checked, as for the quad: a degree out of range would read 1D values that were never

@@ -119,6 +119,9 @@ struct HierarchicHex {
 
   /// Per mode, in mode order, the indices (i, j, k) of its 1D factors a_i(xi) b_j(eta) c_k(zeta).
   std::vector<std::array<int, 3>> mode_indices() const;
+  /// Per mode, in mode order, its sign (±1): the mode is sign · a_i(xi) b_j(eta) c_k(zeta) with
+  /// (i, j, k) from mode_indices() (−1 for odd modes of a reversed edge or face axis).
+  std::vector<double> mode_signs() const;
   /// Values and reference gradients of all modes at (xi, eta, zeta); each array has n_modes()
   /// entries. The gradient arrays may be null. Throws std::logic_error for degrees out of range.
   void evaluate(double xi, double eta, double zeta, double* N, double* dN_dxi, double* dN_deta,
