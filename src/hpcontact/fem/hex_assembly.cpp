@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "hpcontact/core/error.hpp"
-#include "hpcontact/fem/hex_elasticity.hpp"
+#include "hpcontact/fem/hex_element.hpp"
 #include "hpcontact/fem/hex_values.hpp"
 
 namespace hpcontact::fem {
@@ -23,9 +23,8 @@ HexSystem assemble_hex_elasticity(const HexBody& body, const HexAssemblyOptions&
     const std::array<int, 3> n_points = hex_gauss_points(space.hierarchic, body.maps[h]);
     mesh::check_hex_jacobian(body.maps[h], body.context, h,
                              std::max({n_points[0], n_points[1], n_points[2]}));
-    const HexValues values = hex_values(space.hierarchic, body.maps[h], n_points);
-    Eigen::MatrixXd K = hex_stiffness(values, body.material);
-    Eigen::VectorXd f = hex_body_force(values, body.body_force);
+    auto [K, f] = hex_element_matrices(space.hierarchic, body.maps[h], body.material,
+                                       body.body_force, options.kernel);
     const int n = space.n_modes();
     // Global dof of each local dof (component-blocked) of the matrix assembled.
     std::vector<int> global;

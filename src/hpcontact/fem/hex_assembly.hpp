@@ -9,6 +9,7 @@
 
 #include "hpcontact/fem/condensation.hpp"
 #include "hpcontact/fem/hex_dof_map.hpp"
+#include "hpcontact/fem/hex_element.hpp"
 #include "hpcontact/material/linear_elastic.hpp"
 #include "hpcontact/mesh/hex_map.hpp"
 
@@ -28,6 +29,8 @@ struct HexAssemblyOptions {
   /// is then over the external dofs only, 0 .. 3 * n_external_modes - 1 (internal modes are
   /// numbered last, hex_dof_map.hpp), and HexSystem::recover gives the internal ones.
   bool condense_internal = false;
+  /// The element stiffness kernel (hex_element.hpp): by default the cheaper one per element.
+  HexStiffnessKernel kernel = HexStiffnessKernel::automatic;
 };
 
 /// K u = f over the global dofs 3 * mode + component (all of them, or the external ones).

@@ -1,7 +1,8 @@
 // Hexahedron stiffness by derivative-pair blocks: six dense products G_k G_lᵀ, G_k = ∇_k N
 // sqrt(w det J), replace the per-point Bᵀ D B (whose B is 6 × 3n and D a 6 × 6 matrix mostly of
 // zeros). Both are O(p⁹) for a full element matrix; the blocks run at the speed of a GEMM.
-// Sum factorisation (Gauss points and modes as tensor products) would bring the matrix to O(p⁷).
+// Sum factorisation (hex_factored_stiffness.hpp) brings the matrix to O(p⁷); this kernel is its
+// reference, and the faster one at low degree and in the trunk space (hex_element.hpp).
 #include "hpcontact/fem/hex_elasticity.hpp"
 
 #include "hpcontact/fem/point_blocks.hpp"
