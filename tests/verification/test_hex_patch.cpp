@@ -17,6 +17,7 @@
 #include "hpcontact/fem/hex_elasticity.hpp"
 #include "hpcontact/fem/hex_values.hpp"
 #include "hpcontact/mesh/hex_topology.hpp"
+#include "hpcontact/solve/fixed_dofs.hpp"
 
 using namespace hpcontact;
 using mesh::Vec3;
@@ -188,7 +189,7 @@ PatchErrors patch_test(const HexMesh& m, int p, basis::Space space, bool condens
   const std::vector<int> fixed = boundary_dofs(m.topology, dofs);
   Eigen::MatrixXd values(fixed.size(), states.size());
   for (size_t r = 0; r < fixed.size(); ++r) values.row(r) = exact.coefficients.row(fixed[r]);
-  const Eigen::MatrixXd u_solved = fem::solve_with_fixed_dofs(system.K, system.f, fixed, values);
+  const Eigen::MatrixXd u_solved = solve::solve_with_fixed_dofs(system.K, system.f, fixed, values);
 
   PatchErrors errors;
   errors.projection = std::max(exact.disagreement, exact.misfit);

@@ -32,6 +32,7 @@
 #include "hpcontact/model/discretization.hpp"
 #include "hpcontact/model/linear_solve.hpp"
 #include "hpcontact/post/fields.hpp"
+#include "hpcontact/solve/fixed_dofs.hpp"
 
 using namespace hpcontact;
 using mesh::Vec3;
@@ -176,8 +177,8 @@ SliceSolution solve_slice(int p, int p_z) {
     for (int lf : {4, 5}) add_face_dofs(topology, dofs, h, lf, 2, fixed_set);
   const std::vector<int> fixed(fixed_set.begin(), fixed_set.end());
   const Eigen::VectorXd u =
-      fem::solve_with_fixed_dofs(system.K, system.f, fixed,
-                                 Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(fixed.size()), 1))
+      solve::solve_with_fixed_dofs(system.K, system.f, fixed,
+                                   Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(fixed.size()), 1))
           .col(0);
   SliceSolution out;
   out.energy = 0.5 * system.f.dot(u) / kThickness;

@@ -22,6 +22,7 @@
 #include "hpcontact/fem/hex_face_load.hpp"
 #include "hpcontact/fem/hex_values.hpp"
 #include "hpcontact/mesh/shell_octant.hpp"
+#include "hpcontact/solve/fixed_dofs.hpp"
 
 using namespace hpcontact;
 using mesh::Vec3;
@@ -84,8 +85,8 @@ OctantSolution solve_octant(int p, bool fine_energy = false) {
     for (const auto& [h, lf] : m.symmetry[i]) add_face_dofs(m.topology, dofs, h, lf, i, fixed_set);
   const std::vector<int> fixed(fixed_set.begin(), fixed_set.end());
   const Eigen::VectorXd u =
-      fem::solve_with_fixed_dofs(system.K, system.f, fixed,
-                                 Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(fixed.size()), 1))
+      solve::solve_with_fixed_dofs(system.K, system.f, fixed,
+                                   Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(fixed.size()), 1))
           .col(0);
   OctantSolution out;
   out.n_dofs = dofs.n_dofs();

@@ -1,8 +1,7 @@
-// Assembly of hexahedra element by element into triplets; Dirichlet dofs by elimination.
+// Assembly of hexahedra element by element into triplets.
 #include "hpcontact/fem/hex_assembly.hpp"
 
 #include <algorithm>
-#include <limits>
 
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/hex_element.hpp"
@@ -64,49 +63,6 @@ Eigen::VectorXd HexSystem::recover(const HexDofMap& dofs, const Eigen::VectorXd&
       all(3 * space.modes[local_dof % n] + local_dof / n) = local(local_dof);
   }
   return all;
-}
-
-Eigen::MatrixXd solve_with_fixed_dofs(const Eigen::SparseMatrix<double>& K,
-                                      const Eigen::VectorXd& f, const std::vector<int>& fixed,
-                                      const Eigen::MatrixXd& values) {
-  const int n = static_cast<int>(K.rows()), n_cases = static_cast<int>(values.cols());
-  HPC_REQUIRE(static_cast<int>(values.rows()) == static_cast<int>(fixed.size()), InputError,
-              "solve_with_fixed_dofs: ", fixed.size(), " fixed dofs but ", values.rows(),
-              " rows of values");
-  // Each dof's index in the free list, or -1 - its index in `fixed`.
-  constexpr int kUnset = std::numeric_limits<int>::max();
-  std::vector<int> position(n, kUnset);
-  for (size_t c = 0; c < fixed.size(); ++c) {
-    HPC_REQUIRE(fixed[c] >= 0 && fixed[c] < n && position[fixed[c]] == kUnset, InputError,
-                "solve_with_fixed_dofs: fixed dof ", fixed[c], " out of range or repeated");
-    position[fixed[c]] = -1 - static_cast<int>(c);
-  }
-  int n_free = 0;
-  for (int d = 0; d < n; ++d)
-    if (position[d] == kUnset) position[d] = n_free++;
-  std::vector<Eigen::Triplet<double>> triplets;
-  Eigen::MatrixXd rhs(n_free, n_cases);
-  for (int d = 0; d < n; ++d)
-    if (position[d] >= 0) rhs.row(position[d]).setConstant(f(d));
-  for (int col = 0; col < n; ++col)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(K, col); it; ++it) {
-      const int row = static_cast<int>(it.row());
-      if (position[row] < 0) continue;
-      if (position[col] >= 0)
-        triplets.emplace_back(position[row], position[col], it.value());
-      else
-        rhs.row(position[row]) -= it.value() * values.row(-1 - position[col]);
-    }
-  Eigen::SparseMatrix<double> K_ff(n_free, n_free);
-  K_ff.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(K_ff);
-  HPC_REQUIRE(ldlt.info() == Eigen::Success, NumericalError,
-              "solve_with_fixed_dofs: the free block of the stiffness cannot be factorised");
-  const Eigen::MatrixXd u_free = ldlt.solve(rhs);
-  Eigen::MatrixXd u(n, n_cases);
-  for (int d = 0; d < n; ++d)
-    u.row(d) = position[d] >= 0 ? u_free.row(position[d]) : values.row(-1 - position[d]);
-  return u;
 }
 
 }  // namespace hpcontact::fem

@@ -47,12 +47,4 @@ struct HexSystem {
 /// grid): a MeshError names body.context and the element. Element quadrature: hex_gauss_points.
 HexSystem assemble_hex_elasticity(const HexBody& body, const HexAssemblyOptions& options = {});
 
-/// Solves K u = f with the dofs `fixed` (no repeats) prescribed: for each column c of `values`
-/// (n_fixed × n_cases), the free dofs from K_ff u_f = f_f − K_fc values.col(c) with one sparse
-/// LDLᵀ of K_ff (which must be positive definite, else a NumericalError). Returns every dof,
-/// n_dofs × n_cases.
-Eigen::MatrixXd solve_with_fixed_dofs(const Eigen::SparseMatrix<double>& K,
-                                      const Eigen::VectorXd& f, const std::vector<int>& fixed,
-                                      const Eigen::MatrixXd& values);
-
 }  // namespace hpcontact::fem

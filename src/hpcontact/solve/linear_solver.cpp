@@ -188,18 +188,19 @@ LinearSolver::~LinearSolver() = default;
 LinearSolver::LinearSolver(LinearSolver&&) noexcept = default;
 LinearSolver& LinearSolver::operator=(LinearSolver&&) noexcept = default;
 
-void LinearSolver::factorize(const SparseMatrix& A_in) {
+// A copy in compressed storage (the comparisons need it, and LU's solve reads A).
+void LinearSolver::factorize(const SparseMatrix& A) { factorize(SparseMatrix(A)); }
+
+void LinearSolver::factorize(SparseMatrix&& A_in) {
   // A stop request (core/stop.hpp) is honoured before each phase, the analysis and the numeric
   // factorisation (in 3D each takes minutes); a stop leaves the solver fit to be used again.
   stop_point("factorising");
   bool ok;
   SmallestPivot smallest;
-  // A copy in compressed storage (the comparisons need it, and LU's solve reads A).
-  SparseMatrix copy = A_in;
-  copy.makeCompressed();
-  kept_factors_ = impl_->is_factorised(copy);
+  A_in.makeCompressed();
+  kept_factors_ = impl_->is_factorised(A_in);
   if (kept_factors_) return;
-  impl_->matrix = std::move(copy);
+  impl_->matrix = std::move(A_in);
   const SparseMatrix& A = impl_->matrix;
   ++factorizations_;
   const bool analyse = !impl_->same_pattern(A);
@@ -221,7 +222,7 @@ void LinearSolver::factorize(const SparseMatrix& A_in) {
     ok = impl_->cholmod.info() == Eigen::Success;
     if (!ok && lu_when_indefinite_) {  // not positive definite: LU from now on
       kind_ = LinearSolverKind::lu;
-      return factorize(A_in);
+      return factorize(SparseMatrix(A));
     }
     const Eigen::VectorXd diagonal = ok ? Eigen::VectorXd(A.diagonal()) : Eigen::VectorXd();
     if (ok)

@@ -34,6 +34,8 @@ public:
   /// Symmetric matrices are also refused when a pivot is below 1e-11 of its diagonal entry (a
   /// singular matrix whose zero pivot comes out as positive round-off).
   void factorize(const SparseMatrix& A);
+  /// The same, taking A over instead of copying it (the solver keeps the matrix it factorised).
+  void factorize(SparseMatrix&& A);
   /// Whether the last factorize() kept the factors of the matrix before it (an equal matrix).
   bool kept_factors() const { return kept_factors_; }
   /// Numeric factorisations done so far (those kept not counted), for tests and benchmarks.
