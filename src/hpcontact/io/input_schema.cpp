@@ -791,7 +791,13 @@ std::string input_schema_markdown() {
         "most "
      << kMaxVtuPoints << "; hp: the smallest elements, adapt.factor ^ adapt.steps of the first "
         "ones, at least "
-     << kMinHpScale << " (at factor 0.5 36 steps, at 0.17 14).\n";
+     << kMinHpScale << " (at factor 0.5 36 steps, at 0.17 14).\n"
+        "- Memory: before the sparse Cholesky factorisation (CHOLMOD) fills its factor, the size "
+        "its symbolic analysis gives (the factor, its largest update matrix and the copies of "
+        "the matrix) is compared with the memory the run may still use (the least of `ulimit "
+        "-v` less what the process uses, the control group's memory.max less its use, and the "
+        "system's MemAvailable); a factor that will not fit is refused, naming the size in GB "
+        "and what to do, instead of the process being ended by the kernel.\n";
   md << "\n## Output files\n\n"
         "Lengths, forces and stresses are in the units of the problem file (the program has no "
         "unit system of its own; summary.json's `units` says so). Forces and pressures are per "

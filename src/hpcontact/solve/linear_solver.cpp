@@ -15,6 +15,7 @@
 
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/core/stop.hpp"
+#include "hpcontact/solve/available_memory.hpp"
 
 namespace hpcontact::solve {
 
@@ -33,6 +34,31 @@ public:
 
   /// Whether an analysis left a factor to fill (CHOLMOD returns none when it runs out of memory).
   bool has_factor() const { return m_cholmodFactor != nullptr; }
+
+  /// After an analysis of a matrix with nnz stored entries: the factor's size and what the
+  /// numeric factorisation will allocate. A supernodal factor holds xsize reals (L with the
+  /// zeros the supernodes pad it with) and ssize integers; the factorisation adds an update
+  /// matrix of at most maxcsize reals and, for a lower-triangle matrix, two permuted transposes
+  /// of that triangle (8 + 4 bytes an entry, one freed before the other is used: counted twice
+  /// to be safe, with half of nnz each).
+  FactorMemory analysed_memory(Eigen::Index nnz) const {
+    const cholmod_factor* L = m_cholmodFactor;
+    const cholmod_common& cm = common();
+    FactorMemory m;
+    m.factor_entries = cm.lnz;
+    m.flops = cm.fl;
+    const double reals = L->is_super ? static_cast<double>(L->xsize + L->maxcsize) : cm.lnz;
+    const double integers = L->is_super ? static_cast<double>(L->ssize) : cm.lnz;
+    m.estimate_bytes = sizeof(double) * reals + sizeof(int) * integers +
+                       (sizeof(double) + sizeof(int)) * static_cast<double>(nnz);
+    return m;
+  }
+
+  /// CHOLMOD's peak memory in use so far.
+  double peak_bytes() const { return static_cast<double>(common().memory_usage); }
+
+  /// CHOLMOD's settings and statistics (Eigen gives them non-const only).
+  const cholmod_common& common() const { return const_cast<CholmodWithPivots&>(*this).cholmod(); }
 
   /// Calls f(row of A, pivot) for every column of the factor.
   template <typename F>
@@ -82,6 +108,23 @@ void require_cholmod_resources(const CholmodWithPivots& c, const char* stage, Ei
        << cm.lnz * sizeof(double) / 1e9 << " GB";
   os << "; memory in use at the peak " << std::setprecision(3) << cm.memory_usage / 1e9
      << " GB. Use fewer elements or a lower degree (or static condensation), or more memory";
+  throw ResourceError(os.str());
+}
+
+/// Refuses to factorise (ResourceError) when the analysis's estimate is more than the memory
+/// available: a failed allocation would be reported too, but past a limit the kernel does not
+/// refuse an allocation, it ends the process later (overcommit, the OOM killer).
+void require_memory_for_factor(const FactorMemory& m, Eigen::Index n, Eigen::Index nnz) {
+  const std::optional<AvailableMemory> available = available_memory();
+  if (!available || m.estimate_bytes <= available->bytes) return;
+  std::ostringstream os;
+  os << std::setprecision(3) << "the sparse Cholesky factorisation (CHOLMOD) of the system of " << n
+     << " unknowns (" << nnz << " stored matrix entries) would run out of memory: its factor has "
+     << m.factor_entries << " entries and needs about " << m.estimate_bytes / 1e9
+     << " GB with its workspace (" << m.flops / 1e9 << " GFLOP to compute), but "
+     << available->bytes / 1e9 << " GB are available (" << available->limit
+     << "). Use fewer elements or a lower degree (or static condensation), or run where more "
+        "memory is available";
   throw ResourceError(os.str());
 }
 
@@ -143,6 +186,8 @@ struct LinearSolver::Impl {
   /// The sparsity pattern of the last matrix analysed (compressed column storage).
   std::vector<SparseMatrix::StorageIndex> outer, inner;
   bool analysed = false;
+  /// CHOLMOD's figures of the last analysis.
+  FactorMemory memory;
 
   /// Whether A (compressed) is the matrix factorised last, with the same values: then the
   /// factors in hand are its factors.
@@ -188,6 +233,13 @@ LinearSolver::~LinearSolver() = default;
 LinearSolver::LinearSolver(LinearSolver&&) noexcept = default;
 LinearSolver& LinearSolver::operator=(LinearSolver&&) noexcept = default;
 
+FactorMemory LinearSolver::memory() const {
+  if (kind_ != LinearSolverKind::cholmod) return {};
+  FactorMemory m = impl_->memory;
+  m.peak_bytes = impl_->cholmod.peak_bytes();
+  return m;
+}
+
 // A copy in compressed storage (the comparisons need it, and LU's solve reads A).
 void LinearSolver::factorize(const SparseMatrix& A) { factorize(SparseMatrix(A)); }
 
@@ -215,6 +267,8 @@ void LinearSolver::factorize(SparseMatrix&& A_in) {
     if (analyse) {
       impl_->cholmod.analyzePattern(A);
       require_cholmod_resources(impl_->cholmod, "analysis", A.rows(), A.nonZeros());
+      impl_->memory = impl_->cholmod.analysed_memory(A.nonZeros());
+      require_memory_for_factor(impl_->memory, A.rows(), A.nonZeros());
     }
     stop_point("factorising");
     impl_->cholmod.factorize(A);

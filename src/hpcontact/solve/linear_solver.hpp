@@ -15,6 +15,17 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 /// penetration) — a singular matrix is still refused, by the LU.
 enum class LinearSolverKind { cholmod, ldlt, lu, cholmod_else_lu };
 
+/// What a CHOLMOD factorisation needs, from its symbolic analysis, and what it took.
+struct FactorMemory {
+  double factor_entries = 0;  ///< nonzeros of L (CHOLMOD's lnz, without the supernodes' padding)
+  double flops = 0;           ///< of the numeric factorisation (CHOLMOD's fl)
+  /// What the numeric factorisation will allocate: the supernodal factor's reals and integers,
+  /// its largest update matrix, two permuted copies of A's lower triangle.
+  double estimate_bytes = 0;
+  /// CHOLMOD's peak memory in use (analysis, factorisation and solves so far).
+  double peak_bytes = 0;
+};
+
 /// Parses "cholmod" / "ldlt" / "lu"; InputError naming `where` otherwise.
 LinearSolverKind linear_solver_kind(const std::string& name, const std::string& where);
 
@@ -33,9 +44,15 @@ public:
   /// for a stiffness matrix means a rigid-body motion is unconstrained.
   /// Symmetric matrices are also refused when a pivot is below 1e-11 of its diagonal entry (a
   /// singular matrix whose zero pivot comes out as positive round-off).
+  /// CHOLMOD: after the symbolic analysis of a new pattern, a factor whose estimate (memory())
+  /// exceeds the memory available (available_memory.hpp) is refused with a ResourceError that
+  /// gives both and what to do, before the numeric factorisation tries to allocate it; so is a
+  /// failed allocation (CHOLMOD's out-of-memory status).
   void factorize(const SparseMatrix& A);
   /// The same, taking A over instead of copying it (the solver keeps the matrix it factorised).
   void factorize(SparseMatrix&& A);
+  /// CHOLMOD's figures of the last analysis and its peak memory so far; zero for ldlt and lu.
+  FactorMemory memory() const;
   /// Whether the last factorize() kept the factors of the matrix before it (an equal matrix).
   bool kept_factors() const { return kept_factors_; }
   /// Numeric factorisations done so far (those kept not counted), for tests and benchmarks.

@@ -1,10 +1,15 @@
 // CHOLMOD running out of memory: whichever of its allocations fails, the solver says so (the
-// system's size, what the factor needs) and the process goes on.
+// system's size, what the factor needs) and the process goes on; a factor that will not fit is
+// refused before it is allocated, with its estimate.
 #include <gtest/gtest.h>
 
 #include <SuiteSparse_config.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -57,7 +62,75 @@ solve::SparseMatrix laplacian(int m) {
   return A;
 }
 
+/// The 3D seven-point Laplacian on an m×m×m grid plus 0.1·I (SPD): its factor grows like m⁴,
+/// a 3D mesh's does.
+solve::SparseMatrix laplacian_3d(int m) {
+  std::vector<Eigen::Triplet<double>> t;
+  auto node = [m](int i, int j, int k) { return (i * m + j) * m + k; };
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j)
+      for (int k = 0; k < m; ++k) {
+        const int r = node(i, j, k);
+        t.emplace_back(r, r, 6.1);
+        for (int d = -1; d <= 1; d += 2) {
+          if (i + d >= 0 && i + d < m) t.emplace_back(r, node(i + d, j, k), -1);
+          if (j + d >= 0 && j + d < m) t.emplace_back(r, node(i, j + d, k), -1);
+          if (k + d >= 0 && k + d < m) t.emplace_back(r, node(i, j, k + d), -1);
+        }
+      }
+  solve::SparseMatrix A(m * m * m, m * m * m);
+  A.setFromTriplets(t.begin(), t.end());
+  return A;
+}
+
 }  // namespace
+
+// The analysis's estimate shall be what the factorisation takes: within 5 % of CHOLMOD's peak
+// memory on the 3D Laplacian of 20³ and 30³ unknowns (measured: 0.7 % and 0.5 % below it; 40³
+// and 50³, 185 and 503 MB: 0.4 % and 0.3 %).
+TEST(LinearSolverMemory, EstimateIsWhatTheFactorisationTakes) {
+  for (int m : {20, 30}) {
+    solve::LinearSolver solver(solve::LinearSolverKind::cholmod);
+    solver.factorize(laplacian_3d(m));
+    const solve::FactorMemory memory = solver.memory();
+    EXPECT_GT(memory.factor_entries, 0.0);
+    EXPECT_GT(memory.flops, memory.factor_entries);
+    EXPECT_NEAR(memory.estimate_bytes / memory.peak_bytes, 1.0, 0.05) << m;
+  }
+}
+
+// Under an address-space limit (setrlimit RLIMIT_AS, in a child process) of what is in use plus
+// 32 MB, the 3D Laplacian of 30³ unknowns, whose factor takes 60 MB, shall be refused after its
+// analysis with a ResourceError that gives the estimate in GB, the memory available, its limit
+// and what to do: not a failed allocation ("would run out", not "out of memory" from CHOLMOD's
+// status), not a signal.
+TEST(LinearSolverMemoryDeathTest, FactorBeyondTheLimitIsRefusedWithItsEstimate) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const solve::SparseMatrix A = laplacian_3d(30);
+  auto refuse = [&A] {
+    long pages = 0;
+    std::ifstream("/proc/self/statm") >> pages;
+    const rlim_t limit = static_cast<rlim_t>(pages) * sysconf(_SC_PAGESIZE) + (rlim_t{32} << 20);
+    const rlimit r{limit, limit};
+    if (setrlimit(RLIMIT_AS, &r) != 0) std::_Exit(3);
+    solve::LinearSolver solver(solve::LinearSolverKind::cholmod);
+    try {
+      solver.factorize(A);
+    } catch (const ResourceError& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      std::_Exit(0);
+    }
+    std::_Exit(1);
+  };
+  EXPECT_EXIT(refuse(), ::testing::ExitedWithCode(0),
+              "the sparse Cholesky factorisation \\(CHOLMOD\\) of the system of 27000 unknowns "
+              "\\([0-9]+ stored matrix entries\\) would run out of memory: its factor has "
+              "4\\.1[0-9]e\\+06 entries and needs about 0\\.0[56][0-9]* GB with its workspace "
+              "\\([0-9.]+ GFLOP to compute\\), but 0\\.0[0-3][0-9]* GB are available \\(the "
+              "address-space limit \\(ulimit -v\\) of [0-9.]+ GB, [0-9.]+ GB of it in use\\)\\. "
+              "Use fewer elements or a lower degree \\(or static condensation\\), or run where "
+              "more memory is available");
+}
 
 // Every allocation of the analysis, factorisation and solve in turn fails: each time the solver
 // throws ResourceError naming the stage, "out of memory" and the size of the system, or, once
