@@ -35,13 +35,14 @@ public:
   /// Whether an analysis left a factor to fill (CHOLMOD returns none when it runs out of memory).
   bool has_factor() const { return m_cholmodFactor != nullptr; }
 
-  /// After an analysis of a matrix with nnz stored entries: the factor's size and what the
-  /// numeric factorisation will allocate. A supernodal factor holds xsize reals (L with the
-  /// zeros the supernodes pad it with) and ssize integers; the factorisation adds an update
-  /// matrix of at most maxcsize reals and, for a lower-triangle matrix, two permuted transposes
-  /// of that triangle (8 + 4 bytes an entry, one freed before the other is used: counted twice
-  /// to be safe, with half of nnz each).
-  FactorMemory analysed_memory(Eigen::Index nnz) const {
+  /// After an analysis of a matrix with nnz_lower entries in its lower triangle: the factor's
+  /// size and what the numeric factorisation will allocate. A supernodal factor holds xsize
+  /// reals (L with the zeros the supernodes pad it with) and ssize integers; the factorisation
+  /// first makes two permuted transposes of the lower triangle (8 + 4 bytes an entry), frees one
+  /// and keeps the other while it fills the factor and an update matrix of at most maxcsize
+  /// reals; its workspace takes about 48 bytes an unknown (measured: the rest of its peak on the
+  /// 3D Laplacians of tests/unit/solve/test_linear_solver_memory.cpp).
+  FactorMemory analysed_memory(Eigen::Index nnz_lower) const {
     const cholmod_factor* L = m_cholmodFactor;
     const cholmod_common& cm = common();
     FactorMemory m;
@@ -49,8 +50,9 @@ public:
     m.flops = cm.fl;
     const double reals = L->is_super ? static_cast<double>(L->xsize + L->maxcsize) : cm.lnz;
     const double integers = L->is_super ? static_cast<double>(L->ssize) : cm.lnz;
-    m.estimate_bytes = sizeof(double) * reals + sizeof(int) * integers +
-                       (sizeof(double) + sizeof(int)) * static_cast<double>(nnz);
+    const double copy = (sizeof(double) + sizeof(int)) * static_cast<double>(nnz_lower);
+    m.estimate_bytes = sizeof(int) * integers + std::max(2 * copy, sizeof(double) * reals + copy) +
+                       48.0 * static_cast<double>(L->n);
     return m;
   }
 
@@ -109,6 +111,14 @@ void require_cholmod_resources(const CholmodWithPivots& c, const char* stage, Ei
   os << "; memory in use at the peak " << std::setprecision(3) << cm.memory_usage / 1e9
      << " GB. Use fewer elements or a lower degree (or static condensation), or more memory";
   throw ResourceError(os.str());
+}
+
+/// The stored entries of A on and below its diagonal (what CHOLMOD reads of it).
+Eigen::Index lower_entries(const SparseMatrix& A) {
+  Eigen::Index count = 0;
+  for (Eigen::Index col = 0; col < A.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(A, col); it; ++it) count += it.row() >= col;
+  return count;
 }
 
 /// Refuses to factorise (ResourceError) when the analysis's estimate is more than the memory
@@ -267,7 +277,7 @@ void LinearSolver::factorize(SparseMatrix&& A_in) {
     if (analyse) {
       impl_->cholmod.analyzePattern(A);
       require_cholmod_resources(impl_->cholmod, "analysis", A.rows(), A.nonZeros());
-      impl_->memory = impl_->cholmod.analysed_memory(A.nonZeros());
+      impl_->memory = impl_->cholmod.analysed_memory(lower_entries(A));
       require_memory_for_factor(impl_->memory, A.rows(), A.nonZeros());
     }
     stop_point("factorising");

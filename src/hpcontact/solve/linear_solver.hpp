@@ -20,7 +20,7 @@ struct FactorMemory {
   double factor_entries = 0;  ///< nonzeros of L (CHOLMOD's lnz, without the supernodes' padding)
   double flops = 0;           ///< of the numeric factorisation (CHOLMOD's fl)
   /// What the numeric factorisation will allocate: the supernodal factor's reals and integers,
-  /// its largest update matrix, two permuted copies of A's lower triangle.
+  /// its largest update matrix, a permuted copy of A's lower triangle (two while it is made).
   double estimate_bytes = 0;
   /// CHOLMOD's peak memory in use (analysis, factorisation and solves so far).
   double peak_bytes = 0;
