@@ -37,7 +37,9 @@ struct HexAssemblyOptions {
 struct HexSystem {
   Eigen::SparseMatrix<double> K;
   Eigen::VectorXd f;
-  std::vector<CondensedElement> condensed;  ///< per element, when condensed
+  /// Per element, when condensed: what recovers its internal modes (its K and f, assembled,
+  /// are left empty).
+  std::vector<CondensedElement> condensed;
 
   /// All dofs (3 * n_modes) from the external ones; the identity (a copy) when not condensed.
   Eigen::VectorXd recover(const HexDofMap& dofs, const Eigen::VectorXd& u) const;

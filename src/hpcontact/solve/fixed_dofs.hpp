@@ -14,10 +14,10 @@ namespace hpcontact::solve {
 /// `values` (n_fixed × n_cases), the free unknowns from K_ff u_f = f_f − K_fc values.col(c), one
 /// factorisation of K_ff by `solver` (whose factors and figures stay for the caller: memory(),
 /// a second solve with the same K_ff). K is symmetric, stored whole (UMFPACK's LU reads both
-/// triangles, CHOLMOD and LDLᵀ the lower one). Returns every unknown, n × n_cases. Throws
-/// InputError for a fixed index out of range or repeated, NumericalError when K_ff is singular or
-/// (for CHOLMOD and LDLᵀ) not positive definite, ResourceError when its factor will not fit in
-/// memory (LinearSolver::factorize).
+/// triangles; for CHOLMOD and LDLᵀ only the lower one of K_ff is copied). Returns every unknown,
+/// n × n_cases. Throws InputError for a fixed index out of range or repeated, NumericalError when
+/// K_ff is singular or (for CHOLMOD and LDLᵀ) not positive definite, ResourceError when its
+/// factor will not fit in memory (LinearSolver::factorize).
 Eigen::MatrixXd solve_with_fixed_dofs(const SparseMatrix& K, const Eigen::VectorXd& f,
                                       const std::vector<int>& fixed, const Eigen::MatrixXd& values,
                                       LinearSolver& solver);

@@ -262,7 +262,7 @@ void LinearSolver::factorize(SparseMatrix&& A_in) {
   A_in.makeCompressed();
   kept_factors_ = impl_->is_factorised(A_in);
   if (kept_factors_) return;
-  impl_->matrix = std::move(A_in);
+  impl_->matrix.swap(A_in);  // Eigen 3.4's SparseMatrix has no move assignment: it would copy
   const SparseMatrix& A = impl_->matrix;
   ++factorizations_;
   const bool analyse = !impl_->same_pattern(A);

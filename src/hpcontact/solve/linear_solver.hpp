@@ -67,6 +67,9 @@ public:
   int analyses() const { return analyses_; }
   /// The factorisation in use: for cholmod_else_lu, lu once a matrix was not positive definite.
   LinearSolverKind kind() const { return kind_; }
+  /// Whether factorize() reads only the lower triangle of A (cholmod and ldlt; not lu, nor
+  /// cholmod_else_lu, which may turn to LU): then A may hold that triangle alone.
+  bool reads_lower_triangle() const { return kind_ != LinearSolverKind::lu && !lu_when_indefinite_; }
 
 private:
   struct Impl;
