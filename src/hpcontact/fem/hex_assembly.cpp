@@ -82,7 +82,7 @@ HexSystem assemble_hex_elasticity(const HexBody& body, const HexAssemblyOptions&
       const int* position = inner + outer[global[s]];
       const int* end = inner + outer[global[s] + 1];
       for (int r : by_row) {
-        position = std::lower_bound(position, end, global[r]);
+        while (position != end && *position < global[r]) ++position;  // a merge of two sorted lists
         HPC_ASSERT(position != end && *position == global[r], "hex assembly: dof ", global[r],
                    " missing from the pattern of column ", global[s]);
         value[position - inner] += K(r, s);
