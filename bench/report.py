@@ -1,4 +1,5 @@
-"""Writes BENCHMARKS.md from hpc_bench's JSON results (bench/run.sh calls it; standard library only)."""
+"""Writes BENCHMARKS.md from hpc_bench's JSON results (bench/run.sh calls it; standard library only);
+with --only, rewrites some sections of it from a run of their benchmarks alone."""
 
 import datetime
 import json
@@ -19,6 +20,7 @@ def load(path):
     runs = {}
     for b in data["benchmarks"]:
         name = b["run_name"].removesuffix("/real_time").removesuffix("/process_time")
+        name = re.sub(r"/(iterations|repeats):\d+", "", name)  # a benchmark's own counts
         kind = b.get("aggregate_name", "single") if b.get("run_type") == "aggregate" else "single"
         if b.get("aggregate_unit", "time") == "time":
             scale = UNIT_SECONDS[b["time_unit"]]
@@ -163,6 +165,54 @@ def hex_element_section(runs):
                 " its set-up and the gather, O(p⁶), still count). On the blending hex the map's"
                 " evaluation at the points (about 30 µs each) is most of the time up to p ≈ 5."]
     return out
+
+
+def hex_solve_section(runs):
+    sizes = [(4, 4, 4), (8, 7, 7), (10, 9, 9)]
+    rows = [(size, central(runs, "BM_HexBoxSolve/nx:{}/ny:{}/nz:{}".format(*size))) for size in sizes]
+    rows = [(size, b) for size, b in rows if b]
+    if not rows:
+        return []
+    out = ["## 3D: one condensed linear solve against its size", "",
+           "A box of nx × ny × nz trilinear hexahedra (unit cubes with their nodes moved by up to",
+           "0.15, so that none is affine), p = 4, tensor space, clamped on z = 0 under its weight",
+           "(bench/bench_hex_solve.cpp): the (p − 1)³ = 27 internal modes of each element condensed,",
+           "the system over the vertex, edge and face modes solved by CHOLMOD's supernodal Cholesky,",
+           "the 2D code's solver (solve/fixed_dofs.hpp). The boxes are those whose condensed systems",
+           "come nearest 10⁴, 5·10⁴ and 10⁵ unknowns at p = 4, the degree a 3D p-version mesh starts",
+           "at and where the factored element kernel already wins. `assembly`: element stiffness",
+           "(sum factorisation), condensation, the sparse matrix, one thread; `factorise + solve`:",
+           "the free block, CHOLMOD's analysis, factorisation and solve; `time` and `CPU` (all",
+           "threads) of both. Memory: CHOLMOD's estimate after its analysis (what the refusal of a",
+           "factor that will not fit compares, solve/linear_solver.hpp), its peak, and the process's",
+           "peak resident memory during the solve (VmHWM reset before it). One iteration each, the",
+           "median of 3 repetitions.", "",
+           "| box | elements | dofs | system | assembly | factorise + solve | time | CPU | "
+           "factor entries | GFLOP | estimate | CHOLMOD peak | peak RSS | spread |",
+           "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for (nx, ny, nz), b in rows:
+        name = f"BM_HexBoxSolve/nx:{nx}/ny:{ny}/nz:{nz}"
+        rss = f"{b['peak_rss_gb']:.2f} GB" + ("" if b.get("peak_rss_of_iteration") else " (process)")
+        out.append(f"| {nx}×{ny}×{nz} | {int(b['elements'])} | {int(b['dofs'])} | {int(b['n_system'])} | "
+                   f"{fmt_time(b['assembly_s'])} | {fmt_time(b['solve_s'])} | "
+                   f"{fmt_time(b['real_time'])} | {fmt_time(b['cpu_time'])} | "
+                   f"{b['factor_entries'] / 1e6:.1f} M | {b['factor_gflop']:.0f} | "
+                   f"{b['estimate_gb']:.2f} GB | {b['cholmod_peak_gb']:.2f} GB | {rss} | "
+                   f"{spread(runs, name)} |")
+    ratios = []
+    if len(rows) >= 2:
+        (s0, a), (s1, b) = rows[0], rows[-1]
+        grow = math.log(b["n_system"] / a["n_system"])
+        ratios.append(f"| largest / smallest: system size | {fmt_ratio(b['n_system'], a['n_system'])} |")
+        for key, label in (("assembly_s", "assembly"), ("solve_s", "factorise + solve"),
+                           ("factor_entries", "factor entries"), ("factor_gflop", "factorisation flops"),
+                           ("peak_rss_gb", "peak resident memory")):
+            ratios.append(f"| largest / smallest: {label} | {fmt_ratio(b[key], a[key])} "
+                          f"(∝ n^{math.log(b[key] / a[key]) / grow:.2f}) |")
+    for size, b in rows:
+        ratios.append(f"| {size[0]}×{size[1]}×{size[2]}: share of factorise + solve in the time | "
+                      f"{100 * b['solve_s'] / (b['solve_s'] + b['assembly_s']):.0f} % |")
+    return out + ratios_table(ratios)
 
 
 def solve_section(runs):
@@ -485,11 +535,48 @@ def main(results_path, output_path, reference_blas_path=None):
             width=95),
         "",
     ]
-    lines += element_section(runs) + [""] + hex_element_section(runs) + [""] + solve_section(runs) + [""] + blas_section(runs, reference_blas_path)
+    lines += element_section(runs) + [""] + hex_element_section(runs) + [""] + hex_solve_section(runs)
+    lines += [""] + solve_section(runs) + [""] + blas_section(runs, reference_blas_path)
     lines += enforcement_section(runs) + [""] + contact_section(runs) + [""] + adapt_section(runs) + [""] + nonlinear_section(runs) + [""]
     lines += kept_sections(output_path)
     with open(output_path, "w", encoding="utf-8") as f:
         f.write("\n".join(lines))
+
+
+# The sections a run of their benchmarks alone can rewrite (bench/run.sh with SECTIONS=...): name
+# -> (the function that writes it, the benchmarks it reads, the heading it goes before when the
+# file has none of it yet).
+PARTIAL_SECTIONS = {
+    "hex-element": (hex_element_section, "BM_HexElementStiffness", "## Whole problems"),
+    "hex-solve": (hex_solve_section, "BM_HexBoxSolve", "## Whole problems"),
+}
+
+
+def replace_sections(results_path, output_path, names):
+    """Rewrites only the named sections of an existing BENCHMARKS.md from a run of their
+    benchmarks, each stamped with its own commit, date and load (the file's header keeps those
+    of the last whole run); the rest of the file stays as it is."""
+    context, runs = load(results_path)
+    text = open(output_path, encoding="utf-8").read()
+    now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    load_avg = ", ".join(f"{x:.1f}" for x in context.get("load_avg") or []) or "unknown"
+    for name in names:
+        write, benchmarks, before = PARTIAL_SECTIONS[name]
+        lines = write(runs)
+        if not lines:
+            sys.exit(f"report.py: {results_path} has no {benchmarks} results for the section {name}")
+        stamp = (f"*This section alone regenerated (`SECTIONS={name} bash bench/run.sh`) on {now}, "
+                 f"commit {git_revision()}, load average at start {load_avg}.*")
+        block = "\n".join(lines[:2] + [stamp, ""] + lines[2:]) + "\n\n"
+        start = text.find(lines[0] + "\n")
+        if start < 0:
+            start = end = text.index(before + "\n")
+        else:
+            end = text.find("\n## ", start + 1)
+            end = len(text) if end < 0 else end + 1
+        text = text[:start] + block + text[end:]
+    with open(output_path, "w", encoding="utf-8") as f:
+        f.write(text)
 
 
 def kept_sections(path):
@@ -503,6 +590,13 @@ def kept_sections(path):
 
 
 if __name__ == "__main__":
+    if len(sys.argv) == 5 and sys.argv[1] == "--only":
+        unknown = [n for n in sys.argv[2].split(",") if n not in PARTIAL_SECTIONS]
+        if unknown:
+            sys.exit(f"report.py: no section {', '.join(unknown)} (sections: {', '.join(PARTIAL_SECTIONS)})")
+        replace_sections(sys.argv[3], sys.argv[4], sys.argv[2].split(","))
+        sys.exit(0)
     if len(sys.argv) not in (3, 4):
-        sys.exit("usage: report.py RESULTS.json BENCHMARKS.md [REFERENCE-BLAS-RESULTS.json]")
+        sys.exit("usage: report.py RESULTS.json BENCHMARKS.md [REFERENCE-BLAS-RESULTS.json]\n"
+                 "       report.py --only SECTION[,SECTION...] RESULTS.json BENCHMARKS.md")
     main(sys.argv[1], sys.argv[2], sys.argv[3] if len(sys.argv) == 4 else None)

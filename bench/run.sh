@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Builds hpc_bench (Release), runs every benchmark into build/bench/results.json and writes BENCHMARKS.md.
 # Usage: bash bench/run.sh [hpc_bench options, e.g. --benchmark_filter=Element]; BUILD_DIR overrides build/.
+# SECTIONS=hex-element,hex-solve bash bench/run.sh runs only those sections' benchmarks and rewrites
+# only those sections of BENCHMARKS.md (bench/report.py --only; the names are its PARTIAL_SECTIONS).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${BUILD_DIR:-build}
@@ -14,6 +16,27 @@ if ! grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$build_dir/CMakeCache.txt"; th
   exit 1
 fi
 cmake --build "$build_dir" --target hpc_bench
+
+if [[ -n "${SECTIONS:-}" ]]; then
+  filter=$(/usr/bin/python3 -c 'import sys; sys.path.insert(0, "bench"); import report
+names = sys.argv[1].split(",")
+missing = [n for n in names if n not in report.PARTIAL_SECTIONS]
+sys.exit("bench/run.sh: no section " + ", ".join(missing)) if missing else None
+print("|".join(report.PARTIAL_SECTIONS[n][1] for n in names))' "$SECTIONS")
+  results="$build_dir/bench/results-sections.json"
+  "$build_dir/bench/hpc_bench" \
+    --benchmark_filter="$filter" \
+    --benchmark_min_time=0.2 \
+    --benchmark_repetitions=5 \
+    --benchmark_enable_random_interleaving=true \
+    --benchmark_report_aggregates_only=true \
+    --benchmark_out_format=json \
+    --benchmark_out="$results" \
+    "$@"
+  /usr/bin/python3 bench/report.py --only "$SECTIONS" "$results" BENCHMARKS.md
+  echo "bench/run.sh: rewrote the sections $SECTIONS of BENCHMARKS.md (raw results: $results)"
+  exit 0
+fi
 
 # Five repetitions of at least 0.2 s each, interleaved in random order so that a burst of load
 # from elsewhere spreads over all benchmarks instead of skewing one; the report uses the median
