@@ -565,7 +565,7 @@ def replace_sections(results_path, output_path, names):
         lines = write(runs)
         if not lines:
             sys.exit(f"report.py: {results_path} has no {benchmarks} results for the section {name}")
-        stamp = (f"*This section alone regenerated (`SECTIONS={name} bash bench/run.sh`) on {now}, "
+        stamp = (f"*This section regenerated alone (`SECTIONS={','.join(names)} bash bench/run.sh`) on {now}, "
                  f"commit {git_revision()}, load average at start {load_avg}.*")
         block = "\n".join(lines[:2] + [stamp, ""] + lines[2:]) + "\n\n"
         start = text.find(lines[0] + "\n")
