@@ -103,6 +103,13 @@ Eigen::MatrixXd solve_with_fixed_dofs(const Eigen::SparseMatrix<double>& K,
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(K_ff);
   HPC_REQUIRE(ldlt.info() == Eigen::Success, NumericalError,
               "solve_with_fixed_dofs: the free block of the stiffness cannot be factorised");
+  // A singular block (a rigid motion left free) factorises with pivots that are round-off:
+  // refused below 1e-11 of their diagonal entries of P K Pᵀ, as solve/linear_solver does.
+  const Eigen::VectorXd diagonal = ldlt.permutationP() * Eigen::VectorXd(K_ff.diagonal());
+  for (int i = 0; i < n_free; ++i)
+    HPC_REQUIRE(ldlt.vectorD()(i) > 1e-11 * diagonal(i), NumericalError,
+                "solve_with_fixed_dofs: the free block of the stiffness is singular (pivot ",
+                ldlt.vectorD()(i), " against the diagonal ", diagonal(i), ")");
   const Eigen::MatrixXd u_free = ldlt.solve(rhs);
   Eigen::MatrixXd u(n, n_cases);
   for (int d = 0; d < n; ++d)

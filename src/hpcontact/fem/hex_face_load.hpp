@@ -35,4 +35,10 @@ Eigen::VectorXd hex_face_pressure_load(const basis::HierarchicHex& element,
                                        const mesh::HexMap& map, int lf, double pressure,
                                        int n_points);
 
+/// f_e = ∫ N t dA over local face lf for a constant traction vector t (force per area), with
+/// the same rule and layout as hex_face_pressure_load.
+Eigen::VectorXd hex_face_traction_load(const basis::HierarchicHex& element,
+                                       const mesh::HexMap& map, int lf,
+                                       const mesh::Vec3& traction, int n_points);
+
 }  // namespace hpcontact::fem

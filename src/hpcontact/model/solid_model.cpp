@@ -1,0 +1,195 @@
+// One hexahedral body: its mesh from a generator, its modes, constraints, loads and solve.
+#include "hpcontact/model/solid_model.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "hpcontact/core/error.hpp"
+#include "hpcontact/fem/hex_assembly.hpp"
+#include "hpcontact/fem/hex_face_load.hpp"
+#include "hpcontact/mesh/shell_octant.hpp"
+
+namespace hpcontact::model {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// A box of nx × ny × nz equal trilinear hexahedra, face sets x0 … z1.
+mesh::HexMesh box_mesh(const Point3& from, const Point3& to, std::array<int, 3> n,
+                       const std::string& context) {
+  const auto node = [&](int i, int j, int k) { return (k * (n[1] + 1) + j) * (n[0] + 1) + i; };
+  std::vector<mesh::Vec3> nodes;
+  for (int k = 0; k <= n[2]; ++k)
+    for (int j = 0; j <= n[1]; ++j)
+      for (int i = 0; i <= n[0]; ++i)
+        nodes.emplace_back(from[0] + (to[0] - from[0]) * i / n[0],
+                           from[1] + (to[1] - from[1]) * j / n[1],
+                           from[2] + (to[2] - from[2]) * k / n[2]);
+  std::vector<std::array<int, 8>> hexes;
+  mesh::HexMesh m;
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        const int h = static_cast<int>(hexes.size());
+        hexes.push_back({node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k),
+                         node(i, j + 1, k), node(i, j, k + 1), node(i + 1, j, k + 1),
+                         node(i + 1, j + 1, k + 1), node(i, j + 1, k + 1)});
+        // local faces (basis/hex_modes.hpp): F0 xi = -1, F1 xi = +1, F2 eta = -1, ...
+        if (i == 0) m.face_sets["x0"].push_back({h, 0});
+        if (i == n[0] - 1) m.face_sets["x1"].push_back({h, 1});
+        if (j == 0) m.face_sets["y0"].push_back({h, 2});
+        if (j == n[1] - 1) m.face_sets["y1"].push_back({h, 3});
+        if (k == 0) m.face_sets["z0"].push_back({h, 4});
+        if (k == n[2] - 1) m.face_sets["z1"].push_back({h, 5});
+      }
+  for (const auto& hex : hexes) {
+    std::array<mesh::Vec3, 8> v;
+    for (int c = 0; c < 8; ++c) v[c] = nodes[hex[c]];
+    m.maps.push_back(mesh::HexMap::trilinear(v));
+  }
+  m.topology = mesh::HexTopology(std::move(hexes), static_cast<int>(nodes.size()), context);
+  m.nodes = std::move(nodes);
+  m.context = context;
+  return m;
+}
+
+mesh::HexMesh shell_mesh(const SolidMeshSpec& s, const std::string& context) {
+  mesh::ShellOctantMesh shell = mesh::shell_octant_mesh(s.inner_radius, s.outer_radius, s.layers);
+  mesh::HexMesh m;
+  m.face_sets["inner"] = shell.inner;
+  m.face_sets["outer"] = shell.outer;
+  m.face_sets["x0"] = shell.symmetry[0];
+  m.face_sets["y0"] = shell.symmetry[1];
+  m.face_sets["z0"] = shell.symmetry[2];
+  m.topology = std::move(shell.topology);
+  m.nodes = std::move(shell.nodes);
+  m.maps = std::move(shell.maps);
+  m.context = context;
+  return m;
+}
+
+/// The faces of a constraint's or load's sets, each once.
+std::vector<mesh::ElementFace> faces_of(const mesh::HexMesh& m,
+                                        const std::vector<std::string>& sets) {
+  std::vector<mesh::ElementFace> faces;
+  for (const auto& name : sets) {
+    const auto it = m.face_sets.find(name);
+    HPC_REQUIRE(it != m.face_sets.end(), InputError, m.context, ": no face set '", name, "'");
+    for (const auto& f : it->second)
+      if (std::find(faces.begin(), faces.end(), f) == faces.end()) faces.push_back(f);
+  }
+  return faces;
+}
+
+}  // namespace
+
+mesh::HexMesh solid_mesh(const SolidMeshSpec& spec, const std::string& context) {
+  if (spec.kind == SolidMeshKind::box) return box_mesh(spec.from, spec.to, spec.elements, context);
+  return shell_mesh(spec, context);
+}
+
+SolidDiscretization discretize_solid(const SolidSpec& spec, const std::string& file) {
+  const std::string context = file + ": body '" + spec.body.name + "'";
+  mesh::HexMesh m = solid_mesh(spec.body.mesh, context);
+  fem::HexSpaceOptions options;
+  options.space = spec.tensor_space ? basis::Space::tensor_product : basis::Space::trunk;
+  options.degrees.assign(m.topology.n_hexes(), spec.degree);
+  fem::HexDofMap dofs(m.topology, options);
+  material::LinearElastic law;
+  law.youngs_modulus = spec.body.youngs_modulus;
+  law.poisson_ratio = spec.body.poisson_ratio;
+
+  // dof -> (value, the constraint that set it)
+  std::map<int, std::pair<double, const FaceConstraintSpec*>> prescribed;
+  for (const FaceConstraintSpec& c : spec.body.constraints)
+    for (const auto& [h, lf] : faces_of(m, c.faces)) {
+      const int face = m.topology.hex_face(h, lf);
+      const auto& corners = m.topology.face(face).vertices;
+      for (int mode : dofs.modes_on_face(m.topology, face)) {
+        const bool vertex = std::any_of(corners.begin(), corners.end(),
+                                        [&](int v) { return dofs.vertex_mode(v) == mode; });
+        for (int k = 0; k < 3; ++k) {
+          if (!c.u[k]) continue;
+          const double value = vertex ? *c.u[k] : 0.0;
+          const auto [at, inserted] = prescribed.emplace(3 * mode + k, std::make_pair(value, &c));
+          const SourceRef& other = at->second.second->where;
+          HPC_REQUIRE(inserted || at->second.first == value, InputError, c.where.str(), ": gives u",
+                      "xyz"[k], " = ", value, " on faces where ", other.key, " (line ",
+                      other.line, ") gives ", at->second.first, ": a node cannot move by both");
+        }
+      }
+    }
+  SolidDiscretization d{std::move(m), std::move(dofs), law, {}, {}};
+  for (const auto& [dof, value] : prescribed) {
+    d.fixed.push_back(dof);
+    d.fixed_values.push_back(value.first);
+  }
+  return d;
+}
+
+Eigen::VectorXd element_coefficients(const SolidDiscretization& d, int element,
+                                     const Eigen::VectorXd& u) {
+  const fem::HexElementSpace& space = d.dofs.element(element);
+  const int n = space.n_modes();
+  Eigen::VectorXd u_e(3 * n);
+  for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < n; ++a) u_e(c * n + a) = u(3 * space.modes[a] + c);
+  return u_e;
+}
+
+SolidSolution solve_solid(const SolidSpec& spec, const SolidDiscretization& d,
+                          const std::string& file) {
+  SolidSolution sol;
+  const auto t0 = Clock::now();
+  fem::HexBody body;
+  body.dofs = &d.dofs;
+  body.maps = d.mesh.maps;
+  body.material = d.material;
+  body.body_force = mesh::Vec3(spec.body.body_force[0], spec.body.body_force[1],
+                               spec.body.body_force[2]);
+  body.context = d.mesh.context;
+  fem::HexSystem system = fem::assemble_hex_elasticity(body, {.condense_internal = true});
+  // Surface loads: face modes are external, so they keep their numbers in the condensed system.
+  for (const FaceLoadSpec& load : spec.body.loads)
+    for (const auto& [h, lf] : faces_of(d.mesh, load.faces)) {
+      const fem::HexElementSpace& space = d.dofs.element(h);
+      const int n_points = fem::hex_face_gauss_points(space.hierarchic, d.mesh.maps[h], lf);
+      const Eigen::VectorXd f =
+          load.pressure ? fem::hex_face_pressure_load(space.hierarchic, d.mesh.maps[h], lf,
+                                                      *load.pressure, n_points)
+                        : fem::hex_face_traction_load(
+                              space.hierarchic, d.mesh.maps[h], lf,
+                              mesh::Vec3((*load.traction)[0], (*load.traction)[1],
+                                         (*load.traction)[2]),
+                              n_points);
+      const int n = space.n_modes();
+      for (int local = 0; local < 3 * n; ++local)
+        if (f(local) != 0) system.f(3 * space.modes[local % n] + local / n) += f(local);
+    }
+  sol.assembly_seconds = seconds_since(t0);
+  sol.n_system = static_cast<int>(system.K.rows()) - static_cast<int>(d.fixed.size());
+  const auto t1 = Clock::now();
+  const Eigen::VectorXd values =
+      Eigen::Map<const Eigen::VectorXd>(d.fixed_values.data(), d.fixed_values.size());
+  Eigen::VectorXd u_external;
+  try {
+    u_external = fem::solve_with_fixed_dofs(system.K, system.f, d.fixed, values).col(0);
+  } catch (const NumericalError& e) {
+    throw NumericalError(file + ": body '" + spec.body.name +
+                         "': the stiffness cannot be factorised — is the body held against every "
+                         "rigid motion (three translations, three rotations)? (" + e.what() + ")");
+  }
+  sol.u = system.recover(d.dofs, u_external);
+  sol.solve_seconds = seconds_since(t1);
+  return sol;
+}
+
+}  // namespace hpcontact::model
