@@ -9,12 +9,12 @@
 W = 10;       // half width
 a = 0.2 * W;  // hole radius
 L = 2 * W;    // half length
-t = 2;        // thickness
+DefineConstant[ t = 2 ];        // thickness (gmsh -setnumber t 0.2 ... for a thin plate)
+DefineConstant[ n_thick = 2 ];  // elements through the thickness
 n_arc = 3;    // elements along each half of the hole's quarter arc
 n_radial = 4; // elements from the hole to the square x, y <= W
 grade = 1.3;  // element length ratio from the hole outwards
 n_end = 3;    // elements along x from x = W to x = L
-n_thick = 2;  // elements through the thickness
 Point(1) = {0, 0, 0};                          // the hole's centre
 Point(2) = {a, 0, 0};
 Point(3) = {a * Cos(Pi/4), a * Sin(Pi/4), 0};

@@ -123,7 +123,7 @@ def test_check_describes_a_3d_problem(hpcontact, box):
      "box.yaml:8:18: bodies[0].constraints[0].faces[0]: no face set of that name in the body's "
      "mesh (it has: x0, x1, y0, y1, z0, z1; got 'left')"),
     ("    constraints:", "    shell_octant: {inner_radius: 1, outer_radius: 2}\n    constraints:",
-     "bodies[0]: has two meshes: give one of box and shell_octant"),
+     "bodies[0]: has more than one mesh: give one of box, shell_octant and gmsh"),
     ("to: [4, 1, 0.5]", "to: [4, 1, -1]",
      "bodies[0].box.to: must be larger than from in every coordinate (coordinate 2: -1 <= 0)"),
     ("discretization:", "  - {name: b, material: {E: 1, nu: 0}, box: {from: [0,0,0], to: [1,1,1]}}"
@@ -158,3 +158,39 @@ def test_a_wrong_3d_value_from_the_command_line_is_a_usage_error(hpcontact, box,
     r = hpcontact("run", box, "--out", str(tmp_path / "out"), "-q", "--set", "dimension=2")
     assert r.returncode == 2
     assert "dimension (from --set): must be >= 3 (got 2)" in r.stderr
+
+
+def test_a_gmsh_body_and_its_wrong_inputs(hpcontact, root, tmp_path):
+    """A 3D body from a gmsh file (examples/plate-hole-3d): its face sets are the physical
+    surfaces, the effective input names the file by its absolute path (input.yaml runs from its
+    own folder), and an unknown volume, an unknown face set and a missing file are refused by
+    their keys."""
+    mesh = os.path.join(root, "examples", "plate-hole-3d", "plate-thin.msh")
+    text = f"""case: plate
+dimension: 3
+bodies:
+  - name: plate
+    material: {{E: 1000, nu: 0.25}}
+    gmsh: {{file: {mesh}, volumes: [plate]}}
+    constraints:
+      - {{faces: [x0], ux: 0}}
+      - {{faces: [y0], uy: 0}}
+      - {{faces: [z0], uz: 0}}
+    loads:
+      - {{faces: [end], pressure: -1}}
+discretization: {{degree: 2}}
+"""
+    path = tmp_path / "plate.yaml"
+    path.write_text(text)
+    first = run_ok(hpcontact, str(path), str(tmp_path / "a"))
+    again = run_ok(hpcontact, str(tmp_path / "a" / "input.yaml"), str(tmp_path / "b"))
+    assert again["strain_energy"] == first["strain_energy"] and first["elements"] == 33
+    for old, new, message in [
+            ("volumes: [plate]", "volumes: [steel]",
+             "bodies[0].gmsh.volumes[0]: no 3D physical group of that name"),
+            ("faces: [end]", "faces: [top]", "no face set of that name in the body's mesh (it "
+             "has: end, hole, side, x0, y0, z0, z1; got 'top')"),
+            ("plate-thin.msh", "missing.msh", "bodies[0].gmsh.file: ")]:
+        bad = tmp_path / "bad.yaml"
+        bad.write_text(text.replace(old, new))
+        expect_refused(hpcontact, str(bad), str(tmp_path / "bad"), [], message, 1)

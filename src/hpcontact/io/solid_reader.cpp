@@ -3,8 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
+#include "hpcontact/core/error.hpp"
+#include "hpcontact/io/gmsh_hex_import.hpp"
+#include "hpcontact/io/gmsh_import.hpp"
 #include "hpcontact/io/problem_reader.hpp"
 #include "hpcontact/io/schema_check.hpp"
 #include "hpcontact/io/solid_schema.hpp"
@@ -70,7 +74,9 @@ class SolidSpecBuilder {
     b.youngs_modulus = number(node["material"]["E"]);
     b.poisson_ratio = number(node["material"]["nu"]);
     b.mesh = mesh(node, path);
-    const std::vector<std::string> sets = solid_face_set_names(b.mesh.kind);
+    std::vector<std::string> sets = solid_face_set_names(b.mesh.kind);
+    if (b.mesh.imported)
+      for (const auto& [name, faces] : b.mesh.imported->face_sets) sets.push_back(name);
     if (const YAML::Node list = node["constraints"])
       for (std::size_t i = 0; i < list.size(); ++i) {
         const std::string p = join_index(path + ".constraints", i);
@@ -103,11 +109,11 @@ class SolidSpecBuilder {
 
   SolidMeshSpec mesh(const YAML::Node& node, const std::string& path) {
     SolidMeshSpec m;
-    const int given = (node["box"] ? 1 : 0) + (node["shell_octant"] ? 1 : 0);
+    const int given = (node["box"] ? 1 : 0) + (node["shell_octant"] ? 1 : 0) + (node["gmsh"] ? 1 : 0);
     if (given != 1)
       source_.fail(node, path,
-                   given == 0 ? "has no mesh: give box or shell_octant"
-                              : "has two meshes: give one of box and shell_octant");
+                   given == 0 ? "has no mesh: give box, shell_octant or gmsh"
+                              : "has more than one mesh: give one of box, shell_octant and gmsh");
     if (const YAML::Node box = node["box"]) {
       m.kind = SolidMeshKind::box;
       m.from = point3(box["from"]);
@@ -120,6 +126,10 @@ class SolidSpecBuilder {
                            std::to_string(k) + ": " + shown_value(box["to"][k]) + " <= " +
                            shown_value(box["from"][k]) + ")");
       m.where = source_.where(box, path + ".box");
+    } else if (YAML::Node g = node["gmsh"]) {
+      m.kind = SolidMeshKind::gmsh;
+      m.where = source_.where(g, path + ".gmsh");
+      m.imported = std::make_shared<const mesh::HexMesh>(gmsh_body(g, path + ".gmsh"));
     } else {
       const YAML::Node shell = node["shell_octant"];
       m.kind = SolidMeshKind::shell_octant;
@@ -133,6 +143,31 @@ class SolidSpecBuilder {
       m.where = source_.where(shell, path + ".shell_octant");
     }
     return m;
+  }
+
+  /// The body of a gmsh section; its file is written back as an absolute path (the effective
+  /// input then runs from any folder).
+  mesh::HexMesh gmsh_body(YAML::Node g, const std::string& path) {
+    std::filesystem::path file(g["file"].Scalar());
+    if (file.is_relative()) file = std::filesystem::path(source_.file()).parent_path() / file;
+    GmshVolumeMesh parsed;
+    try {
+      parsed = read_gmsh_volume(file.string());
+    } catch (const IoError& e) {
+      throw IoError(source_.where(g["file"], path + ".file").str() + ": " + e.what());
+    }
+    HexImportOptions options;
+    if (g["volumes"]) options.volumes = names(g["volumes"]);
+    mesh::HexMesh body;
+    try {
+      body = import_gmsh_hex_body(parsed, options);
+    } catch (const GmshOptionError& e) {
+      // its key is "volumes[i]"
+      const std::size_t i = std::stoul(e.key.substr(e.key.find('[') + 1));
+      source_.fail(g["volumes"][i], path + "." + e.key, e.what_text);
+    }
+    g["file"] = std::filesystem::absolute(file).lexically_normal().string();
+    return body;
   }
 
   std::vector<std::string> face_sets(const YAML::Node& node, const std::string& path,
@@ -152,9 +187,9 @@ class SolidSpecBuilder {
   /// Unknowns ~ elements × 3 (p_xi + 1)(p_eta + 1)(p_zeta + 1), bounded as a 2D problem's are.
   void require_bounded_work(const SolidSpec& s, const YAML::Node& root) {
     const auto& m = s.body.mesh;
-    const double elements = m.kind == SolidMeshKind::box
-                                ? double(m.elements[0]) * m.elements[1] * m.elements[2]
-                                : 3.0 * m.layers;
+    const double elements = m.kind == SolidMeshKind::box ? double(m.elements[0]) * m.elements[1] * m.elements[2]
+                            : m.kind == SolidMeshKind::gmsh ? m.imported->topology.n_hexes()
+                                                            : 3.0 * m.layers;
     const double unknowns =
         elements * 3 * (s.degree[0] + 1.0) * (s.degree[1] + 1.0) * (s.degree[2] + 1.0);
     if (unknowns > kMaxUnknowns) {
@@ -177,8 +212,12 @@ bool is_solid_problem(const YAML::Node& root) {
 }
 
 std::vector<std::string> solid_face_set_names(SolidMeshKind kind) {
-  if (kind == SolidMeshKind::box) return {"x0", "x1", "y0", "y1", "z0", "z1"};
-  return {"inner", "outer", "x0", "y0", "z0"};
+  switch (kind) {
+    case SolidMeshKind::box: return {"x0", "x1", "y0", "y1", "z0", "z1"};
+    case SolidMeshKind::shell_octant: return {"inner", "outer", "x0", "y0", "z0"};
+    case SolidMeshKind::gmsh: break;
+  }
+  return {};  // the file's physical surfaces
 }
 
 ProblemSpec solid_problem(YAML::Node& root, YamlSource& source) {

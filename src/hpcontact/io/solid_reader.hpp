@@ -22,7 +22,8 @@ bool is_solid_problem(const YAML::Node& root);
 /// file, line, key and cause.
 model::ProblemSpec solid_problem(YAML::Node& root, YamlSource& source);
 
-/// The face sets a generated mesh has, in the order the docs list them.
+/// The face sets a generated mesh has, in the order the docs list them (none for gmsh: those are
+/// the file's physical surfaces).
 std::vector<std::string> solid_face_set_names(model::SolidMeshKind kind);
 
 }  // namespace hpcontact::io

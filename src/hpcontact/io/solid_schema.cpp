@@ -33,7 +33,8 @@ const Schema& solid_schema() {
        .doc = "Poisson's ratio.", .lower = greater_than(-1), .upper = less_than(0.5)},
 
       {.path = "bodies[].box", .type = T::section,
-       .doc = "The mesh: a box of equal hexahedra (give one of box, shell_octant). Its face sets: "
+       .doc = "The mesh: a box of equal hexahedra (give one of box, shell_octant, gmsh). Its face "
+              "sets: "
               "x0, x1 (the faces x = from.x and x = to.x), y0, y1, z0, z1."},
       {.path = "bodies[].box.from", .type = T::point3, .required = true, .unit = "length",
        .doc = "The corner with the smallest coordinates, [x, y, z]."},
@@ -54,6 +55,18 @@ const Schema& solid_schema() {
       {.path = "bodies[].shell_octant.layers", .type = T::integer, .default_yaml = "1",
        .doc = "Element layers through the wall.", .lower = at_least(1), .upper = at_most(50),
        .upper_why = "a p-version shell needs a few layers; more is an h-version mesh"},
+
+      {.path = "bodies[].gmsh", .type = T::section,
+       .doc = "The mesh from a Gmsh file (MSH 4.1 ASCII, gmsh -3 -format msh41): its hexahedra "
+              "of 8, 20 or 27 nodes (-order 2: curved faces as quadratic surfaces; 20-node ones "
+              "completed by their serendipity map), its physical surfaces on the body's boundary "
+              "as face sets. Tetrahedra, prisms and pyramids are refused with their counts."},
+      {.path = "bodies[].gmsh.file", .type = T::string, .required = true,
+       .doc = "The .msh file, relative to the problem file's folder (the effective input gives "
+              "it as an absolute path, so that input.yaml runs from anywhere)."},
+      {.path = "bodies[].gmsh.volumes", .type = T::string_list,
+       .doc = "Physical volumes whose hexahedra make the body; absent: every volume element.",
+       .min_items = 1},
 
       {.path = "bodies[].constraints", .type = T::section_list,
        .doc = "Prescribed displacements on face sets (the component's value on every mode of "

@@ -92,8 +92,14 @@ std::vector<mesh::ElementFace> faces_of(const mesh::HexMesh& m,
 }  // namespace
 
 mesh::HexMesh solid_mesh(const SolidMeshSpec& spec, const std::string& context) {
-  if (spec.kind == SolidMeshKind::box) return box_mesh(spec.from, spec.to, spec.elements, context);
-  return shell_mesh(spec, context);
+  switch (spec.kind) {
+    case SolidMeshKind::box: return box_mesh(spec.from, spec.to, spec.elements, context);
+    case SolidMeshKind::shell_octant: return shell_mesh(spec, context);
+    case SolidMeshKind::gmsh: break;
+  }
+  mesh::HexMesh m = *spec.imported;
+  m.context = context + " (" + m.context + ")";
+  return m;
 }
 
 SolidDiscretization discretize_solid(const SolidSpec& spec, const std::string& file) {

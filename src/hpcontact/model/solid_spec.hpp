@@ -2,17 +2,19 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "hpcontact/mesh/hex_mesh.hpp"
 #include "hpcontact/model/problem_spec.hpp"
 
 namespace hpcontact::model {
 
 using Point3 = std::array<double, 3>;
 
-enum class SolidMeshKind { box, shell_octant };
+enum class SolidMeshKind { box, shell_octant, gmsh };
 
 /// Where a 3D body's mesh comes from: a generator and its parameters.
 struct SolidMeshSpec {
@@ -21,6 +23,9 @@ struct SolidMeshSpec {
   std::array<int, 3> elements{1, 1, 1};  ///< box: elements along x, y, z
   double inner_radius = 0, outer_radius = 0;  ///< shell_octant
   int layers = 1;                             ///< shell_octant
+  /// gmsh: the body as read from its file (io reads it with the problem file, as the 2D path
+  /// expands a body's gmsh section into its nodes and elements).
+  std::shared_ptr<const mesh::HexMesh> imported;
   SourceRef where;
 };
 
