@@ -194,3 +194,16 @@ discretization: {{degree: 2}}
         bad = tmp_path / "bad.yaml"
         bad.write_text(text.replace(old, new))
         expect_refused(hpcontact, str(bad), str(tmp_path / "bad"), [], message, 1)
+
+
+def test_a_surface_that_the_faces_are_not_on_is_refused(hpcontact, root, tmp_path):
+    """bodies[].surfaces with a radius the hole's nodes are not at: refused naming the surface's
+    key and the element (the vertices must lie on it)."""
+    case = os.path.join(root, "examples", "plate-hole-3d", "plate-hole-3d.yaml")
+    text = open(case).read().replace("radius: 2}", "radius: 2.1}")
+    assert "radius: 2.1}" in text
+    bad = tmp_path / "plate.yaml"
+    bad.write_text(text.replace("plate-thin.msh", os.path.join(os.path.dirname(case), "plate-thin.msh")))
+    r = hpcontact("run", str(bad), "--out", str(tmp_path / "out"), "-q")
+    assert r.returncode == 1, r.stderr
+    assert "bodies[0].surfaces[0]: element 0 of the mesh: vertex V0 is not on cylinder(" in r.stderr

@@ -77,6 +77,25 @@ class SolidSpecBuilder {
     std::vector<std::string> sets = solid_face_set_names(b.mesh.kind);
     if (b.mesh.imported)
       for (const auto& [name, faces] : b.mesh.imported->face_sets) sets.push_back(name);
+    if (const YAML::Node list = node["surfaces"])
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string p = join_index(path + ".surfaces", i);
+        SurfaceSpec s;
+        s.faces = face_sets(list[i]["faces"], p + ".faces", sets);
+        const YAML::Node cylinder = list[i]["cylinder"], sphere = list[i]["sphere"];
+        if (cylinder.IsDefined() == sphere.IsDefined())
+          source_.fail(list[i], p, "give one of cylinder and sphere");
+        s.sphere = sphere.IsDefined();
+        s.point = point3(s.sphere ? sphere["centre"] : cylinder["point"]);
+        if (!s.sphere) {
+          s.axis = point3(cylinder["axis"]);
+          if (s.axis == Point3{0, 0, 0})
+            source_.fail(cylinder["axis"], p + ".cylinder.axis", "must not be zero");
+        }
+        s.radius = number(s.sphere ? sphere["radius"] : cylinder["radius"]);
+        s.where = source_.where(list[i], p);
+        b.surfaces.push_back(std::move(s));
+      }
     if (const YAML::Node list = node["constraints"])
       for (std::size_t i = 0; i < list.size(); ++i) {
         const std::string p = join_index(path + ".constraints", i);

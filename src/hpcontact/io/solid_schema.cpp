@@ -68,6 +68,28 @@ const Schema& solid_schema() {
        .doc = "Physical volumes whose hexahedra make the body; absent: every volume element.",
        .min_items = 1},
 
+      {.path = "bodies[].surfaces", .type = T::section_list,
+       .doc = "Exact geometry of curved boundary faces: every element with a face in the named "
+              "sets gets the blending map that puts that face (and its edges) on the surface, "
+              "instead of the mesh's straight or quadratic face. Each element's vertices must lie "
+              "on the surface (to 1e-10 of its size); an element that touches a surface with an "
+              "edge but no face in the sets is refused."},
+      {.path = "bodies[].surfaces[].faces", .type = T::string_list, .required = true,
+       .doc = "Names of face sets on the surface.", .min_items = 1},
+      {.path = "bodies[].surfaces[].cylinder", .type = T::section,
+       .doc = "A circular cylinder (give one of cylinder, sphere)."},
+      {.path = "bodies[].surfaces[].cylinder.point", .type = T::point3, .required = true,
+       .unit = "length", .doc = "A point of its axis."},
+      {.path = "bodies[].surfaces[].cylinder.axis", .type = T::point3, .required = true,
+       .doc = "The axis direction (any length but zero)."},
+      {.path = "bodies[].surfaces[].cylinder.radius", .type = T::number, .required = true,
+       .unit = "length", .doc = "Radius.", .lower = greater_than(0)},
+      {.path = "bodies[].surfaces[].sphere", .type = T::section, .doc = "A sphere."},
+      {.path = "bodies[].surfaces[].sphere.centre", .type = T::point3, .required = true,
+       .unit = "length", .doc = "Centre."},
+      {.path = "bodies[].surfaces[].sphere.radius", .type = T::number, .required = true,
+       .unit = "length", .doc = "Radius.", .lower = greater_than(0)},
+
       {.path = "bodies[].constraints", .type = T::section_list,
        .doc = "Prescribed displacements on face sets (the component's value on every mode of "
               "the faces: constant over them)."},

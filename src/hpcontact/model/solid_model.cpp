@@ -10,6 +10,7 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/hex_assembly.hpp"
 #include "hpcontact/fem/hex_face_load.hpp"
+#include "hpcontact/geometry/blending_hex.hpp"
 #include "hpcontact/mesh/shell_octant.hpp"
 
 namespace hpcontact::model {
@@ -89,6 +90,70 @@ std::vector<mesh::ElementFace> faces_of(const mesh::HexMesh& m,
   return faces;
 }
 
+/// Whether local edge le of a hexahedron lies on local face lf.
+bool edge_on_face(int le, int lf) {
+  const auto& f = basis::kHexFaceVertices[lf];
+  const auto on = [&](int v) { return std::find(std::begin(f), std::end(f), v) != std::end(f); };
+  return on(basis::kHexEdgeVertices[le][0]) && on(basis::kHexEdgeVertices[le][1]);
+}
+
+geometry::SurfacePtr make_surface(const SurfaceSpec& s) {
+  const mesh::Vec3 p(s.point[0], s.point[1], s.point[2]);
+  if (s.sphere) return std::make_shared<geometry::Sphere>(p, s.radius);
+  return std::make_shared<geometry::Cylinder>(p, mesh::Vec3(s.axis[0], s.axis[1], s.axis[2]),
+                                              s.radius);
+}
+
+/// Gives every element with a face in a surface's sets the blending map that puts the face on
+/// the surface. Refused (InputError naming the element and the surface's key): a face in two
+/// surfaces' sets, vertices off the surface (blending_hex), an element that shares an edge with
+/// a face on a surface without a face of its own there (its edge would stay straight while its
+/// neighbour's is curved: a gap in the body).
+void put_faces_on_surfaces(mesh::HexMesh& m, const std::vector<SurfaceSpec>& surfaces) {
+  const int n = m.topology.n_hexes();
+  std::vector<std::array<geometry::SurfacePtr, 6>> on(n);
+  std::map<const geometry::Surface*, const SurfaceSpec*> spec_of;
+  for (const SurfaceSpec& s : surfaces) {
+    const geometry::SurfacePtr surface = make_surface(s);
+    spec_of[surface.get()] = &s;
+    for (const auto& [h, lf] : faces_of(m, s.faces)) {
+      HPC_REQUIRE(!on[h][lf] || on[h][lf] == surface, InputError, s.where.str(), ": face ", lf,
+                  " of element ", h, " of ", m.context, " is also in the sets of ",
+                  spec_of[on[h][lf].get()]->where.key, ": a face lies on one surface");
+      on[h][lf] = surface;
+    }
+  }
+  std::map<int, const geometry::Surface*> curved_edge;  // global edge -> its surface
+  for (int h = 0; h < n; ++h)
+    for (int lf = 0; lf < 6; ++lf)
+      if (on[h][lf])
+        for (int le = 0; le < 12; ++le)
+          if (edge_on_face(le, lf)) curved_edge[m.topology.hex_edge(h, le)] = on[h][lf].get();
+  for (int h = 0; h < n; ++h) {
+    bool curved = false;
+    for (int le = 0; le < 12; ++le) {
+      const auto it = curved_edge.find(m.topology.hex_edge(h, le));
+      if (it == curved_edge.end()) continue;
+      bool own = false;
+      for (int lf = 0; lf < 6; ++lf) own = own || (on[h][lf].get() == it->second && edge_on_face(le, lf));
+      HPC_REQUIRE(own, InputError, spec_of[it->second]->where.str(), ": element ", h, " of ",
+                  m.context, " shares an edge with a face on this surface but has no face in its "
+                  "sets: its edge would stay straight beside its neighbour's curved one (add its "
+                  "face to the set, or mesh so that the surface is met by faces only)");
+      curved = true;
+    }
+    if (!curved) continue;
+    std::array<mesh::Vec3, 8> vertices;
+    for (int c = 0; c < 8; ++c) vertices[c] = m.nodes[m.topology.hex(h)[c]];
+    // messages name the input key of (the first of) the element's surfaces
+    const geometry::Surface* first = nullptr;
+    for (int lf = 0; lf < 6 && !first; ++lf) first = on[h][lf].get();
+    const std::string context = spec_of[first]->where.str() + ": element " + std::to_string(h) +
+                                " of the mesh" + (m.nodes.empty() ? "" : "");
+    m.maps[h] = mesh::HexMap::blending(geometry::blending_hex(vertices, on[h], context.c_str()));
+  }
+}
+
 }  // namespace
 
 mesh::HexMesh solid_mesh(const SolidMeshSpec& spec, const std::string& context) {
@@ -105,6 +170,7 @@ mesh::HexMesh solid_mesh(const SolidMeshSpec& spec, const std::string& context) 
 SolidDiscretization discretize_solid(const SolidSpec& spec, const std::string& file) {
   const std::string context = file + ": body '" + spec.body.name + "'";
   mesh::HexMesh m = solid_mesh(spec.body.mesh, context);
+  put_faces_on_surfaces(m, spec.body.surfaces);
   fem::HexSpaceOptions options;
   options.space = spec.tensor_space ? basis::Space::tensor_product : basis::Space::trunk;
   options.degrees.assign(m.topology.n_hexes(), spec.degree);

@@ -44,10 +44,20 @@ struct FaceLoadSpec {
   SourceRef where;
 };
 
+/// An exact surface that named face sets lie on.
+struct SurfaceSpec {
+  std::vector<std::string> faces;
+  bool sphere = false;  ///< false: a cylinder
+  Point3 point{}, axis{};  ///< cylinder: a point of its axis and its direction; sphere: centre
+  double radius = 0;
+  SourceRef where;
+};
+
 struct SolidBodySpec {
   std::string name;
   double youngs_modulus = 0, poisson_ratio = 0;
   SolidMeshSpec mesh;
+  std::vector<SurfaceSpec> surfaces;
   std::vector<FaceConstraintSpec> constraints;
   std::vector<FaceLoadSpec> loads;
   Point3 body_force{};
