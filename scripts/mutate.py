@@ -232,9 +232,9 @@ MUTATIONS = [
               "BoundaryTrack.MovedNodeStaysOnTheCircleAndTheMeshStaysValid"]),
     # post
     Mutation("von-mises-shear", "post", S + "post/fields.cpp",
-             "                   3 * sxy * sxy);",
-             "                   2 * sxy * sxy);",
-             "von Mises with 2 σxy² instead of 3 σxy²",
+             "                   3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));",
+             "                   2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));",
+             "von Mises with 2 τ² instead of 3 τ² (the plane and the 3D fields share it)",
              ["VonMises.HandValues", "Lame.PostProcessedStressesAreLames",
               "cli:tests/cli/test_vtu_output.py::test_stress_fields_of_lame_cylinder"]),
     Mutation("principal-order", "post", S + "post/fields.cpp",
