@@ -69,7 +69,7 @@ OctantSolution solve_octant(int p, bool fine_energy = false) {
   fem::HexSystem system = fem::assemble_hex_elasticity(body, assembly);
 
   // The pressure acts on boundary faces, where only external modes are non-zero.
-  for (const auto& [h, lf] : m.inner) {
+  for (const auto& [h, lf] : m.face_sets.at("inner")) {
     const fem::HexElementSpace& space = dofs.element(h);
     const Eigen::VectorXd f = fem::hex_face_pressure_load(
         space.hierarchic, m.maps[h], lf, kPressure,
@@ -80,8 +80,9 @@ OctantSolution solve_octant(int p, bool fine_energy = false) {
         system.f(3 * space.modes[r % n] + r / n) += f(r);
   }
   std::set<int> fixed_set;
+  const char* plane[3] = {"x0", "y0", "z0"};
   for (int i = 0; i < 3; ++i)
-    for (const auto& [h, lf] : m.symmetry[i]) add_face_dofs(m.topology, dofs, h, lf, i, fixed_set);
+    for (const auto& [h, lf] : m.face_sets.at(plane[i])) add_face_dofs(m.topology, dofs, h, lf, i, fixed_set);
   const std::vector<int> fixed(fixed_set.begin(), fixed_set.end());
   const Eigen::VectorXd u =
       fem::solve_with_fixed_dofs(system.K, system.f, fixed,
@@ -104,7 +105,7 @@ OctantSolution solve_octant(int p, bool fine_energy = false) {
     const Eigen::MatrixXd K = fem::hex_stiffness(v, body.material);
     out.energy_fine += 0.5 * u_e.dot(K * u_e);
   }
-  for (const auto& [h, lf] : m.inner) {
+  for (const auto& [h, lf] : m.face_sets.at("inner")) {
     const fem::HexElementSpace& space = dofs.element(h);
     const int n = space.n_modes();
     std::vector<double> N(n);

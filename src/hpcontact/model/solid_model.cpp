@@ -63,16 +63,7 @@ mesh::HexMesh box_mesh(const Point3& from, const Point3& to, std::array<int, 3> 
 }
 
 mesh::HexMesh shell_mesh(const SolidMeshSpec& s, const std::string& context) {
-  mesh::ShellOctantMesh shell = mesh::shell_octant_mesh(s.inner_radius, s.outer_radius, s.layers);
-  mesh::HexMesh m;
-  m.face_sets["inner"] = shell.inner;
-  m.face_sets["outer"] = shell.outer;
-  m.face_sets["x0"] = shell.symmetry[0];
-  m.face_sets["y0"] = shell.symmetry[1];
-  m.face_sets["z0"] = shell.symmetry[2];
-  m.topology = std::move(shell.topology);
-  m.nodes = std::move(shell.nodes);
-  m.maps = std::move(shell.maps);
+  mesh::HexMesh m = mesh::shell_octant_mesh(s.inner_radius, s.outer_radius, s.layers);
   m.context = context;
   return m;
 }

@@ -103,8 +103,8 @@ TEST(HexFaceLoad, SphericalOctantResultant) {
   for (int p = 1; p <= 8; ++p) {
     const basis::HierarchicHex e = basis::hierarchic_hex({p, p, p}, basis::Space::tensor_product);
     Vec3 outer = Vec3::Zero(), inner = Vec3::Zero();
-    for (const auto& [h, lf] : shell.outer) outer += face_resultant(e, shell.maps[h], lf, pressure);
-    for (const auto& [h, lf] : shell.inner) inner += face_resultant(e, shell.maps[h], lf, pressure);
+    for (const auto& [h, lf] : shell.face_sets.at("outer")) outer += face_resultant(e, shell.maps[h], lf, pressure);
+    for (const auto& [h, lf] : shell.face_sets.at("inner")) inner += face_resultant(e, shell.maps[h], lf, pressure);
     const double exact_outer = pressure * pi * b * b / 4, exact_inner = pressure * pi * a * a / 4;
     for (int c = 0; c < 3; ++c) {
       EXPECT_NEAR(outer(c) / -exact_outer, 1, quadrature_tolerance(p + 4)) << "p = " << p << ", axis " << c;

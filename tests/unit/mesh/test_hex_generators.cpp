@@ -1,6 +1,6 @@
-// Property tests of the structured hexahedral meshes (box, cylinder sector): counts, face sets
-// that cover the boundary and lie on their planes and cylinders, exact volumes, the polar map of
-// the sector, the refusal of bad arguments; and the checks every HexMesh passes.
+// Property tests of the structured hexahedral meshes (box, cylinder sector, shell octant): counts,
+// face sets that cover the boundary and lie on their planes and cylinders, exact volumes, the
+// polar map of the sector, the refusal of bad arguments; and the checks every HexMesh passes.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,6 +16,7 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/mesh/cylinder_sector.hpp"
 #include "hpcontact/mesh/hex_box.hpp"
+#include "hpcontact/mesh/shell_octant.hpp"
 
 using namespace hpcontact;
 using mesh::Mat3;
@@ -171,6 +172,17 @@ TEST(CylinderSector, CountsFaceSetsPolarMapAndVolume) {
   const double exact = (c.angle1 - c.angle0) *
                        (c.outer_radius * c.outer_radius - c.inner_radius * c.inner_radius) * c.length / 2;
   EXPECT_NEAR(volume(m, 2) / exact, 1, 1e-14);
+}
+
+// The shell octant's five face sets ("inner", "outer", "x0", "y0", "z0") shall hold every boundary
+// face once, for one and for three layers (their surfaces: BlendingHex.ShellOctantFacesLieOnTheirSurfaces).
+TEST(ShellOctant, FaceSetsPartitionTheBoundary) {
+  for (int n_layers : {1, 3}) {
+    const mesh::HexMesh m = mesh::shell_octant_mesh(1, 2, n_layers);
+    EXPECT_EQ(m.topology.n_hexes(), 3 * n_layers);
+    EXPECT_EQ(m.face_sets.size(), 5u);
+    expect_sets_partition_the_boundary(m);
+  }
 }
 
 // Bad arguments shall be refused with an InputError that names the bad value.
