@@ -1,4 +1,5 @@
-// Pressure loads on hexahedron faces by Gauss quadrature over the face's reference square.
+// Pressure and traction loads on hexahedron faces by Gauss quadrature over the face's reference
+// square.
 #include "hpcontact/fem/hex_face_load.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Consistent nodal forces of a pressure on one face of a hexahedron.
+// Consistent nodal forces of a pressure or a traction on one face of a hexahedron.
 #pragma once
 
 #include <array>
