@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "hpcontact/mesh/hex_mesh.hpp"
 
@@ -15,5 +16,13 @@ namespace hpcontact::mesh {
 /// boundary nodes lie on their planes exactly (lerp gives the ends).
 /// Throws InputError unless lower < upper in every coordinate and every n[d] >= 1.
 HexMesh hex_box_mesh(const Vec3& lower, const Vec3& upper, std::array<int, 3> n);
+
+/// The box planes[0].front() <= x <= planes[0].back() (and so for y, z) cut at the planes
+/// x = planes[0][i], y = planes[1][j], z = planes[2][k] into (planes[d].size() − 1) elements along
+/// each axis d, of any lengths (e.g. graded towards a clamped end); numbering and face sets as
+/// above, with n[d] = planes[d].size() − 1 and node (i, j, k) at (planes[0][i], planes[1][j],
+/// planes[2][k]).
+/// Throws InputError unless each planes[d] has two or more entries, strictly increasing.
+HexMesh hex_box_mesh(const std::array<std::vector<double>, 3>& planes);
 
 }  // namespace hpcontact::mesh

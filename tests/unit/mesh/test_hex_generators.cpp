@@ -110,6 +110,28 @@ TEST(HexBox, CountsFaceSetsAndVolume) {
   EXPECT_NEAR(volume(m, 2) / (upper - lower).prod(), 1, 1e-12);
 }
 
+// The box cut at given planes (x = 0, 0.1, 0.4, 1.5; y = -1, 2; z = 0, 0.3, 0.5) shall have its
+// nodes on those planes, 6 elements, face sets as the equal box's, and its volume to 1e-12.
+TEST(HexBox, GivenPlanes) {
+  const std::array<std::vector<double>, 3> planes{std::vector<double>{0, 0.1, 0.4, 1.5},
+                                                  std::vector<double>{-1, 2},
+                                                  std::vector<double>{0, 0.3, 0.5}};
+  const mesh::HexMesh m = mesh::hex_box_mesh(planes);
+  EXPECT_EQ(m.topology.n_hexes(), 6);
+  ASSERT_EQ(m.topology.n_nodes(), 4 * 2 * 3);
+  for (int k = 0, a = 0; k < 3; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 4; ++i, ++a)
+        EXPECT_EQ(m.nodes[a], Vec3(planes[0][i], planes[1][j], planes[2][k])) << "node " << a;
+  const std::map<std::string, int> sizes{{"x0", 2}, {"x1", 2}, {"y0", 6},
+                                         {"y1", 6}, {"z0", 3}, {"z1", 3}};
+  for (const auto& [name, size] : sizes)
+    EXPECT_EQ(static_cast<int>(m.face_sets.at(name).size()), size) << name;
+  EXPECT_LE(farthest(m, "x1", [](const Vec3& x) { return x.x() - 1.5; }), 1e-15);
+  expect_sets_partition_the_boundary(m);
+  EXPECT_NEAR(volume(m, 2) / (1.5 * 3 * 0.5), 1, 1e-12);
+}
+
 // The cylinder sector a = 0.5 <= r <= b = 1.25, 0.2 <= θ <= 2.4, 0 <= z <= 1.5 in 2 × 3 × 2
 // elements shall have 12 elements and 3 · 4 · 3 nodes; its sets "inner", "outer" hold n_θ·n_z
 // faces, "theta0", "theta1" n_r·n_z, "z0", "z1" n_r·n_θ, together every boundary face once; the
@@ -192,6 +214,12 @@ TEST(HexGenerators, BadArgumentsAreRefused) {
             std::string::npos);
   EXPECT_NE(input_error([] { mesh::hex_box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), {1, 1, 0}); })
                 .find("along z must be >= 1 (got 0)"),
+            std::string::npos);
+  EXPECT_NE(input_error([] { mesh::hex_box_mesh({std::vector<double>{0, 1}, {0, 1}, {0}}); })
+                .find("the planes along z must be two or more (got 1)"),
+            std::string::npos);
+  EXPECT_NE(input_error([] { mesh::hex_box_mesh({std::vector<double>{0, 1, 1}, {0, 1}, {0, 1}}); })
+                .find("the planes along x must increase strictly (got 1 before 1 at 2)"),
             std::string::npos);
   auto sector = [](double a, double b, double t0, double t1, double length, std::array<int, 3> n) {
     return input_error([=] { mesh::cylinder_sector_mesh({a, b, t0, t1, length}, n); });
