@@ -1002,7 +1002,7 @@ MUTATIONS = [
              "a prescribed displacement given to a face's edge and face modes as well as its vertex modes: not a constant on the face",
              ["cli:tests/cli/test_solid.py::test_a_uniform_stress_is_reproduced_to_round_off"]),
     Mutation("hex-singular-stiffness-solved", "fem", S + "fem/hex_assembly.cpp",
-             "    HPC_REQUIRE(ldlt.vectorD()(i) > 1e-11 * diagonal(i), NumericalError,",
+             "    HPC_REQUIRE(ldlt.vectorD()(i) > kSingularPivotRatio * diagonal(i), NumericalError,",
              "    HPC_REQUIRE(true, NumericalError,",
              "a 3D body free to move rigidly is solved (round-off pivots) instead of refused",
              ["cli:tests/cli/test_solid.py::test_a_wrong_3d_input_is_refused_naming_the_cause"]),

@@ -104,10 +104,16 @@ Eigen::MatrixXd solve_with_fixed_dofs(const Eigen::SparseMatrix<double>& K,
   HPC_REQUIRE(ldlt.info() == Eigen::Success, NumericalError,
               "solve_with_fixed_dofs: the free block of the stiffness cannot be factorised");
   // A singular block (a rigid motion left free) factorises with pivots that are round-off:
-  // refused below 1e-11 of their diagonal entries of P K Pᵀ, as solve/linear_solver does.
+  // refused below kSingularPivotRatio of their diagonal entries of P K Pᵀ, as solve/linear_solver
+  // does with 1e-11. Lower here, since a slender solid's bending is a legitimately small pivot:
+  // a cantilever of one hexahedron through its section, clamped, has the smallest ratio
+  // 6.2e-8 at L = 100 h and 6.2e-12 at 1000 h (4 elements; 1.6e-11 to 2.0e-11 with 8 or 10;
+  // it falls like (h/L)⁴, tests/verification/test_hex_cantilever.cpp), while a free box, beam or
+  // octant (p = 1..8) gives negative pivots or positive ones <= 7.3e-16.
+  constexpr double kSingularPivotRatio = 1e-13;
   const Eigen::VectorXd diagonal = ldlt.permutationP() * Eigen::VectorXd(K_ff.diagonal());
   for (int i = 0; i < n_free; ++i)
-    HPC_REQUIRE(ldlt.vectorD()(i) > 1e-11 * diagonal(i), NumericalError,
+    HPC_REQUIRE(ldlt.vectorD()(i) > kSingularPivotRatio * diagonal(i), NumericalError,
                 "solve_with_fixed_dofs: the free block of the stiffness is singular (pivot ",
                 ldlt.vectorD()(i), " against the diagonal ", diagonal(i), ")");
   const Eigen::MatrixXd u_free = ldlt.solve(rhs);
