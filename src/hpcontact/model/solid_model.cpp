@@ -11,6 +11,7 @@
 #include "hpcontact/fem/hex_assembly.hpp"
 #include "hpcontact/fem/hex_face_load.hpp"
 #include "hpcontact/geometry/blending_hex.hpp"
+#include "hpcontact/mesh/hex_box.hpp"
 #include "hpcontact/mesh/shell_octant.hpp"
 
 namespace hpcontact::model {
@@ -23,41 +24,11 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-/// A box of nx × ny × nz equal trilinear hexahedra, face sets x0 … z1.
+/// A box of nx × ny × nz equal trilinear hexahedra, face sets x0 … z1 (mesh/hex_box.hpp).
 mesh::HexMesh box_mesh(const Point3& from, const Point3& to, std::array<int, 3> n,
                        const std::string& context) {
-  const auto node = [&](int i, int j, int k) { return (k * (n[1] + 1) + j) * (n[0] + 1) + i; };
-  std::vector<mesh::Vec3> nodes;
-  for (int k = 0; k <= n[2]; ++k)
-    for (int j = 0; j <= n[1]; ++j)
-      for (int i = 0; i <= n[0]; ++i)
-        nodes.emplace_back(from[0] + (to[0] - from[0]) * i / n[0],
-                           from[1] + (to[1] - from[1]) * j / n[1],
-                           from[2] + (to[2] - from[2]) * k / n[2]);
-  std::vector<std::array<int, 8>> hexes;
-  mesh::HexMesh m;
-  for (int k = 0; k < n[2]; ++k)
-    for (int j = 0; j < n[1]; ++j)
-      for (int i = 0; i < n[0]; ++i) {
-        const int h = static_cast<int>(hexes.size());
-        hexes.push_back({node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k),
-                         node(i, j + 1, k), node(i, j, k + 1), node(i + 1, j, k + 1),
-                         node(i + 1, j + 1, k + 1), node(i, j + 1, k + 1)});
-        // local faces (basis/hex_modes.hpp): F0 xi = -1, F1 xi = +1, F2 eta = -1, ...
-        if (i == 0) m.face_sets["x0"].push_back({h, 0});
-        if (i == n[0] - 1) m.face_sets["x1"].push_back({h, 1});
-        if (j == 0) m.face_sets["y0"].push_back({h, 2});
-        if (j == n[1] - 1) m.face_sets["y1"].push_back({h, 3});
-        if (k == 0) m.face_sets["z0"].push_back({h, 4});
-        if (k == n[2] - 1) m.face_sets["z1"].push_back({h, 5});
-      }
-  for (const auto& hex : hexes) {
-    std::array<mesh::Vec3, 8> v;
-    for (int c = 0; c < 8; ++c) v[c] = nodes[hex[c]];
-    m.maps.push_back(mesh::HexMap::trilinear(v));
-  }
-  m.topology = mesh::HexTopology(std::move(hexes), static_cast<int>(nodes.size()), context);
-  m.nodes = std::move(nodes);
+  mesh::HexMesh m = mesh::hex_box_mesh(mesh::Vec3(from[0], from[1], from[2]),
+                                       mesh::Vec3(to[0], to[1], to[2]), n);
   m.context = context;
   return m;
 }
