@@ -583,6 +583,18 @@ MUTATIONS = [
              "no augmentation even where only the contact holds a body",
              ["cli:tests/cli/test_contact_pairs.py::test_o_ring_reports_both_plates_in_balance",
               "cli:tests/cli/test_friction_input.py::test_exact_friction_needs_no_tangential_penalty"]),
+    Mutation("touching-between-nodes-not-active", "model", S + "model/contact_multipliers.cpp",
+             "if (std::min(f1, f2) <= touching) at[j0] = at[j1] = 1;",
+             "if (false) at[j0] = at[j1] = 1;",
+             "only a node touching at its own point starts active, not the two around a point where "
+             "the bodies touch between nodes",
+             ["cli:tests/cli/test_mirror_friction.py::test_touching_between_two_nodes_friction_holds_the_body_from_the_start"]),
+    Mutation("zone-around-one-node-not-resolved", "adapt", S + "adapt/zone_resolution.cpp",
+             "if (end.kind == ZoneEnd::Kind::contact && node_between_ends(*s, nodes, end))",
+             "if (false && node_between_ends(*s, nodes, end))",
+             "a zone whose two ends are nearest to one node in its middle is not refined towards "
+             "it: the node serves one end, the other stays in the coarse element",
+             ["cli:tests/cli/test_roller_block_friction.py::test_hp_gives_each_end_of_a_zone_around_one_node_its_own"]),
     Mutation("shear-not-in-tolerance", "adapt", S + "adapt/error_estimate.hpp",
              "double traction() const { return shear > pressure ? shear : pressure; }",
              "double traction() const { return pressure; }",
