@@ -207,3 +207,17 @@ def test_a_surface_that_the_faces_are_not_on_is_refused(hpcontact, root, tmp_pat
     r = hpcontact("run", str(bad), "--out", str(tmp_path / "out"), "-q")
     assert r.returncode == 1, r.stderr
     assert "bodies[0].surfaces[0]: element 0 of the mesh: vertex V0 is not on cylinder(" in r.stderr
+
+
+def test_a_resultant_scales_the_load_to_that_force(hpcontact, box, tmp_path):
+    """traction [1, 0, 0] on x1 (area 2 × 0.5) with resultant 3: the traction 3 / 1 = 3 = T, the
+    uniform state again; a pressure on all six faces of the box (a closed surface) with a
+    resultant is refused: its integral vanishes."""
+    s = run_ok(hpcontact, box, str(tmp_path / "a"),
+               "bodies[0].loads=[{faces: [x1], traction: [1, 0, 0], resultant: 3}]")
+    assert s["strain_energy"] == pytest.approx(T * T * 3 / (2 * E), rel=1e-11)
+    path = tmp_path / "closed.yaml"
+    path.write_text(BOX.replace("- {faces: [x1], traction: [3.0, 0, 0]}",
+                                "- {faces: [x0, x1, y0, y1, z0, z1], pressure: 1, resultant: 5}"))
+    expect_refused(hpcontact, str(path), str(tmp_path / "b"), [],
+                   "bodies[0].loads[0]: the load's integral over its faces vanishes", 1)

@@ -116,6 +116,7 @@ class SolidSpecBuilder {
         l.faces = face_sets(list[i]["faces"], p + ".faces", sets);
         if (list[i]["traction"]) l.traction = point3(list[i]["traction"]);
         if (list[i]["pressure"]) l.pressure = number(list[i]["pressure"]);
+        if (list[i]["resultant"]) l.resultant = number(list[i]["resultant"]);
         if (l.traction.has_value() == l.pressure.has_value())
           source_.fail(list[i], p, "give one of traction and pressure");
         l.where = source_.where(list[i], p);

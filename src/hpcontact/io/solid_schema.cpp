@@ -110,6 +110,11 @@ const Schema& solid_schema() {
        .doc = "Traction vector [tx, ty, tz], constant over the faces."},
       {.path = "bodies[].loads[].pressure", .type = T::number, .unit = "force/length²",
        .doc = "Pressure, positive pushing into the body (against the outward normal), constant."},
+      {.path = "bodies[].loads[].resultant", .type = T::number, .unit = "force",
+       .doc = "If given, the load is scaled so that the magnitude of its integral over the faces "
+              "equals this (a force on a face set: e.g. traction [0, -1, 0], resultant 500). "
+              "Refused for a load whose integral vanishes (a pressure on a closed surface).",
+       .lower = greater_than(0)},
       {.path = "bodies[].body_force", .type = T::point3, .default_yaml = "[0, 0, 0]",
        .unit = "force/length³", .doc = "Force per volume, [bx, by, bz]."},
 

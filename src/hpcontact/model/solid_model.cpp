@@ -10,6 +10,7 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/hex_assembly.hpp"
 #include "hpcontact/fem/hex_face_load.hpp"
+#include "hpcontact/basis/quadrature.hpp"
 #include "hpcontact/geometry/blending_hex.hpp"
 #include "hpcontact/mesh/hex_box.hpp"
 #include "hpcontact/mesh/shell_octant.hpp"
@@ -116,6 +117,35 @@ void put_faces_on_surfaces(mesh::HexMesh& m, const std::vector<SurfaceSpec>& sur
   }
 }
 
+mesh::Vec3 traction_of(const FaceLoadSpec& load) {
+  return mesh::Vec3((*load.traction)[0], (*load.traction)[1], (*load.traction)[2]);
+}
+
+/// ∫ t dA over the load's faces as given (before any scaling); refused when it vanishes and the
+/// load asks for a resultant.
+mesh::Vec3 load_resultant(const SolidDiscretization& d, const FaceLoadSpec& load) {
+  mesh::Vec3 total = mesh::Vec3::Zero();
+  double area = 0;
+  for (const auto& [h, lf] : faces_of(d.mesh, load.faces)) {
+    const int n_points =
+        fem::hex_face_gauss_points(d.dofs.element(h).hierarchic, d.mesh.maps[h], lf);
+    const auto& rule = basis::gauss_legendre(n_points);
+    for (int i = 0; i < n_points; ++i)
+      for (int j = 0; j < n_points; ++j) {
+        const mesh::Vec3 n_dA = rule.weights[i] * rule.weights[j] *
+                                fem::hex_face_area_normal(d.mesh.maps[h], lf, rule.points[i],
+                                                          rule.points[j]);
+        total += load.pressure ? mesh::Vec3(-*load.pressure * n_dA) : mesh::Vec3(n_dA.norm() * traction_of(load));
+        area += n_dA.norm();
+      }
+  }
+  const double magnitude = load.pressure ? std::abs(*load.pressure) * area : traction_of(load).norm() * area;
+  HPC_REQUIRE(total.norm() > 1e-9 * magnitude, InputError, load.where.str(),
+              ": the load's integral over its faces vanishes (", total.norm(), " of ", magnitude,
+              "), so no scale gives it the resultant asked for");
+  return total;
+}
+
 }  // namespace
 
 mesh::HexMesh solid_mesh(const SolidMeshSpec& spec, const std::string& context) {
@@ -192,22 +222,21 @@ SolidSolution solve_solid(const SolidSpec& spec, const SolidDiscretization& d,
   body.context = d.mesh.context;
   fem::HexSystem system = fem::assemble_hex_elasticity(body, {.condense_internal = true});
   // Surface loads: face modes are external, so they keep their numbers in the condensed system.
-  for (const FaceLoadSpec& load : spec.body.loads)
+  for (const FaceLoadSpec& load : spec.body.loads) {
+    const double scale = load.resultant ? *load.resultant / load_resultant(d, load).norm() : 1.0;
     for (const auto& [h, lf] : faces_of(d.mesh, load.faces)) {
       const fem::HexElementSpace& space = d.dofs.element(h);
       const int n_points = fem::hex_face_gauss_points(space.hierarchic, d.mesh.maps[h], lf);
       const Eigen::VectorXd f =
           load.pressure ? fem::hex_face_pressure_load(space.hierarchic, d.mesh.maps[h], lf,
                                                       *load.pressure, n_points)
-                        : fem::hex_face_traction_load(
-                              space.hierarchic, d.mesh.maps[h], lf,
-                              mesh::Vec3((*load.traction)[0], (*load.traction)[1],
-                                         (*load.traction)[2]),
-                              n_points);
+                        : fem::hex_face_traction_load(space.hierarchic, d.mesh.maps[h], lf,
+                                                      traction_of(load), n_points);
       const int n = space.n_modes();
       for (int local = 0; local < 3 * n; ++local)
-        if (f(local) != 0) system.f(3 * space.modes[local % n] + local / n) += f(local);
+        if (f(local) != 0) system.f(3 * space.modes[local % n] + local / n) += scale * f(local);
     }
+  }
   sol.assembly_seconds = seconds_since(t0);
   sol.n_system = static_cast<int>(system.K.rows()) - static_cast<int>(d.fixed.size());
   const auto t1 = Clock::now();

@@ -41,6 +41,7 @@ struct FaceLoadSpec {
   std::vector<std::string> faces;
   std::optional<Point3> traction;
   std::optional<double> pressure;  ///< positive pushing into the body
+  std::optional<double> resultant;  ///< scale the load to this magnitude of its integral
   SourceRef where;
 };
 
