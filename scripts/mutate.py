@@ -345,7 +345,7 @@ MUTATIONS = [
              "it != cuts.end() && *it < a; ++it) {",
              "the pressure error integrals' pieces straddle the kinks they are given",
              ["PressureErrors.ABreakAtTheOtherZoneEnd"]),
-    Mutation("mean-normal-stress-side", "model", S + "model/contact_results.cpp",
+    Mutation("mean-normal-stress-side", "model", S + "model/boundary_stress.cpp",
              "    if (pair.constraints && pair.constraints->mean_normal) {",
              "    if (false) {",
              "the pressure from stresses of a mean-normal pair projected on the other body's normal",

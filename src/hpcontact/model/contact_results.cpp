@@ -15,7 +15,8 @@
 #include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/fem/finite_strain.hpp"
-#include "hpcontact/model/body_stress.hpp"
+#include "hpcontact/model/boundary_point.hpp"
+#include "hpcontact/model/boundary_stress.hpp"
 #include "hpcontact/model/contact_forces.hpp"
 
 namespace hpcontact::model {
@@ -44,34 +45,6 @@ Vec2 contact_resultant(const Discretization& d, const ContactPair& pair, const E
 
 namespace {
 
-/// The point X of element q displaced by u: X + Σ_a N_a u_a, N the element's shape functions
-/// there.
-Vec2 displaced(const Body& body, int q, const Eigen::VectorXd& N, const Vec2& X,
-               const Eigen::VectorXd& u) {
-  const auto& es = body.dofs.element(q);
-  Vec2 x = X;
-  for (int a = 0; a < es.n_modes(); ++a) {
-    const int dof = body.dof_offset + 2 * es.modes[a];
-    x += N(a) * Vec2(u(dof), u(dof + 1));
-  }
-  return x;
-}
-
-/// Gap of the deformed boundary at local edge parameter t of element q; the deformed point in
-/// x_out, the undeformed one in X_out.
-double gap_at(const Body& body, const contact::Obstacle& obstacle, int q, int le, double t,
-              const Eigen::VectorXd& u, Vec2* x_out, Vec2* X_out = nullptr) {
-  const auto& es = body.dofs.element(q);
-  Eigen::VectorXd N(es.n_modes());
-  const auto r = fem::edge_reference_point(le, t);
-  es.evaluate(r[0], r[1], N.data(), nullptr, nullptr);
-  const Vec2 X = fem::edge_geometry(body.maps[q], le, t, nullptr, nullptr);
-  if (X_out) *X_out = X;
-  const Vec2 x = displaced(body, q, N, X, u);
-  if (x_out) *x_out = x;
-  return obstacle.gap(x, nullptr, nullptr);
-}
-
 bool shares_node(const mesh::Mesh& m, int a, int b) {
   const auto &ea = m.edge(a), &eb = m.edge(b);
   return ea.v0 == eb.v0 || ea.v0 == eb.v1 || ea.v1 == eb.v0 || ea.v1 == eb.v1;
@@ -86,95 +59,6 @@ std::pair<Vec2, Vec2> zone_end(const Body& body, const contact::Obstacle& obstac
   const double fa = gap(a), fb = gap(b);
   gap(pegasus_root(gap, a, b, fa, fb, 1e-14 * (1 + x.norm())));
   return {X, x};
-}
-
-/// What the stresses say at local edge parameter t of element q of a contact boundary, and the
-/// boundary's position and length per unit length along a surface frame.
-struct SideValues {
-  Vec2 X;                     ///< the undeformed point
-  double s = 0;               ///< position along the frame (of the undeformed point)
-  double length_ratio = 1;    ///< dS/ds: undeformed boundary length per unit length along the frame
-  double minus_sigma_nn = 0;  ///< −n·σ·n, n the outward normal (under finite strain the deformed one)
-  double pressure_from_stress = 0;  ///< n_o·(P N) dS/ds
-  double shear_from_stress = 0;     ///< −τ_o·(P N) dS/ds, τ_o = friction_tangent(n_o)
-};
-
-/// At local edge parameter t of element q of `body`, against `obstacle` (its normal n_o at the
-/// deformed point: the direction the contact force acts along; −N where the point has no foot;
-/// τ_o = friction_tangent(n_o) the direction friction acts along):
-///   −n·σ·n,   n_o·(P N) dS/ds,   −τ_o·(P N) dS/ds,
-/// N the undeformed outward normal, P N = J σ F⁻ᵀ N the traction per unit undeformed length
-/// (σ N in the linear theory), n = F⁻ᵀN / |F⁻ᵀN| (N in the linear theory). The body receives
-/// the traction λ n_o − λ_T τ_o per unit undeformed length from the multipliers (penalty: p_N,
-/// t_T), so the two projections are what the stresses say λ and λ_T are.
-SideValues side_values(const Body& body, const ContactPair& pair, const contact::Obstacle& obstacle,
-                       const contact::SurfaceFrame& frame, int q, int le, double t,
-                       const Eigen::VectorXd& u) {
-  Vec2 N;
-  double dS_dt = 0;
-  const Vec2 X = fem::edge_geometry(body.maps[q], le, t, &N, &dS_dt);
-  const auto r = fem::edge_reference_point(le, t);
-  const auto pv = fem::point_values(body.dofs.element(q), body.maps[q], r[0], r[1]);
-  const Eigen::VectorXd ue = body.element_coefficients(q, u);
-  const auto ps = point_stress(body, q, pv, ue);
-  Mat2 sigma;
-  sigma << ps.stress(0), ps.stress(2), ps.stress(2), ps.stress(1);
-  SideValues v;
-  v.X = X;
-  v.s = frame.coordinate(X);
-  const Vec2 n = body.finite_strain() ? Vec2(ps.F.inverse().transpose() * N).normalized() : N;
-  v.minus_sigma_nn = -n.dot(sigma * n);
-  const Vec2 PN = body.finite_strain()
-                      ? Vec2(ps.F.determinant() * (sigma * (ps.F.inverse().transpose() * N)))
-                      : Vec2(sigma * N);
-  const Vec2 x = displaced(body, q, pv.N, X, u);  // from the shape functions at hand
-  Vec2 n_o = -N;
-  Vec2 normal = Vec2::Zero();
-  if (std::isfinite(obstacle.gap(x, &normal, nullptr)) && normal.norm() > 0) {
-    n_o = normal;
-    if (pair.constraints && pair.constraints->mean_normal) {
-      // the direction the pair's pressure acts along: the mean of the other boundary's normal
-      // and this one's deformed normal F⁻ᵀN (F = I + ∇u, in the linear theory too)
-      const Mat2 F = fem::deformation_gradient(pv, ue);
-      const Vec2 mean = n_o - Vec2(F.inverse().transpose() * N).normalized();
-      if (mean.norm() > 1e-8) n_o = mean.normalized();
-    }
-  }
-  // ds/dS along the boundary's unit tangent; where the boundary runs across the obstacle the
-  // ratio is capped (no pressure there).
-  const double ds_dS = std::abs(frame.rate(X, Vec2(N.y(), -N.x())));
-  v.length_ratio = 1 / std::max(ds_dS, 1e-12);
-  v.pressure_from_stress = n_o.dot(PN) * v.length_ratio;
-  v.shear_from_stress = -contact::friction_tangent(n_o).dot(PN) * v.length_ratio;
-  return v;
-}
-
-/// Where the stresses at multiplier node j of an exactly enforced pair are taken: a node on a
-/// vertex lies on two edges' elements, and the stress is taken in the one whose map is regular
-/// at that corner, since where two edges of one smooth curve meet the element there has a 180°
-/// corner, its Jacobian vanishes at the corner and its stresses are singular. Where no element
-/// is regular at the corner, 1e-3 of the edge inside it. (element, local edge, parameter).
-std::optional<std::tuple<int, int, double>> node_stress_point(const Body& body, const ContactPair& pair, int j) {
-  const PairConstraints& c = *pair.constraints;
-  struct Candidate {
-    int q, le;
-    double t, regularity;
-  };
-  std::optional<Candidate> best;
-  for (size_t k = 0; k < c.nodes.edge_nodes.size(); ++k)
-    for (size_t i = 0; i < c.nodes.edge_nodes[k].size(); ++i) {
-      if (c.nodes.edge_nodes[k][i] != j) continue;
-      const auto& edge = body.mesh.edge(pair.edges[k]);
-      const int q = edge.quads[0], le = edge.local_edge[0];
-      const double t = c.nodes.edge_points[k][i];
-      const auto r = fem::edge_reference_point(le, t);
-      const double regularity = body.maps[q].regularity(r[0], r[1]);
-      if (!best || regularity > best->regularity) best = Candidate{q, le, t, regularity};
-    }
-  if (!best) return std::nullopt;
-  double t = best->t;
-  if (best->regularity < 1e-6) t = std::clamp(t, -1 + 1e-3, 1 - 1e-3);
-  return std::tuple{best->q, best->le, t};
 }
 
 /// The outer ends of the active region: of the zone ends z.X, the one just below the first closed
@@ -230,14 +114,6 @@ ZoneEnds zone_ends(const Body& body, const std::vector<contact::ContactPoint>& p
     }
   mark_outer_ends(z, pair, lo, hi);
   return z;
-}
-
-/// The position of a boundary point, undeformed and deformed (u all dofs).
-std::pair<Vec2, Vec2> boundary_position(const Body& body, int q, int le, double t,
-                                        const Eigen::VectorXd& u) {
-  Vec2 x, X;
-  gap_at(body, contact::RigidPlane(Vec2::Zero(), Vec2(0, 1)), q, le, t, u, &x, &X);
-  return {X, x};
 }
 
 /// E' p / h of a contact edge of degree p: the stiffness of the boundary over a node spacing,
