@@ -588,7 +588,7 @@ MUTATIONS = [
              "double traction() const { return pressure; }",
              "the hp tolerance holds the pressure only, not the shear",
              ["cli:tests/cli/test_partial_slip_hp.py::test_the_shear_is_held_to_the_tolerance"]),
-    Mutation("shear-estimate-of-normal", "adapt", S + "model/contact_results.cpp",
+    Mutation("shear-estimate-of-normal", "adapt", S + "model/boundary_pressure.cpp",
              "return pair_.constraints->nodes.interpolate(k, t, multipliers_->segment(n, n));",
              "return pair_.constraints->nodes.interpolate(k, t, multipliers_->segment(0, n));",
              "the shear estimated from the normal multipliers",
