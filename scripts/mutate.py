@@ -691,7 +691,7 @@ MUTATIONS = [
              "if (false) return 0;",
              "the reference pressure interpolated linearly up to the square-root end",
              ["ReferenceCurve.KeepsTheSquareRootEndOfTheZone"]),
-    Mutation("stick-slip-midway", "model", S + "model/contact_results.cpp",
+    Mutation("stick-slip-midway", "model", S + "model/stick_slip_points.cpp",
              ": pegasus_root(psi, ta, tb, fa, fb, 1e-14);",
              ": 0.5 * (ta + tb);",
              "the stick–slip point put midway between its nodes instead of at the root of ψ",

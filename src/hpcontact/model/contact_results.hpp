@@ -109,9 +109,9 @@ struct ContactResult {
   std::vector<Node> nodes;
   /// Exact Coulomb friction (the step's slips given): the stick–slip points, where the friction
   /// state changes between neighbouring active nodes of one contact edge, located as the root
-  /// of the edge's complementarity function of friction (stick_slip_points in
-  /// contact_results.cpp) — the points rp and hp adapt to as to Γ*. Against another body their
-  /// feet on its boundary are `other`.
+  /// of the edge's complementarity function of friction (model/stick_slip_points.hpp) — the
+  /// points rp and hp adapt to as to Γ*. Against another body their feet on its boundary are
+  /// `other`.
   ZoneEnds stick_slip, other_stick_slip;
 };
 
