@@ -14,6 +14,30 @@
 
 namespace hpcontact::model {
 
+namespace {
+
+/// The direction n_o the contact force acts along at the deformed point x of a boundary point
+/// with undeformed outward normal N (shape values pv, element coefficients ue): the obstacle's
+/// normal there, −N where the point has no foot.
+Vec2 contact_force_normal(const ContactPair& pair, const contact::Obstacle& obstacle, const Vec2& x,
+                          const Vec2& N, const fem::PointValues& pv, const Eigen::VectorXd& ue) {
+  Vec2 n_o = -N;
+  Vec2 normal = Vec2::Zero();
+  if (std::isfinite(obstacle.gap(x, &normal, nullptr)) && normal.norm() > 0) {
+    n_o = normal;
+    if (pair.constraints && pair.constraints->mean_normal) {
+      // the direction the pair's pressure acts along: the mean of the other boundary's normal
+      // and this one's deformed normal F⁻ᵀN (F = I + ∇u, in the linear theory too)
+      const Mat2 F = fem::deformation_gradient(pv, ue);
+      const Vec2 mean = n_o - Vec2(F.inverse().transpose() * N).normalized();
+      if (mean.norm() > 1e-8) n_o = mean.normalized();
+    }
+  }
+  return n_o;
+}
+
+}  // namespace
+
 SideValues side_values(const Body& body, const ContactPair& pair, const contact::Obstacle& obstacle,
                        const contact::SurfaceFrame& frame, int q, int le, double t,
                        const Eigen::VectorXd& u) {
@@ -35,18 +59,7 @@ SideValues side_values(const Body& body, const ContactPair& pair, const contact:
                       ? Vec2(ps.F.determinant() * (sigma * (ps.F.inverse().transpose() * N)))
                       : Vec2(sigma * N);
   const Vec2 x = displaced(body, q, pv.N, X, u);  // from the shape functions at hand
-  Vec2 n_o = -N;
-  Vec2 normal = Vec2::Zero();
-  if (std::isfinite(obstacle.gap(x, &normal, nullptr)) && normal.norm() > 0) {
-    n_o = normal;
-    if (pair.constraints && pair.constraints->mean_normal) {
-      // the direction the pair's pressure acts along: the mean of the other boundary's normal
-      // and this one's deformed normal F⁻ᵀN (F = I + ∇u, in the linear theory too)
-      const Mat2 F = fem::deformation_gradient(pv, ue);
-      const Vec2 mean = n_o - Vec2(F.inverse().transpose() * N).normalized();
-      if (mean.norm() > 1e-8) n_o = mean.normalized();
-    }
-  }
+  const Vec2 n_o = contact_force_normal(pair, obstacle, x, N, pv, ue);
   v.length_ratio = length_ratio(frame, X, N);
   v.pressure_from_stress = n_o.dot(PN) * v.length_ratio;
   v.shear_from_stress = -contact::friction_tangent(n_o).dot(PN) * v.length_ratio;
