@@ -41,6 +41,7 @@
 #include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
+#include "hpcontact/model/solid_model.hpp"
 
 using namespace hpcontact;
 
@@ -225,8 +226,28 @@ int run_command(const std::string& file, std::string out_dir, const std::vector<
   return 0;
 }
 
+/// `check` of a 3D problem: the body's mesh, face sets and modes.
+int check_solid(const std::string& file, const model::ProblemSpec& spec) {
+  const model::SolidSpec& solid = *spec.solid;
+  const model::SolidDiscretization d = model::discretize_solid(solid, spec.file);
+  std::cout << printable(file) << ": case '" << printable(spec.case_name)
+            << "', 3D, p-version (hexahedra, " << (solid.tensor_space ? "tensor" : "trunk")
+            << " space)\n";
+  std::cout << "  body '" << printable(solid.body.name) << "': " << d.mesh.topology.n_nodes()
+            << " nodes, " << d.mesh.topology.n_hexes() << " hexahedra, degree " << solid.degree[0]
+            << "," << solid.degree[1] << "," << solid.degree[2] << "\n  face sets:";
+  for (const auto& [name, faces] : d.mesh.face_sets)
+    std::cout << ' ' << printable(name) << " (" << faces.size() << ")";
+  std::cout << "\n  " << solid.body.constraints.size() << " constraint(s), "
+            << solid.body.loads.size() << " load(s)\n  free dofs " << d.n_free() << " ("
+            << 3 * d.dofs.n_external_modes() - static_cast<int>(d.fixed.size())
+            << " after condensing internal modes)\n";
+  return 0;
+}
+
 int check_command(const std::string& file, const std::vector<std::string>& sets) {
   const auto spec = io::read_problem(file, sets);
+  if (spec.solid) return check_solid(file, spec);
   const auto d = model::discretize(spec);
   model::require_held(spec, d);
   std::cout << printable(file) << ": case '" << printable(spec.case_name) << "', " << d.method

@@ -1,5 +1,6 @@
-// libFuzzer target: the Gmsh MSH 4.1 reader and the import of a body from what it accepts
-// (every quadrilateral, arcs recovered from midside nodes, edge sets from physical lines).
+// libFuzzer target: the Gmsh MSH 4.1 reader and the import of a body from what it accepts: a 2D
+// body (every quadrilateral, arcs recovered from midside nodes, edge sets from physical lines) and
+// a 3D one (every hexahedron, face sets from physical surfaces), each input read both ways.
 // Refusal with an hpcontact::Error is fine; a crash, a sanitizer report, another exception
 // or a hang is a finding.
 #include <cstddef>
@@ -7,6 +8,7 @@
 #include <string_view>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/io/gmsh_hex_import.hpp"
 #include "hpcontact/io/gmsh_import.hpp"
 #include "hpcontact/io/gmsh_reader.hpp"
 
@@ -20,6 +22,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)io::import_gmsh_body(mesh, options);
   } catch (const Error&) {
     // refused with a message: fine
+  }
+  try {
+    (void)io::import_gmsh_hex_body(io::parse_gmsh_volume(text, "fuzz.msh"));
+  } catch (const Error&) {
   }
   return 0;
 }

@@ -16,6 +16,7 @@
 #include "hpcontact/io/problem_reader.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
+#include "hpcontact/model/solid_model.hpp"
 #include "hpcontact/post/fields.hpp"
 #include "hpcontact/post/point_location.hpp"
 #include "hpcontact/post/summary.hpp"
@@ -100,8 +101,29 @@ struct Result {
   }
 };
 
+/// describe() of a 3D problem: its one body of hexahedra.
+py::dict describe_solid(const model::ProblemSpec& spec) {
+  const auto d = model::discretize_solid(*spec.solid, spec.file);
+  py::dict bd;
+  bd["name"] = spec.solid->body.name;
+  bd["nodes"] = d.mesh.topology.n_nodes();
+  bd["elements"] = d.mesh.topology.n_hexes();
+  bd["faces"] = d.mesh.topology.n_faces();
+  py::list bodies;
+  bodies.append(bd);
+  py::dict out;
+  out["case"] = spec.case_name;
+  out["method"] = "p";
+  out["dimension"] = 3;
+  out["bodies"] = bodies;
+  out["dofs"] = d.n_free();
+  out["dofs_condensed"] = 3 * d.dofs.n_external_modes() - static_cast<int>(d.fixed.size());
+  return out;
+}
+
 py::dict describe(const Problem& p) {
   const auto& spec = p.read.spec;
+  if (spec.solid) return describe_solid(spec);
   const auto d = model::discretize(spec);
   model::require_held(spec, d);
   py::list bodies;
@@ -153,6 +175,10 @@ template <class Eval>
 py::array_t<double> at_points(const Result& res, const py::array_t<double, py::array::c_style |
                                                                             py::array::forcecast>& points,
                               const std::optional<std::string>& body_name, int columns, Eval eval) {
+  if (res.run->summary.extra.contains("dimension"))
+    throw py::value_error(
+        "fields at points of a 3D result are not available yet: read solution.vtu (e.g. with "
+        "meshio) or summary");
   const bool single = points.ndim() == 1;
   if (!(single && points.shape(0) == 2) && !(points.ndim() == 2 && points.shape(1) == 2))
     throw py::value_error("points: expected an array of shape (n, 2) or (2,)");

@@ -121,3 +121,28 @@ def test_touching_at_one_point_friction_holds_the_body_from_the_start(hpcontact,
     assert m["Q"] / (MU * m["P"]) == pytest.approx(0.5, rel=1e-3)
     assert m["shear_rel_L2"] < 0.035 and m["pressure_rel_L2"] < 0.005
     assert abs(m["c_rel_error"]) < 0.03
+
+
+def test_touching_between_two_nodes_friction_holds_the_body_from_the_start(hpcontact, root, tmp_path):
+    """As above, with the upper cylinder moved by dx = 0.05 (a third of its contact edge at the
+    touching point) and down until it touches again: the bodies touch at a point no node of
+    either lies on, as after hp moved the node that did. The two nodes of the upper body's edge
+    around the point start active and stick, so the run converges from the first Newton
+    iteration (before, only a node touching at its own point started active: the tangent was
+    singular, "held only by contact against translation in x"); Q is carried."""
+    gen = partial_slip_generator(root, "--force", "700", "--overlap", "0", "--degree", "4")
+    assert gen.returncode == 0, gen.stderr
+    spec = yaml.safe_load(gen.stdout)
+    upper = spec["bodies"][0]
+    dx = 0.05
+    dy = -(20 - (400 - dx * dx) ** 0.5)  # the centres 2 R apart again
+    upper["nodes"] = {k: [x + dx, y + dy] for k, (x, y) in upper["nodes"].items()}
+    for c in upper["curves"]:
+        cx, cy = c["arc"]["center"]
+        c["arc"]["center"] = [cx + dx, cy + dy]
+    case = tmp_path / "between.yaml"
+    case.write_text(yaml.safe_dump(spec))
+    r = hpcontact("run", case, "--out", tmp_path / "run", "-q")
+    assert r.returncode == 0, r.stderr
+    m, _ = compare.measure(str(tmp_path / "run"))
+    assert m["Q"] / (MU * m["P"]) == pytest.approx(0.5, rel=1e-3)

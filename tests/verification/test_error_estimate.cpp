@@ -12,7 +12,7 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/io/problem_reader.hpp"
-#include "hpcontact/model/contact_results.hpp"
+#include "hpcontact/model/boundary_pressure.hpp"
 
 using namespace hpcontact;
 

@@ -12,6 +12,7 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/fem/element_values.hpp"
+#include "hpcontact/model/boundary_pressure.hpp"
 #include "hpcontact/model/contact_results.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/post/fields.hpp"

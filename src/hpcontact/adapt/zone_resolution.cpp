@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "hpcontact/adapt/geometric_refinement.hpp"
+#include "hpcontact/contact/penalty.hpp"
 
 namespace hpcontact::adapt {
 
@@ -46,6 +47,54 @@ NearVertex nearest_vertex(const Solved& s, int body, const Vec2& X) {
   return best;
 }
 
+/// Whether every point of `track`'s body between the parameters a and b of the track is in
+/// contact (in a pair on that body), and some point is: one closed zone between them.
+bool closed_between(const Solved& s, const BoundaryTrack& track, double a, double b) {
+  if (a > b) std::swap(a, b);
+  int inside = 0;
+  for (size_t k = 0; k < s.solution.contact.size(); ++k) {
+    const auto& c = s.solution.contact[k];
+    const auto& pair = s.solution.pairs[k];
+    const bool own = pair.body == track.body();
+    if (!own && pair.other != track.body()) continue;
+    const auto& states = own ? c.states : c.other_states;
+    const auto& X = own ? c.X : c.other_X;
+    for (size_t i = 0; i < states.size() && i < X.size(); ++i) {
+      const double t = track.parameter(X[i]);
+      if (t <= a || t >= b || (track.point(t) - X[i]).norm() > 1e-6 * (1 + X[i].norm())) continue;
+      if (contact::contact_state(states[i]) == contact::ContactState::open) return false;
+      ++inside;
+    }
+  }
+  return inside > 0;
+}
+
+/// Whether the contact zone end `end` has no node of its own because the node nearest to it
+/// serves the zone's other end on its far side (a zone inside the two elements at one node of a
+/// coarse mesh, e.g. where a roller touches a block in the input): moved onto one end, the node
+/// would leave the other in an element as large as the input's, and the point the bodies touch
+/// at without a node. Only for the two ends of one closed zone around the node's middle (the
+/// nearer end at least half as far as the other: a zone grown around the node); a node near
+/// one end of its zone, or between ends around an opening (a coarse solve's island), serves the
+/// nearer, and hp follows the other if the estimated error is there.
+bool node_between_ends(const Solved& s, const std::vector<NodeForEnd>& nodes, const ZoneEnd& end) {
+  for (const NodeForEnd& n : nodes) {
+    if (n.end.body != end.body || n.end.kind != ZoneEnd::Kind::contact) continue;
+    if (n.end.X == end.X) return false;  // served
+  }
+  for (const NodeForEnd& n : nodes) {
+    if (n.end.body != end.body || n.end.kind != ZoneEnd::Kind::contact) continue;
+    const double here = n.track.parameter(end.X) - n.track.node();
+    const double there = n.track.parameter(n.end.X) - n.track.node();
+    const bool middle =
+        std::min(std::abs(here), std::abs(there)) >= 0.5 * std::max(std::abs(here), std::abs(there));
+    if (here * there < 0 && middle && n.track.reaches(n.track.parameter(end.X)) &&
+        closed_between(s, n.track, n.track.parameter(end.X), n.track.parameter(n.end.X)))
+      return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 bool node_near_enough(const NodeForEnd& n) {
@@ -68,6 +117,9 @@ Resolution resolve_zones(const SolvedPtr& s0, int max_rounds, bool stick_slip,
     const auto nodes = nearest_movable_nodes(*s, ends);
     for (const auto& n : nodes)
       if (!node_near_enough(n)) unserved.push_back(n.end);
+    for (const ZoneEnd& end : ends)
+      if (end.kind == ZoneEnd::Kind::contact && node_between_ends(*s, nodes, end))
+        unserved.push_back(end);
     for (const ZoneEnd& end : ends) {
       if (end.kind != ZoneEnd::Kind::stick_slip) continue;
       const bool served = std::any_of(nodes.begin(), nodes.end(), [&](const NodeForEnd& n) {

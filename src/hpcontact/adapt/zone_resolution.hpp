@@ -21,7 +21,9 @@ struct Resolution {
 /// narrower than the edge it ends in fails this (the node would leave an element a sliver).
 bool node_near_enough(const NodeForEnd& n);
 
-/// Refines `s`'s mesh until every zone end passes node_near_enough: towards the boundary
+/// Refines `s`'s mesh until every zone end passes node_near_enough and the two ends of a closed
+/// zone around one node in its middle (nearest to both: a coarse mesh's node where two bodies
+/// touch in the input) have a node each: towards the boundary
 /// vertex of the contact edges nearest to each end that does not, with a factor that puts the
 /// new node on the end when it is 15–50 % of the edge away (15 % or 50 % otherwise), and solves
 /// again after each round (starting from the last solution). With `stick_slip` the stick–slip

@@ -15,6 +15,7 @@
 #include "hpcontact/analytic/hertz.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/io/text_file.hpp"
+#include "hpcontact/model/boundary_pressure.hpp"
 #include "hpcontact/post/pressure_error.hpp"
 #include "hpcontact/post/output_file.hpp"
 

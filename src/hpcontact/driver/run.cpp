@@ -1,5 +1,6 @@
 // The pipeline of a run, read top to bottom: discretise -> solve -> post -> write.
 #include "hpcontact/driver/run.hpp"
+#include "hpcontact/driver/run_solid.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -402,6 +403,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
   require_references(spec);  // a reference that cannot be read fails before the solve
   const std::string stage = folder ? folder->begin() : "";
   const std::string last_good = folder ? (fs::path(folder->target()) / "last-good").string() : "";
+  if (spec.solid) return run_solid(spec, options, folder, stage);
 
   RunResult result;
   post::Summary& s = result.summary;

@@ -1,4 +1,5 @@
-// Pressure loads on hexahedron faces by Gauss quadrature over the face's reference square.
+// Pressure and traction loads on hexahedron faces by Gauss quadrature over the face's reference
+// square.
 #include "hpcontact/fem/hex_face_load.hpp"
 
 #include <algorithm>
@@ -34,9 +35,13 @@ int hex_face_gauss_points(const basis::HierarchicHex& element, const mesh::HexMa
          map.polynomial_degree() + 1;
 }
 
-Eigen::VectorXd hex_face_pressure_load(const basis::HierarchicHex& element,
-                                       const mesh::HexMap& map, int lf, double pressure,
-                                       int n_points) {
+namespace {
+
+/// f_e = ∫ N t dA over local face lf, the traction t given per unit reference area,
+/// t ds dt = force(n dA / (ds dt)).
+template <class Force>
+Eigen::VectorXd face_load(const basis::HierarchicHex& element, const mesh::HexMap& map, int lf,
+                          int n_points, const Force& force) {
   const auto& rule = basis::gauss_legendre(n_points);
   const int n = element.n_modes();
   Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * n);
@@ -47,13 +52,28 @@ Eigen::VectorXd hex_face_pressure_load(const basis::HierarchicHex& element,
       const mesh::Vec3 r = hex_face_reference_point(lf, s, t);
       const mesh::Vec3 n_dA = hex_face_area_normal(map, lf, s, t);
       element.evaluate(r(0), r(1), r(2), N.data(), nullptr, nullptr, nullptr);
-      const double w = rule.weights[i] * rule.weights[j];
-      for (int c = 0; c < 3; ++c) {
-        const double q = -pressure * w * n_dA(c);
-        for (int a = 0; a < n; ++a) f(c * n + a) += q * N[a];
-      }
+      const mesh::Vec3 t_dA = rule.weights[i] * rule.weights[j] * force(n_dA);
+      for (int c = 0; c < 3; ++c)
+        for (int a = 0; a < n; ++a) f(c * n + a) += t_dA(c) * N[a];
     }
   return f;
+}
+
+}  // namespace
+
+Eigen::VectorXd hex_face_pressure_load(const basis::HierarchicHex& element,
+                                       const mesh::HexMap& map, int lf, double pressure,
+                                       int n_points) {
+  return face_load(element, map, lf, n_points,
+                   [pressure](const mesh::Vec3& n_dA) -> mesh::Vec3 { return -pressure * n_dA; });
+}
+
+Eigen::VectorXd hex_face_traction_load(const basis::HierarchicHex& element,
+                                       const mesh::HexMap& map, int lf,
+                                       const mesh::Vec3& traction, int n_points) {
+  return face_load(element, map, lf, n_points, [&traction](const mesh::Vec3& n_dA) -> mesh::Vec3 {
+    return n_dA.norm() * traction;
+  });
 }
 
 }  // namespace hpcontact::fem

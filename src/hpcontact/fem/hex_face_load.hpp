@@ -1,4 +1,4 @@
-// Consistent nodal forces of a pressure on one face of a hexahedron.
+// Consistent nodal forces of a pressure or a traction on one face of a hexahedron.
 #pragma once
 
 #include <array>
@@ -34,5 +34,11 @@ int hex_face_gauss_points(const basis::HierarchicHex& element, const mesh::HexMa
 Eigen::VectorXd hex_face_pressure_load(const basis::HierarchicHex& element,
                                        const mesh::HexMap& map, int lf, double pressure,
                                        int n_points);
+
+/// f_e = ∫ N t dA over local face lf for a constant traction vector t (force per area), with
+/// the same rule and layout as hex_face_pressure_load.
+Eigen::VectorXd hex_face_traction_load(const basis::HierarchicHex& element,
+                                       const mesh::HexMap& map, int lf,
+                                       const mesh::Vec3& traction, int n_points);
 
 }  // namespace hpcontact::fem

@@ -1,5 +1,7 @@
 // A line-based parser of Gmsh MSH 4.1 ASCII files that checks every count, tag and value it
-// reads, so that a truncated or hostile file ends in a one-line InputError, never in a crash.
+// reads, so that a truncated or hostile file ends in a one-line InputError, never in a crash. One
+// parser reads 2D and 3D meshes: they differ in the nodes' z (0, or kept) and the elements kept
+// (quads and lines, or hexahedra and quads).
 //
 // The layout read (gmsh reference manual, "MSH file format", version 4.1), one record per line:
 //   $MeshFormat      version file-type data-size                    (4.1 0 8)
@@ -43,7 +45,8 @@ struct ElementType {
   const char* name;
 };
 
-// The element types of the gmsh manual (section "MSH file format", elm-type) up to order 5 in 2D.
+// The element types of the gmsh manual (section "MSH file format", elm-type) up to order 5 in 2D,
+// and the hexahedra of order 3 and 4.
 constexpr ElementType element_types[] = {
     {1, 2, 1, "2-node line"},
     {2, 3, 2, "3-node triangle"},
@@ -79,6 +82,8 @@ constexpr ElementType element_types[] = {
     {36, 16, 2, "16-node quadrilateral"},
     {37, 25, 2, "25-node quadrilateral"},
     {38, 36, 2, "36-node quadrilateral"},
+    {92, 64, 3, "64-node hexahedron"},
+    {93, 125, 3, "125-node hexahedron"},
 };
 
 const ElementType* find_element_type(std::int64_t type) {
@@ -140,9 +145,17 @@ struct Block {
 
 class Parser {
  public:
-  Parser(std::string_view text, std::string file) : text_(text) { mesh_.file = std::move(file); }
+  /// `volume`: read a 3D mesh (GmshVolumeMesh) instead of a 2D one (GmshMesh).
+  Parser(std::string_view text, std::string file, bool volume)
+      : text_(text), file_(std::move(file)), volume_(volume) {
+    mesh_.file = file_;
+    volume_mesh_.file = file_;
+  }
 
-  GmshMesh parse() {
+  GmshMesh mesh_2d() && { return std::move(mesh_); }
+  GmshVolumeMesh mesh_3d() && { return std::move(volume_mesh_); }
+
+  void parse() {
     if (!next_line()) fail(1, "empty file; expected a Gmsh mesh starting with $MeshFormat");
     if (line_text_ != "$MeshFormat")
       fail("not a Gmsh .msh file: expected $MeshFormat on its first line (got '" +
@@ -170,7 +183,6 @@ class Parser {
         skip_section(name);
     }
     finish();
-    return std::move(mesh_);
   }
 
  private:
@@ -206,7 +218,7 @@ class Parser {
 
   [[noreturn]] void fail(const std::string& what) const { fail(line_, what); }
   [[noreturn]] void fail(int line, const std::string& what) const {
-    throw InputError(mesh_.file + ":" + std::to_string(line) + ": " + what);
+    throw InputError(file_ + ":" + std::to_string(line) + ": " + what);
   }
 
   static std::string shown(std::string_view text) { return one_line(text, 60); }
@@ -394,8 +406,10 @@ class Parser {
                        std::to_string(node));
         const double x = real(t[0], "x"), y = real(t[1], "y"), z = real(t[2], "z");
         for (std::size_t k = 3; k < n_values; ++k) real(t[k], "a parametric coordinate");
-        if (!mesh_.nodes.emplace(node, std::array<double, 2>{x, y}).second)
-          fail(tag_line, "node tag " + std::to_string(node) + " given twice");
+        const bool added = volume_
+                               ? volume_mesh_.nodes.emplace(node, std::array{x, y, z}).second
+                               : mesh_.nodes.emplace(node, std::array{x, y}).second;
+        if (!added) fail(tag_line, "node tag " + std::to_string(node) + " given twice");
         scale_ = std::max({scale_, std::abs(x), std::abs(y)});
         if (std::abs(z) > max_z_) {
           max_z_ = std::abs(z);
@@ -452,32 +466,44 @@ class Parser {
     const int element = tag(t[0], "an element tag");
     if (!element_tags_.insert(element).second)
       fail("element tag " + std::to_string(element) + " given twice");
+    // A 2D mesh keeps quads and lines, a 3D one hexahedra and quads (its boundary faces).
     const bool quad = type == 3 || type == 10 || type == 16;
-    const bool line = type == 1 || type == 8;
-    if (!quad && !line) {
+    const bool line = !volume_ && (type == 1 || type == 8);
+    const bool hex = volume_ && (type == 5 || type == 12 || type == 17);
+    const int entity = blocks_[static_cast<std::size_t>(block)].entity;
+    std::vector<int> nodes;
+    // Of other elements a 3D mesh keeps the node tags too (which faces lie on which volumes).
+    if (quad || line || hex || volume_)
+      for (std::size_t k = 1; k < t.size(); ++k) nodes.push_back(tag(t[k], "a node tag"));
+    if (!quad && !line && !hex) {
       if (dim == 2) {
-        mesh_.other_faces.push_back({element, type, {}, line_});
+        other_faces().push_back({element, type, {}, entity, std::move(nodes), line_});
         other_blocks_.push_back(block);
+      } else if (dim == 3 && volume_) {
+        volume_mesh_.other_volumes.push_back({element, type, std::move(nodes), {}, line_});
+        other_volume_blocks_.push_back(block);
       }
       return;
     }
-    std::vector<int> nodes;
-    for (std::size_t k = 1; k < t.size(); ++k) nodes.push_back(tag(t[k], "a node tag"));
-    const std::size_t n_corners = quad ? 4 : 2;
+    const std::size_t n_corners = hex ? 8 : quad ? 4 : 2;
     for (std::size_t a = 0; a < n_corners; ++a)
       for (std::size_t b = a + 1; b < n_corners; ++b)
         if (nodes[a] == nodes[b])
           fail("element " + std::to_string(element) + " has corner node " +
                std::to_string(nodes[a]) + " twice (got '" + shown(line_text_) + "')");
-    if (quad) {
+    if (hex) {
+      volume_mesh_.hexes.push_back({element, type, std::move(nodes), {}, line_});
+      hex_blocks_.push_back(block);
+    } else if (quad) {
       GmshQuad q;
       q.tag = element;
       q.type = type;
       for (std::size_t k = 0; k < 4; ++k) q.corners[k] = nodes[k];
       if (type != 3)
         for (std::size_t k = 0; k < 4; ++k) q.midside[k] = nodes[4 + k];
+      q.entity = entity;
       q.line = line_;
-      mesh_.quads.push_back(std::move(q));
+      quads().push_back(std::move(q));
       quad_nodes_.push_back(std::move(nodes));
       quad_blocks_.push_back(block);
     } else {
@@ -504,37 +530,54 @@ class Parser {
   // ---- after the last section -------------------------------------------------------------
 
   void finish() {
-    if (max_z_ > 1e-9 * scale_)
+    if (!volume_ && max_z_ > 1e-9 * scale_)
       fail(max_z_line_, "node " + std::to_string(max_z_node_) + " is not in the plane z = 0 (z = " +
                             format_number(max_z_) + "); hpcontact reads 2D meshes in the xy plane");
-    check_nodes(mesh_.quads, quad_nodes_);
+    check_nodes(quads(), quad_nodes_);
     check_nodes(mesh_.lines, line_nodes_);
+    for (const GmshHex& h : volume_mesh_.hexes) check_nodes(h, h.nodes);
     // The physical group names of every block, then of its elements.
     std::vector<std::vector<std::string>> block_groups;
     for (const Block& b : blocks_) block_groups.push_back(group_names(b));
-    for (std::size_t i = 0; i < mesh_.quads.size(); ++i)
-      mesh_.quads[i].groups = block_groups[static_cast<std::size_t>(quad_blocks_[i])];
-    for (std::size_t i = 0; i < mesh_.lines.size(); ++i)
-      mesh_.lines[i].groups = block_groups[static_cast<std::size_t>(line_blocks_[i])];
-    for (std::size_t i = 0; i < mesh_.other_faces.size(); ++i)
-      mesh_.other_faces[i].groups = block_groups[static_cast<std::size_t>(other_blocks_[i])];
+    const auto set_groups = [&](auto& elements, const std::vector<int>& blocks) {
+      for (std::size_t i = 0; i < elements.size(); ++i)
+        elements[i].groups = block_groups[static_cast<std::size_t>(blocks[i])];
+    };
+    set_groups(quads(), quad_blocks_);
+    set_groups(mesh_.lines, line_blocks_);
+    set_groups(other_faces(), other_blocks_);
+    set_groups(volume_mesh_.hexes, hex_blocks_);
+    set_groups(volume_mesh_.other_volumes, other_volume_blocks_);
     // Every physical group: those named, and those only used by entities (named by their tag).
     std::set<std::pair<int, int>> groups;
     for (const auto& [key, name] : names_) groups.insert(key);
     for (const auto& [entity, phys] : entities_)
       for (int p : phys) groups.insert({entity.first, p});
     for (const auto& [dim, phys] : groups)
-      mesh_.groups.push_back({dim, phys, group_name(dim, phys)});
+      (volume_ ? volume_mesh_.groups : mesh_.groups).push_back({dim, phys, group_name(dim, phys)});
+  }
+
+  std::vector<GmshQuad>& quads() { return volume_ ? volume_mesh_.quads : mesh_.quads; }
+  std::vector<GmshOtherFace>& other_faces() {
+    return volume_ ? volume_mesh_.other_faces : mesh_.other_faces;
+  }
+
+  bool node_defined(int node) const {
+    return volume_ ? volume_mesh_.nodes.count(node) > 0 : mesh_.nodes.count(node) > 0;
+  }
+
+  template <class Element>
+  void check_nodes(const Element& element, const std::vector<int>& nodes) const {
+    for (int node : nodes)
+      if (!node_defined(node))
+        fail(element.line, "element " + std::to_string(element.tag) + " refers to node " +
+                               std::to_string(node) + ", which $Nodes does not define");
   }
 
   template <class Element>
   void check_nodes(const std::vector<Element>& elements,
                    const std::vector<std::vector<int>>& nodes) const {
-    for (std::size_t i = 0; i < elements.size(); ++i)
-      for (int node : nodes[i])
-        if (!mesh_.nodes.count(node))
-          fail(elements[i].line, "element " + std::to_string(elements[i].tag) + " refers to node " +
-                                     std::to_string(node) + ", which $Nodes does not define");
+    for (std::size_t i = 0; i < elements.size(); ++i) check_nodes(elements[i], nodes[i]);
   }
 
   std::string group_name(int dim, int phys) const {
@@ -558,20 +601,23 @@ class Parser {
   }
 
   std::string_view text_;
+  std::string file_;
+  bool volume_ = false;
   std::size_t pos_ = 0;
   int line_ = 0;
   std::string_view line_text_;
   std::string section_;
   std::set<std::string> sections_seen_;
 
-  GmshMesh mesh_;
+  GmshMesh mesh_;               // what a 2D parse gives
+  GmshVolumeMesh volume_mesh_;  // what a 3D parse gives
   std::map<std::pair<int, int>, std::string> names_;          // (dim, physical tag) -> name
   std::map<std::pair<int, int>, std::vector<int>> entities_;  // (dim, entity tag) -> physical tags
   std::vector<Block> blocks_;
   std::set<int> element_tags_;
   // Per kept element: all its node tags and its block.
   std::vector<std::vector<int>> quad_nodes_, line_nodes_;
-  std::vector<int> quad_blocks_, line_blocks_, other_blocks_;
+  std::vector<int> quad_blocks_, line_blocks_, other_blocks_, hex_blocks_, other_volume_blocks_;
   double scale_ = 0, max_z_ = 0;
   int max_z_line_ = 0, max_z_node_ = 0;
 };
@@ -585,11 +631,23 @@ std::string gmsh_type_name(int type) {
 }
 
 GmshMesh parse_gmsh(std::string_view text, const std::string& file_label) {
-  return Parser(text, file_label).parse();
+  Parser parser(text, file_label, false);
+  parser.parse();
+  return std::move(parser).mesh_2d();
+}
+
+GmshVolumeMesh parse_gmsh_volume(std::string_view text, const std::string& file_label) {
+  Parser parser(text, file_label, true);
+  parser.parse();
+  return std::move(parser).mesh_3d();
 }
 
 GmshMesh read_gmsh(const std::string& path) {
   return parse_gmsh(read_bounded_file(path, "mesh file", kMaxMeshFileBytes), path);
+}
+
+GmshVolumeMesh read_gmsh_volume(const std::string& path) {
+  return parse_gmsh_volume(read_bounded_file(path, "mesh file", kMaxMeshFileBytes), path);
 }
 
 }  // namespace hpcontact::io

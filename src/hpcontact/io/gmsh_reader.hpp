@@ -1,5 +1,5 @@
-// Reading a Gmsh MSH 4.1 ASCII file: nodes, quadrilaterals, line elements and their physical
-// groups.
+// Reading a Gmsh MSH 4.1 ASCII file: of a 2D mesh its nodes, quadrilaterals, line elements and
+// their physical groups; of a 3D mesh its nodes, hexahedra and boundary quadrilaterals.
 #pragma once
 
 #include <array>
@@ -29,6 +29,7 @@ struct GmshQuad {
   /// 0 for a first-order quad. The 9-node quad's centre node is not kept.
   std::array<int, 4> midside{};
   std::vector<std::string> groups;  ///< names of the 2D physical groups of its entity
+  int entity = 0;                   ///< tag of its 2D entity (surface)
   int line = 0;                     ///< 1-based line in the file
 };
 
@@ -46,6 +47,30 @@ struct GmshOtherFace {
   int tag = 0;
   int type = 0;
   std::vector<std::string> groups;
+  int entity = 0;
+  std::vector<int> nodes;  ///< node tags in the file's order; kept by parse_gmsh_volume() only
+  int line = 0;
+};
+
+/// A hexahedron: gmsh type 5 (8 nodes), 12 (27 nodes) or 17 (20 nodes).
+struct GmshHex {
+  int tag = 0;
+  int type = 5;
+  /// Node tags in Gmsh's order (mesh::kHex27Nodes): the 8 vertices (in the order of
+  /// basis/hex_modes.hpp), then for types 12 and 17 the 12 mid-edge nodes, then for type 12 the
+  /// 6 face centres and the centre.
+  std::vector<int> nodes;
+  std::vector<std::string> groups;  ///< names of the 3D physical groups of its entity
+  int line = 0;
+};
+
+/// A 3D element that is not a hexahedron of order 1 or 2: a tetrahedron, prism or pyramid of
+/// any order, a hexahedron of order 3 or more.
+struct GmshOtherVolume {
+  int tag = 0;
+  int type = 0;
+  std::vector<int> nodes;  ///< node tags in the file's order (vertices first, as Gmsh writes them)
+  std::vector<std::string> groups;
   int line = 0;
 };
 
@@ -56,6 +81,18 @@ struct GmshMesh {
   std::map<int, std::array<double, 2>> nodes;  ///< node tag -> (x, y)
   std::vector<GmshQuad> quads;
   std::vector<GmshLine> lines;
+  std::vector<GmshOtherFace> other_faces;
+  std::vector<GmshPhysicalGroup> groups;  ///< every physical group of $PhysicalNames and $Entities
+};
+
+/// The parts of a .msh file a 3D body is made of. Elements keep the file's order; points, lines
+/// and unknown sections are skipped.
+struct GmshVolumeMesh {
+  std::string file;                            ///< the label messages name
+  std::map<int, std::array<double, 3>> nodes;  ///< node tag -> (x, y, z)
+  std::vector<GmshHex> hexes;
+  std::vector<GmshOtherVolume> other_volumes;
+  std::vector<GmshQuad> quads;  ///< the 2D quadrilaterals (boundary faces, with their groups)
   std::vector<GmshOtherFace> other_faces;
   std::vector<GmshPhysicalGroup> groups;  ///< every physical group of $PhysicalNames and $Entities
 };
@@ -71,6 +108,12 @@ std::string gmsh_type_name(int type);
 /// "<file>:<line>: <what was expected> (got '<text>')".
 GmshMesh parse_gmsh(std::string_view text, const std::string& file_label);
 
+/// Parses the text of a .msh file of a 3D mesh, with the checks of parse_gmsh() but z = 0, and
+/// that no hexahedron has a vertex twice. A file of hexahedra read by parse_gmsh() is refused at
+/// its first node off z = 0; one without volume elements read by this function is read
+/// (import_gmsh_hex_body() refuses it).
+GmshVolumeMesh parse_gmsh_volume(std::string_view text, const std::string& file_label);
+
 /// Largest .msh file read (bytes): its text is held while it is read, and kMaxMeshNodes nodes
 /// with 17 digits take some 60 MB.
 constexpr std::size_t kMaxMeshFileBytes = std::size_t{128} << 20;
@@ -85,5 +128,7 @@ constexpr std::uint64_t kMaxMeshElements = 200'000;
 /// IoError if it cannot be read, is not a regular file or is larger than kMaxMeshFileBytes,
 /// InputError as parse_gmsh().
 GmshMesh read_gmsh(const std::string& path);
+/// Reads and parses the .msh file of a 3D mesh at `path`, with the errors of read_gmsh().
+GmshVolumeMesh read_gmsh_volume(const std::string& path);
 
 }  // namespace hpcontact::io

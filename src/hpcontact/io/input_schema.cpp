@@ -5,6 +5,7 @@
 
 #include "hpcontact/io/gmsh_reader.hpp"
 #include "hpcontact/io/problem_reader.hpp"
+#include "hpcontact/io/solid_schema.hpp"
 #include "hpcontact/io/text_file.hpp"
 #include "hpcontact/io/yaml_limits.hpp"
 
@@ -13,11 +14,6 @@ namespace hpcontact::io {
 namespace {
 
 using T = ValueType;
-
-constexpr Bound greater_than(double v) { return {v, false}; }
-constexpr Bound at_least(double v) { return {v, true}; }
-constexpr Bound less_than(double v) { return {v, false}; }
-constexpr Bound at_most(double v) { return {v, true}; }
 
 constexpr double max_degree = model::kMaxDegree;
 
@@ -626,15 +622,16 @@ const std::vector<KeySpec>& input_schema() {
 }
 #pragma GCC diagnostic pop
 
-const KeySpec* find_key_spec(std::string_view pattern) {
-  for (const KeySpec& key : input_schema())
+const KeySpec* find_key_spec(std::string_view pattern, const Schema& schema) {
+  for (const KeySpec& key : schema)
     if (key.path == pattern) return &key;
   return nullptr;
 }
 
-std::vector<const KeySpec*> child_key_specs(std::string_view parent_pattern) {
+std::vector<const KeySpec*> child_key_specs(std::string_view parent_pattern,
+                                            const Schema& schema) {
   std::vector<const KeySpec*> children;
-  for (const KeySpec& key : input_schema()) {
+  for (const KeySpec& key : schema) {
     std::string_view p = key.path;
     if (!parent_pattern.empty()) {
       if (p.size() <= parent_pattern.size() + 1 || !p.starts_with(parent_pattern) ||
@@ -687,8 +684,8 @@ std::string describe_default(const KeySpec& key) {
 }
 
 /// The table of the keys under `parent_pattern`, then those of its sections, depth first.
-void render_section(std::ostringstream& md, std::string_view parent_pattern) {
-  const std::vector<const KeySpec*> children = child_key_specs(parent_pattern);
+void render_section(std::ostringstream& md, std::string_view parent_pattern, const Schema& schema) {
+  const std::vector<const KeySpec*> children = child_key_specs(parent_pattern, schema);
   md << "| key | type | default | unit | meaning |\n|---|---|---|---|---|\n";
   for (const KeySpec* key : children) {
     std::string doc(key->doc);
@@ -701,7 +698,7 @@ void render_section(std::ostringstream& md, std::string_view parent_pattern) {
     if (key->type != T::section && key->type != T::section_list) continue;
     const std::string pattern = std::string(key->path) + (key->type == T::section_list ? "[]" : "");
     md << "\n## `" << pattern << "`\n\n" << key->doc << "\n\n";
-    render_section(md, pattern);
+    render_section(md, pattern, schema);
   }
 }
 
@@ -726,6 +723,9 @@ std::string describe_type(const KeySpec& key) {
     case T::point: return "[number, number]";
     case T::node_pair: return "[node id, node id]";
     case T::degree: return with_bounds("integer or [p_xi, p_eta], each", key);
+    case T::point3: return "[number, number, number]";
+    case T::degree3: return with_bounds("integer or [p_xi, p_eta, p_zeta], each", key);
+    case T::count3: return with_bounds("integer or [n_x, n_y, n_z], each", key);
     case T::scalar_text: return "number or formula";
     case T::string_list: return "list of names";
     case T::point_list: return "list of [x, y], at least " + std::to_string(key.min_items);
@@ -749,7 +749,7 @@ std::string input_schema_markdown() {
         "`--set discretization.degree=[6,4]`. \"The seed\" below is the dissertation the "
         "method follows (D. Franke, TU München; references.md), \"seed eq. 3.19\" its "
         "equation.\n\n## Top level\n\n";
-  render_section(md, "");
+  render_section(md, "", input_schema());
   md << "\n## Limits\n\n"
         "What a run may ask for is bounded, so that a mistake is an error at once instead of a "
         "run that never ends or runs out of memory:\n\n"
@@ -961,6 +961,23 @@ std::string input_schema_markdown() {
         "next finished one). A study killed outright (SIGKILL), which can pass nothing on, "
         "leaves no run computing: each of its runs stops as on SIGTERM when the study dies, "
         "keeping its `last-good/`.\n";
+  md << "\n# 3D problems (`dimension: 3`)\n\n"
+        "A file with `dimension: 3` at its top level is a 3D problem: one body meshed with "
+        "hierarchic hexahedra (integrated-Legendre vertex, edge, face and internal modes, exact "
+        "spherical faces for `shell_octant`), isotropic linear elasticity, constraints and "
+        "surface loads on named face sets; one linear solve with the internal modes condensed. "
+        "It writes `summary.json` (`dimension`, `dofs`, `strain_energy`, `volume`, "
+        "`displacement_max`, `von_mises_max` at the Gauss points, with `exact` the relative "
+        "energy-norm `error`), `solution.vtu` and `input.yaml`. The limits above apply (the "
+        "unknowns counted as elements × 3(p_xi + 1)(p_eta + 1)(p_zeta + 1)). Examples: "
+        "`examples/solid/`. Its keys:\n\n"
+     << schema_tables_markdown(solid_schema());
+  return md.str();
+}
+
+std::string schema_tables_markdown(const Schema& schema) {
+  std::ostringstream md;
+  render_section(md, "", schema);
   return md.str();
 }
 

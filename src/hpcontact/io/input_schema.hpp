@@ -21,6 +21,9 @@ enum class ValueType {
   point,           ///< [x, y], two numbers
   node_pair,       ///< [a, b], two node ids
   degree,          ///< p or [p_xi, p_eta], integers; bounds apply to each
+  point3,          ///< [x, y, z], three numbers
+  degree3,         ///< p or [p_xi, p_eta, p_zeta], integers; bounds apply to each
+  count3,          ///< n or [n_x, n_y, n_z], integers; bounds apply to each
   scalar_text,     ///< a number or an expression, kept verbatim as text
   string_list,     ///< a list of scalars
   point_list,      ///< a list of [x, y]
@@ -36,6 +39,11 @@ struct Bound {
   double value = 0;
   bool inclusive = true;  ///< true: the value itself is allowed (>=, <=); false: strict (>, <)
 };
+
+constexpr Bound greater_than(double v) { return {v, false}; }
+constexpr Bound at_least(double v) { return {v, true}; }
+constexpr Bound less_than(double v) { return {v, false}; }
+constexpr Bound at_most(double v) { return {v, true}; }
 
 /// The declaration of one key.
 struct KeySpec {
@@ -53,15 +61,20 @@ struct KeySpec {
   int min_items = 0;                      ///< least number of entries of a list or table
 };
 
-/// Every key of a problem file, parents before their children, in the order of the docs.
-const std::vector<KeySpec>& input_schema();
+/// The keys of one kind of problem file, parents before their children, in the order of the
+/// docs.
+using Schema = std::vector<KeySpec>;
 
-/// The declaration whose pattern is `pattern` ("bodies[].material.E"), or nullptr.
-const KeySpec* find_key_spec(std::string_view pattern);
+/// Every key of a (2D) problem file.
+const Schema& input_schema();
+
+/// The declaration whose pattern is `pattern` ("bodies[].material.E") in `schema`, or nullptr.
+const KeySpec* find_key_spec(std::string_view pattern, const Schema& schema = input_schema());
 
 /// The keys directly below a section or section-list pattern ("" for the top level,
 /// "bodies[]" for a body, "bodies[].material"), in declaration order.
-std::vector<const KeySpec*> child_key_specs(std::string_view parent_pattern);
+std::vector<const KeySpec*> child_key_specs(std::string_view parent_pattern,
+                                            const Schema& schema = input_schema());
 
 /// The type of a key as the docs and error messages say it: "number > 0", "one of: p, h".
 std::string describe_type(const KeySpec& key);
@@ -69,5 +82,8 @@ std::string describe_type(const KeySpec& key);
 /// The schema rendered as Markdown: one table per section with key, type, default, unit and
 /// meaning. docs/input.md and `hpcontact --help-input` print this.
 std::string input_schema_markdown();
+
+/// One schema's tables (its top level, then each section depth first) in that Markdown form.
+std::string schema_tables_markdown(const Schema& schema);
 
 }  // namespace hpcontact::io

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iomanip>
 #include <map>
+#include <optional>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -17,6 +18,7 @@
 #include "hpcontact/io/gmsh_import.hpp"
 #include "hpcontact/io/overrides.hpp"
 #include "hpcontact/io/schema_check.hpp"
+#include "hpcontact/io/solid_reader.hpp"
 #include "hpcontact/io/text_file.hpp"
 #include "hpcontact/io/yaml_limits.hpp"
 #include "hpcontact/io/yaml_source.hpp"
@@ -902,8 +904,14 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
                                std::to_string(kMaxYamlValues) +
                                " an input may have: give fewer or smaller --set values");
     }
-    const std::vector<std::string> gmsh_notes = expand_gmsh_meshes(root, source);
-    check_and_fill_defaults(root, source);
+    const bool solid = is_solid_problem(root);
+    const std::vector<std::string> gmsh_notes =
+        solid ? std::vector<std::string>{} : expand_gmsh_meshes(root, source);
+    std::optional<model::ProblemSpec> solid_spec;
+    if (solid)
+      solid_spec = solid_problem(root, source);
+    else
+      check_and_fill_defaults(root, source);
     // The effective input is read back as a problem file (a run reproduced from its own
     // output), so it is held to the same bounds, with its defaults.
     const std::string effective =
@@ -913,7 +921,7 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
                        " YAML values, more than the " + std::to_string(kMaxYamlValues) +
                        " a problem file may have, so it could not be read back: give fewer "
                        "elements");
-    ReadResult read{SpecBuilder(source).problem(root),
+    ReadResult read{solid_spec ? std::move(*solid_spec) : SpecBuilder(source).problem(root),
                     effective_yaml(root, file_label, overrides, gmsh_notes)};
     if (read.effective_yaml.size() > kMaxYamlBytes)
       throw InputError(file_label + effective + "is larger than the " +

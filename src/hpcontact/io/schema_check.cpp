@@ -18,11 +18,11 @@ using T = ValueType;
 
 class SchemaChecker {
  public:
-  explicit SchemaChecker(YamlSource& source) : source_(source) {}
+  SchemaChecker(YamlSource& source, const Schema& schema) : source_(source), schema_(schema) {}
 
   /// Checks the keys of `map` (a YAML map) declared under `pattern`; `path` is its concrete path.
   void check_section(YAML::Node map, const std::string& pattern, const std::string& path) {
-    const std::vector<const KeySpec*> children = child_key_specs(pattern);
+    const std::vector<const KeySpec*> children = child_key_specs(pattern, schema_);
     const auto name_of = [&](const KeySpec* child) {
       return std::string(child->path.substr(pattern.empty() ? 0 : pattern.size() + 1));
     };
@@ -90,7 +90,10 @@ class SchemaChecker {
       case T::choice: check_choice(node, key, path); return;
       case T::point: check_pair(node, path, false, "[x, y]"); return;
       case T::node_pair: check_pair(node, path, true, "[a, b] with two node ids"); return;
-      case T::degree: check_degree(node, key, path); return;
+      case T::degree: check_integers(node, key, path, "[p_xi, p_eta]", 2); return;
+      case T::point3: check_numbers(node, path, 3, "[x, y, z]"); return;
+      case T::degree3: check_integers(node, key, path, "[p_xi, p_eta, p_zeta]", 3); return;
+      case T::count3: check_integers(node, key, path, "[n_x, n_y, n_z]", 3); return;
       case T::string_list:
         require_list(node, key, path, "a list of names");
         for (std::size_t i = 0; i < node.size(); ++i)
@@ -122,7 +125,9 @@ class SchemaChecker {
       case T::degree_table:
         for_each_table_entry(
             node, key, path, true,
-            [&](const YAML::Node& value, const std::string& p) { check_degree(value, key, p); });
+            [&](const YAML::Node& value, const std::string& p) {
+              check_integers(value, key, p, "[p_xi, p_eta]", 2);
+            });
         return;
       case T::edge_set_table:
         for_each_table_entry(
@@ -227,15 +232,25 @@ class SchemaChecker {
     }
   }
 
-  void check_degree(const YAML::Node& node, const KeySpec& key, const std::string& path) {
+  /// One integer for every direction, or one per direction (n of them, `what`: "[p_xi, p_eta]").
+  void check_integers(const YAML::Node& node, const KeySpec& key, const std::string& path,
+                      const std::string& what, int n) {
     if (node.IsScalar()) {
       check_integer(node, key, path);
       return;
     }
-    if (!node.IsSequence() || node.size() != 2)
+    if (!node.IsSequence() || node.size() != static_cast<std::size_t>(n))
       source_.fail(node, path,
-                   "must be an integer or [p_xi, p_eta] (got " + shown_value(node) + ")");
-    for (std::size_t i = 0; i < 2; ++i) check_integer(node[i], key, join_index(path, i));
+                   "must be an integer or " + what + " (got " + shown_value(node) + ")");
+    for (int i = 0; i < n; ++i) check_integer(node[i], key, join_index(path, i));
+  }
+
+  /// A list of exactly n numbers.
+  void check_numbers(const YAML::Node& node, const std::string& path, int n,
+                     const std::string& what) {
+    if (!node.IsSequence() || node.size() != static_cast<std::size_t>(n))
+      source_.fail(node, path, "must be " + what + " (got " + shown_value(node) + ")");
+    for (int i = 0; i < n; ++i) check_number(node[i], KeySpec{}, join_index(path, i));
   }
 
   void check_element(const YAML::Node& node, const std::string& path) {
@@ -279,19 +294,20 @@ class SchemaChecker {
   }
 
   YamlSource& source_;
+  const Schema& schema_;
 };
 
 }  // namespace
 
-void check_and_fill_defaults(YAML::Node& root, YamlSource& source) {
-  SchemaChecker(source).check_section(root, "", "");
+void check_and_fill_defaults(YAML::Node& root, YamlSource& source, const Schema& schema) {
+  SchemaChecker(source, schema).check_section(root, "", "");
 }
 
 void check_and_fill_defaults(YAML::Node node, const std::string& pattern, const std::string& path,
                              YamlSource& source) {
   const KeySpec* key = find_key_spec(pattern);
   if (!key) throw std::logic_error("check_and_fill_defaults: no schema key " + pattern);
-  SchemaChecker(source).check_value(node, *key, path);
+  SchemaChecker(source, input_schema()).check_value(node, *key, path);
 }
 
 }  // namespace hpcontact::io

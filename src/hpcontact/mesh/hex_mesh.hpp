@@ -26,4 +26,9 @@ struct HexMesh {
   std::string context = "hexahedral mesh";  ///< names the mesh in messages (file or generator)
 };
 
+/// Checks what a HexMesh promises: one map per element, one position per node, and face sets of
+/// boundary faces only, each face at most once in a set. Throws MeshError naming the mesh's
+/// context, the set and the entry.
+void check_hex_mesh(const HexMesh& mesh);
+
 }  // namespace hpcontact::mesh

@@ -2,14 +2,17 @@
 #include "hpcontact/mesh/shell_octant.hpp"
 
 #include <cmath>
+#include <array>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "hpcontact/basis/hex_modes.hpp"
 #include "hpcontact/core/error.hpp"
 
 namespace hpcontact::mesh {
 
-ShellOctantMesh shell_octant_mesh(double inner_radius, double outer_radius, int n_layers) {
+HexMesh shell_octant_mesh(double inner_radius, double outer_radius, int n_layers) {
   HPC_REQUIRE(inner_radius > 0 && outer_radius > inner_radius, InputError,
               "shell octant: radii must satisfy 0 < a < b (got a = ", inner_radius, ", b = ",
               outer_radius, ")");
@@ -39,10 +42,14 @@ ShellOctantMesh shell_octant_mesh(double inner_radius, double outer_radius, int 
   for (int i = 0; i < 3; ++i)
     plane[i] = std::make_shared<geometry::Plane>(Vec3::Zero(), Vec3::Unit(i));
 
+  HexMesh m;
+  m.context = "shell octant";
+  m.nodes = std::move(nodes);
   std::vector<std::array<int, 8>> hexes;
-  std::vector<HexMap> maps;
-  std::vector<ElementFace> inner, outer;
-  std::array<std::vector<ElementFace>, 3> symmetry;
+  std::vector<ElementFace>& inner = m.face_sets["inner"];
+  std::vector<ElementFace>& outer = m.face_sets["outer"];
+  std::array<std::vector<ElementFace>*, 3> symmetry{&m.face_sets["x0"], &m.face_sets["y0"],
+                                                    &m.face_sets["z0"]};
   for (const auto& q : patch)
     for (int k = 0; k < n_layers; ++k) {
       const int element = static_cast<int>(hexes.size());
@@ -53,7 +60,7 @@ ShellOctantMesh shell_octant_mesh(double inner_radius, double outer_radius, int 
       }
       hexes.push_back(v);
       std::array<Vec3, 8> x;
-      for (int i = 0; i < 8; ++i) x[i] = nodes[v[i]];
+      for (int i = 0; i < 8; ++i) x[i] = m.nodes[v[i]];
       std::array<geometry::SurfacePtr, 6> faces{};
       faces[4] = sphere[k];
       faces[5] = sphere[k + 1];
@@ -66,13 +73,13 @@ ShellOctantMesh shell_octant_mesh(double inner_radius, double outer_radius, int 
           for (int corner : basis::kHexFaceVertices[f]) on = on && x[corner](i) == 0;
           if (!on) continue;
           faces[f] = plane[i];
-          symmetry[i].push_back({element, f});
+          symmetry[i]->push_back({element, f});
         }
-      maps.push_back(HexMap::blending(geometry::blending_hex(x, faces, "shell octant")));
+      m.maps.push_back(HexMap::blending(geometry::blending_hex(x, faces, "shell octant")));
     }
-  const int n_nodes = static_cast<int>(nodes.size());
-  return {HexTopology(std::move(hexes), n_nodes, "shell octant"), std::move(nodes), std::move(maps),
-          std::move(inner), std::move(outer), std::move(symmetry)};
+  m.topology = HexTopology(std::move(hexes), static_cast<int>(m.nodes.size()), m.context);
+  check_hex_mesh(m);
+  return m;
 }
 
 }  // namespace hpcontact::mesh

@@ -9,6 +9,7 @@
 #include <cstdlib>
 
 #include "hpcontact/basis/quadrature.hpp"
+#include "hpcontact/contact/contact_boundary.hpp"
 #include "hpcontact/contact/friction.hpp"
 #include "hpcontact/contact/point_gap.hpp"
 #include "hpcontact/model/contact_pairs.hpp"
@@ -326,6 +327,55 @@ Eigen::VectorXd undeformed_node_gaps(const Discretization& d, const ContactPair&
     if (pg.found && !pg.beyond_end) gaps(j) = pg.g;
   }
   return gaps;
+}
+
+std::vector<char> touching_nodes(const Discretization& d, const ContactPair& pair, double touching) {
+  const PairConstraints& c = *pair.constraints;
+  const Body& body = d.bodies[pair.body];
+  const Eigen::VectorXd g = undeformed_node_gaps(d, pair);  // sets both displacements to zero
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(body.dofs.n_dofs());
+  std::vector<char> at(c.size(), 0);
+  for (int j = 0; j < c.size(); ++j) at[j] = g(j) <= touching;
+  auto gap_at = [&](int k, double t) {
+    const auto cp = contact::contact_points_at(body.mesh, body.dofs, body.maps, c.edges[k], k, {t},
+                                               {1.0}, body.out_of_plane());
+    const contact::PointGap pg =
+        pair.other < 0 ? contact::rigid_point_gap(cp.front(), *pair.obstacle, zero, body.dof_offset, false)
+                       : contact::two_body_point_gap(cp.front(), zero, *pair.other_boundary, body.dof_offset,
+                                                     d.bodies[pair.other].dof_offset, false,
+                                                     c.mean_normal ? pair.boundary.get() : nullptr);
+    return pg.found && !pg.beyond_end ? pg.g : std::numeric_limits<double>::infinity();
+  };
+  // Between two nodes that do not touch: the least gap by golden section (the gap of a curve
+  // against its partner is smooth and has one minimum on so short a piece), from where the
+  // nodes' gaps say it may reach zero (below the piece's length).
+  const double golden = 0.5 * (std::sqrt(5.0) - 1);
+  for (size_t k = 0; k < c.nodes.edge_nodes.size(); ++k) {
+    const auto& nodes = c.nodes.edge_nodes[k];
+    const auto& t = c.nodes.edge_points[k];
+    for (size_t i = 0; i + 1 < nodes.size(); ++i) {
+      const int j0 = nodes[i], j1 = nodes[i + 1];
+      if (at[j0] || at[j1]) continue;
+      const double length = (c.nodes.nodes[j1].X - c.nodes.nodes[j0].X).norm();
+      if (!(std::min(g(j0), g(j1)) <= length)) continue;
+      double a = t[i], b = t[i + 1];
+      double x1 = b - golden * (b - a), x2 = a + golden * (b - a);
+      double f1 = gap_at(static_cast<int>(k), x1), f2 = gap_at(static_cast<int>(k), x2);
+      for (int it = 0; it < 60 && std::min(f1, f2) > touching; ++it) {
+        if (f1 <= f2) {
+          b = x2, x2 = x1, f2 = f1;
+          x1 = b - golden * (b - a);
+          f1 = gap_at(static_cast<int>(k), x1);
+        } else {
+          a = x1, x1 = x2, f1 = f2;
+          x2 = a + golden * (b - a);
+          f2 = gap_at(static_cast<int>(k), x2);
+        }
+      }
+      if (std::min(f1, f2) <= touching) at[j0] = at[j1] = 1;
+    }
+  }
+  return at;
 }
 
 Eigen::VectorXd initial_overlaps(const Discretization& d, const ContactPair& pair) {

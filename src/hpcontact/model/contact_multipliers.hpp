@@ -124,6 +124,11 @@ struct InterferenceRelief {
 /// The gap of each of `pair`'s multiplier nodes' own point at the undeformed state (+∞ where it
 /// has no foot on the other side).
 Eigen::VectorXd undeformed_node_gaps(const Discretization& d, const ContactPair& pair);
+/// Per multiplier node of `pair`, whether it touches the other side at the undeformed state:
+/// its own point's gap is at most `touching`, or the gap falls to `touching` between it and the
+/// next node of its edge (a curve touching its partner between two nodes: both touch, so that
+/// the contact's first point is held whichever mesh the adaptive loop made).
+std::vector<char> touching_nodes(const Discretization& d, const ContactPair& pair, double touching);
 /// Their overlaps: max(0, −g), 0 where a node has no foot.
 Eigen::VectorXd initial_overlaps(const Discretization& d, const ContactPair& pair);
 

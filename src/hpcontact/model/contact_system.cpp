@@ -157,12 +157,12 @@ void ContactSystem::activate_touching(Eigen::VectorXd& x) const {
     if (!pair.constraints) continue;
     const PairConstraints& c = *pair.constraints;
     const double touching = 1e-9 * d_.bodies[pair.body].mesh.size();
-    const Eigen::VectorXd g = undeformed_node_gaps(d_, pair);
+    const std::vector<char> at = touching_nodes(d_, pair, touching);
     const int o = n_u_ + z_offset_[k];
     const ConstraintState s = evaluate_constraints(d_, pair, u, x.segment(o, c.size()), nullptr, nullptr,
                                                    false, {}, relief(k, displacement_factors(x).y()));
     for (int j = 0; j < c.size(); ++j)
-      if (s.found[j] && c.weight(j) > 0 && g(j) <= touching)  // touching or overlapping
+      if (s.found[j] && c.weight(j) > 0 && at[j])  // touching or overlapping
         x(o + j) = std::max(x(o + j), (1 + 1e-9) * c.scale(j) * std::max(0.0, s.G(j)) / c.weight(j));
   }
 }

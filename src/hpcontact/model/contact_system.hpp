@@ -53,9 +53,11 @@ public:
   int points_in_contact() const { return points_in_contact_; }
 
   /// Before the first load step from the undeformed state (x there): the multiplier nodes that
-  /// touch or overlap the other side at their own point (g <= 1e-9 of the body's size) — a
-  /// curved body touching at one point, whose weighted gap the rising surface around the node
-  /// makes positive; an overlap that contact[].interference: ramp makes a touch — start active:
+  /// touch or overlap the other side at their own point (g <= 1e-9 of the body's size), or
+  /// between them and their neighbour on the edge (touching_nodes: a curve touching at a point
+  /// no node lies on, as after an adaptive loop moved the node that did) — a curved body
+  /// touching at one point, whose weighted gap the rising surface around the node makes
+  /// positive; an overlap that contact[].interference: ramp makes a touch — start active:
   /// their multiplier the least that passes the active-set test (none where the weighted gap is
   /// already a penetration). Otherwise no node
   /// would be active in the first Newton iteration and a body that only the contact (and its

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -294,10 +295,15 @@ struct AdaptSpec {
   SourceRef where;
 };
 
+struct SolidSpec;
+
 struct ProblemSpec {
   std::string file;  ///< the problem file, for messages
   std::string case_name;
   std::string description;
+  /// A 3D problem (`dimension: 3`, model/solid_spec.hpp): its body and discretisation; the 2D
+  /// members below are then empty, except output.
+  std::shared_ptr<const SolidSpec> solid;
   std::vector<BodySpec> bodies;
   DiscretizationSpec discretization;
   SolverSpec solver;

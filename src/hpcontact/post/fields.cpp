@@ -12,9 +12,13 @@
 namespace hpcontact::post {
 
 double von_mises(double sxx, double syy, double szz, double sxy) {
-  return std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) +
-                          (szz - sxx) * (szz - sxx)) +
-                   3 * sxy * sxy);
+  return von_mises(std::array<double, 6>{sxx, syy, szz, 0, 0, sxy});
+}
+
+double von_mises(const std::array<double, 6>& s) {
+  return std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) +
+                          (s[2] - s[0]) * (s[2] - s[0])) +
+                   3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
 }
 
 std::array<double, 2> principal_stresses(double sxx, double syy, double sxy) {

@@ -31,6 +31,10 @@ PointResult evaluate(const model::Body& body, int q, double xi, double eta, cons
 ///   √(½ ((sxx − syy)² + (syy − szz)² + (szz − sxx)²) + 3 sxy²).
 double von_mises(double sxx, double syy, double szz, double sxy);
 
+/// von Mises stress of a 3D stress in Voigt order (xx, yy, zz, yz, xz, xy):
+///   √(½ ((σxx − σyy)² + (σyy − σzz)² + (σzz − σxx)²) + 3 (σyz² + σxz² + σxy²)).
+double von_mises(const std::array<double, 6>& s);
+
 /// The in-plane principal stresses {σ1, σ2}, σ1 ≥ σ2, of (sxx, syy, sxy): c ± R with
 /// c = (sxx + syy)/2, R = √(((sxx − syy)/2)² + sxy²) (the centre and radius of Mohr's circle).
 std::array<double, 2> principal_stresses(double sxx, double syy, double sxy);

@@ -7,15 +7,34 @@ namespace hpcontact::post {
 
 VtkGrid::VtkGrid(const std::string& path, const std::vector<Vec2>& points,
                  const std::vector<std::vector<int>>& cells, int vtk_cell_type, int precision)
-    : file_(path), out_(file_.stream()), precision_(precision), n_points_(points.size()),
-      n_cells_(cells.size()) {
+    : file_(path), out_(file_.stream()), precision_(precision) {
+  write_grid(
+      points.size(), [&](std::size_t i, int c) { return c < 2 ? points[i][c] : 0.0; }, cells,
+      vtk_cell_type);
+}
+
+VtkGrid::VtkGrid(const std::string& path, const std::vector<std::array<double, 3>>& points,
+                 const std::vector<std::vector<int>>& cells, int vtk_cell_type, int precision)
+    : file_(path), out_(file_.stream()), precision_(precision) {
+  write_grid(
+      points.size(), [&](std::size_t i, int c) { return points[i][c]; }, cells, vtk_cell_type);
+}
+
+void VtkGrid::write_grid(std::size_t n_points, const std::function<double(std::size_t, int)>& point,
+                         const std::vector<std::vector<int>>& cells, int vtk_cell_type) {
+  n_points_ = n_points;
+  n_cells_ = cells.size();
   out_ << "<?xml version=\"1.0\"?>\n"
        << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
        << "<UnstructuredGrid>\n"
-       << "<Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\"" << cells.size()
+       << "<Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\"" << cells.size()
        << "\">\n";
   out_ << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const Vec2& x : points) vector(x);
+  for (std::size_t i = 0; i < n_points; ++i)
+    for (int c = 0; c < 3; ++c) {
+      number(point(i, c));
+      out_ << (c < 2 ? ' ' : '\n');
+    }
   out_ << "</DataArray>\n</Points>\n";
   out_ << "<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
   for (const auto& c : cells) {
@@ -39,6 +58,18 @@ void VtkGrid::point_vector(const std::string& name, const std::function<Vec2(std
   for (std::size_t i = 0; i < n_points_; ++i) {
     vector(value(i));
   }
+  out_ << "</DataArray>\n";
+}
+
+void VtkGrid::point_components(const std::string& name, int n_components,
+                               const std::function<double(std::size_t, int)>& value) {
+  out_ << "<DataArray type=\"Float64\" Name=\"" << name << "\" NumberOfComponents=\""
+       << n_components << "\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < n_points_; ++i)
+    for (int c = 0; c < n_components; ++c) {
+      number(value(i, c));
+      out_ << (c + 1 < n_components ? ' ' : '\n');
+    }
   out_ << "</DataArray>\n";
 }
 

@@ -1,6 +1,7 @@
 // Writing a VTK XML unstructured grid (.vtu) in ASCII: the part every .vtu file of ours shares.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -18,10 +19,16 @@ class VtkGrid {
 public:
   VtkGrid(const std::string& path, const std::vector<Vec2>& points,
           const std::vector<std::vector<int>>& cells, int vtk_cell_type, int precision);
+  /// The same with points in space.
+  VtkGrid(const std::string& path, const std::vector<std::array<double, 3>>& points,
+          const std::vector<std::vector<int>>& cells, int vtk_cell_type, int precision);
 
   /// Starts the point data; `vectors` and `scalars` name the arrays ParaView shows first.
   void begin_point_data(const std::string& vectors, const std::string& scalars);
   void point_vector(const std::string& name, const std::function<Vec2(std::size_t)>& value);
+  /// An array of n_components values per point: value(point, component).
+  void point_components(const std::string& name, int n_components,
+                        const std::function<double(std::size_t, int)>& value);
   void point_scalar(const std::string& name, const std::function<double(std::size_t)>& value,
                     const std::string& type = "Float64");
   /// Ends the point data and starts the cell data (`scalars`: the array shown first, or "").
@@ -34,6 +41,9 @@ public:
 private:
   void array(const std::string& name, const std::string& type, std::size_t n,
              const std::function<double(std::size_t)>& value);
+  /// Everything before the data: the piece's header, the points (point(i, coordinate)), cells.
+  void write_grid(std::size_t n_points, const std::function<double(std::size_t, int)>& point,
+                  const std::vector<std::vector<int>>& cells, int vtk_cell_type);
 
   OutputFile file_;
   std::ostream& out_;

@@ -74,6 +74,14 @@ Eigen::MatrixXd solve_with_fixed_dofs(const SparseMatrix& K, const Eigen::Vector
 Eigen::MatrixXd solve_with_fixed_dofs(const SparseMatrix& K, const Eigen::VectorXd& f,
                                       const std::vector<int>& fixed, const Eigen::MatrixXd& values) {
   LinearSolver solver(LinearSolverKind::cholmod);
+  // A singular block (a rigid motion left free) factorises with pivots that are round-off,
+  // refused by the solver below a ratio to their diagonal entries; 1e-13 here, not its 1e-11,
+  // since a slender solid's bending is a legitimately small pivot: a cantilever of one
+  // hexahedron through its section, clamped, has the smallest ratio 6.2e-8 at L = 100 h and
+  // 6.2e-12 at 1000 h (4 elements; 1.6e-11 to 2.0e-11 with 8 or 10; it falls like (h/L)⁴,
+  // tests/verification/test_hex_cantilever.cpp), while a free box, beam or octant (p = 1..8)
+  // gives negative pivots or positive ones <= 7.3e-16.
+  solver.set_singular_pivot_ratio(kSlenderSingularPivotRatio);
   return solve_with_fixed_dofs(K, f, fixed, values, solver);
 }
 

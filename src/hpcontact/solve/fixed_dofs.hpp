@@ -22,7 +22,12 @@ Eigen::MatrixXd solve_with_fixed_dofs(const SparseMatrix& K, const Eigen::Vector
                                       const std::vector<int>& fixed, const Eigen::MatrixXd& values,
                                       LinearSolver& solver);
 
-/// The same with a CHOLMOD solver of its own.
+/// The pivot ratio below which solve_with_fixed_dofs's own solver takes K_ff for singular
+/// (LinearSolver::singular_pivot_ratio): lower than the solver's default for slender solids.
+inline constexpr double kSlenderSingularPivotRatio = 1e-13;
+
+/// The same with a CHOLMOD solver of its own, which refuses K_ff as singular below
+/// kSlenderSingularPivotRatio.
 Eigen::MatrixXd solve_with_fixed_dofs(const SparseMatrix& K, const Eigen::VectorXd& f,
                                       const std::vector<int>& fixed, const Eigen::MatrixXd& values);
 

@@ -142,7 +142,7 @@ void require_memory_for_factor(const FactorMemory& m, Eigen::Index n, Eigen::Ind
 /// combination of the rows eliminated before it: the matrix is singular. Well-posed stiffness
 /// matrices of the examples give ratios above 1e-6 (the quarter circle at p = 1..12: ≥ 3e-2);
 /// a free rigid-body motion gives round-off, ≤ 1e-13.
-constexpr double singular_pivot_ratio = 1e-11;
+constexpr double default_singular_pivot_ratio = 1e-11;
 
 /// The smallest pivot ratio seen, and its row.
 struct SmallestPivot {
@@ -235,6 +235,7 @@ LinearSolverKind linear_solver_kind(const std::string& name, const std::string& 
 
 LinearSolver::LinearSolver(LinearSolverKind kind)
     : kind_(kind == LinearSolverKind::cholmod_else_lu ? LinearSolverKind::cholmod : kind),
+      singular_pivot_ratio_(default_singular_pivot_ratio),
       lu_when_indefinite_(kind == LinearSolverKind::cholmod_else_lu),
       impl_(std::make_unique<Impl>()) {
   impl_->cholmod.cholmod().print = 0;  // failures are reported through info(), not printed
@@ -313,7 +314,7 @@ void LinearSolver::factorize(SparseMatrix&& A_in) {
       impl_->lu.for_each_pivot(A, [&](int column, double ratio) { smallest.take(column, ratio); });
   }
   last_singular_row_ = -1;
-  if (ok && smallest.ratio > singular_pivot_ratio) {
+  if (ok && smallest.ratio > singular_pivot_ratio_) {
     impl_->analysed = true;
     return;
   }

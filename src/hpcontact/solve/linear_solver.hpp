@@ -42,8 +42,8 @@ public:
   /// Factorises A: for cholmod and ldlt A is symmetric (the lower triangle is used) and must be
   /// positive definite, for lu any nonsingular matrix. Throws NumericalError otherwise, which
   /// for a stiffness matrix means a rigid-body motion is unconstrained.
-  /// Symmetric matrices are also refused when a pivot is below 1e-11 of its diagonal entry (a
-  /// singular matrix whose zero pivot comes out as positive round-off).
+  /// Symmetric matrices are also refused when a pivot is below singular_pivot_ratio() of its
+  /// diagonal entry (a singular matrix whose zero pivot comes out as positive round-off).
   /// CHOLMOD: after the symbolic analysis of a new pattern, a factor whose estimate (memory())
   /// exceeds the memory available (available_memory.hpp) is refused with a ResourceError that
   /// gives both and what to do, before the numeric factorisation tries to allocate it; so is a
@@ -65,6 +65,11 @@ public:
   Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& B) const;
   /// Symbolic analyses done so far (a new one for each new sparsity pattern), for tests.
   int analyses() const { return analyses_; }
+  /// The pivot, relative to its diagonal entry, below which a symmetric matrix is taken for a
+  /// singular one: 1e-11 unless set (a slender solid's bending gives smaller ones that are not
+  /// round-off, solve/fixed_dofs.hpp).
+  double singular_pivot_ratio() const { return singular_pivot_ratio_; }
+  void set_singular_pivot_ratio(double ratio) { singular_pivot_ratio_ = ratio; }
   /// The factorisation in use: for cholmod_else_lu, lu once a matrix was not positive definite.
   LinearSolverKind kind() const { return kind_; }
   /// Whether factorize() reads only the lower triangle of A (cholmod and ldlt; not lu, nor
@@ -74,6 +79,7 @@ public:
 private:
   struct Impl;
   LinearSolverKind kind_;
+  double singular_pivot_ratio_;
   bool lu_when_indefinite_ = false;
   int last_singular_row_ = -1;
   int analyses_ = 0;

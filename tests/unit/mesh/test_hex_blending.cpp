@@ -80,24 +80,26 @@ TEST(BlendingHex, ShellOctantFacesLieOnTheirSurfaces) {
   const double a = 1, b = 2;
   const auto m = mesh::shell_octant_mesh(a, b, 2);
   ASSERT_EQ(m.topology.n_hexes(), 6);
-  EXPECT_EQ(m.inner.size(), 3u);
-  EXPECT_EQ(m.outer.size(), 3u);
-  for (int i = 0; i < 3; ++i) EXPECT_EQ(m.symmetry[i].size(), 4u);  // 2 patches × 2 layers
+  const char* plane[3] = {"x0", "y0", "z0"};
+  EXPECT_EQ(m.face_sets.size(), 5u);
+  EXPECT_EQ(m.face_sets.at("inner").size(), 3u);
+  EXPECT_EQ(m.face_sets.at("outer").size(), 3u);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(m.face_sets.at(plane[i]).size(), 4u);  // 2 patches × 2 layers
   const std::vector<double> grid{-1, -0.6, -0.1, 0.35, 0.8, 1};
-  for (const auto& [h, f] : m.inner)
+  for (const auto& [h, f] : m.face_sets.at("inner"))
     for (double s : grid)
       for (double t : grid) {
         const Vec3 r = face_point(f, s, t);
         EXPECT_NEAR(m.maps[h].map(r(0), r(1), r(2)).norm(), a, 1e-14);
       }
-  for (const auto& [h, f] : m.outer)
+  for (const auto& [h, f] : m.face_sets.at("outer"))
     for (double s : grid)
       for (double t : grid) {
         const Vec3 r = face_point(f, s, t);
         EXPECT_NEAR(m.maps[h].map(r(0), r(1), r(2)).norm(), b, 2e-14);
       }
   for (int i = 0; i < 3; ++i)
-    for (const auto& [h, f] : m.symmetry[i])
+    for (const auto& [h, f] : m.face_sets.at(plane[i]))
       for (double s : grid)
         for (double t : grid) {
           const Vec3 r = face_point(f, s, t);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 
+#include "hpcontact/model/boundary_pressure.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "hpcontact/model/linear_solve.hpp"
