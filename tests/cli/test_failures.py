@@ -2,6 +2,7 @@
 precision, memory running out, a degenerate element) ends the run with exit 1 and a message
 naming the place and the cause, never with a signal, and never with a summary claiming success."""
 import os
+import re
 import resource
 import subprocess
 
@@ -80,6 +81,48 @@ def test_memory_running_out_is_reported_not_a_crash(exe, root, tmp_path):
             assert not (out / "summary.json").exists()
             out_of_memory += "out of memory" in r.stderr
     assert out_of_memory >= 3
+
+
+BOX_3D = """case: box-3d
+dimension: 3
+bodies:
+  - name: block
+    material: {E: 5000, nu: 0.27}
+    box: {from: [0, 0, 0], to: [1, 1, 1], elements: [6, 6, 6]}
+    constraints:
+      - {faces: [z0], ux: 0, uy: 0, uz: 0}
+    loads:
+      - {faces: [z1], traction: [0, 0, -1]}
+discretization: {degree: 4}
+output: {vtu: false}
+"""
+
+
+def test_a_3d_factor_that_will_not_fit_is_refused_with_its_size(exe, tmp_path):
+    """A 3D problem (216 hexahedra at p = 4, 10224 unknowns after condensation, a factor of
+    0.12 GB) under address-space limits from the least the program loads in to 260 MB more either
+    succeeds or ends with exit 1 saying it ran out of memory, and at least once it is refused
+    before the factorisation with the factor's size in GB and the memory left (not killed, not a
+    failed allocation): CHOLMOD's analysis sized it against the limit."""
+    problem = tmp_path / "box.yaml"
+    problem.write_text(BOX_3D)
+    loads = [mb for mb in range(30, 400, 10)
+             if limited_run(exe, ["--version"], mb, timeout=scaled_timeout(30)).returncode == 0]
+    assert loads, "the program does not load within 400 MB of address space"
+    refused = 0
+    for mb in range(loads[0], loads[0] + 270, 20):
+        out = tmp_path / f"out-{mb}"
+        r = limited_run(exe, ["run", str(problem), "--out", str(out), "-q"], mb,
+                        timeout=scaled_timeout(120))
+        assert r.returncode in (0, 1), (mb, r.returncode, r.stderr)
+        if r.returncode == 1:
+            assert "out of memory" in r.stderr or "Thread creation failed" in r.stderr, (mb, r.stderr)
+            assert not (out / "summary.json").exists()
+            if "would run out of memory: its factor has" in r.stderr:
+                assert re.search(r"needs about [0-9.]+ GB with its workspace .* but [0-9.]+ GB are "
+                                 r"available \(the address-space limit \(ulimit -v\)", r.stderr), r.stderr
+                refused += 1
+    assert refused >= 1
 
 
 def test_solution_that_is_not_finite_is_an_error(hpcontact, root, tmp_path):
