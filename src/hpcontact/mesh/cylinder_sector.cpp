@@ -40,7 +40,6 @@ HexMesh cylinder_sector_mesh(const CylinderSector& sector, std::array<int, 3> n)
   for (int i = 0; i <= n[0]; ++i) radius[i] = std::lerp(a, b, step(i, n[0]));
   for (int j = 0; j <= n[1]; ++j) angle[j] = std::lerp(angle0, angle1, step(j, n[1]));
   for (int k = 0; k <= n[2]; ++k) height[k] = std::lerp(0.0, sector.length, step(k, n[2]));
-  auto node = [&](int i, int j, int k) { return i + (n[0] + 1) * (j + (n[1] + 1) * k); };
   for (int k = 0; k <= n[2]; ++k)
     for (int j = 0; j <= n[1]; ++j)
       for (int i = 0; i <= n[0]; ++i)
@@ -58,34 +57,13 @@ HexMesh cylinder_sector_mesh(const CylinderSector& sector, std::array<int, 3> n)
   for (double z : height)
     level.push_back(std::make_shared<geometry::Plane>(Vec3(0, 0, z), Vec3::UnitZ()));
 
-  std::vector<std::array<int, 8>> hexes;
-  const std::string names[6] = {"inner", "outer", "theta0", "theta1", "z0", "z1"};
-  for (const std::string& name : names) m.face_sets[name];
-  for (int k = 0; k < n[2]; ++k)
-    for (int j = 0; j < n[1]; ++j)
-      for (int i = 0; i < n[0]; ++i) {
-        const int element = static_cast<int>(hexes.size());
-        std::array<int, 8> v;
-        std::array<Vec3, 8> x;
-        for (int c = 0; c < 8; ++c) {
-          const auto* r = basis::kHexVertexCoordinates[c];
-          v[c] = node(i + (r[0] > 0), j + (r[1] > 0), k + (r[2] > 0));
-          x[c] = m.nodes[v[c]];
-        }
-        hexes.push_back(v);
-        const std::array<geometry::SurfacePtr, 6> faces{cylinder[i], cylinder[i + 1],
-                                                        meridian[j], meridian[j + 1],
-                                                        level[k],    level[k + 1]};
-        m.maps.push_back(HexMap::blending(geometry::blending_hex(x, faces, "cylinder sector")));
-        const std::array<int, 3> index{i, j, k};
-        for (int d = 0; d < 3; ++d) {
-          if (index[d] == 0) m.face_sets[names[2 * d]].push_back({element, 2 * d});
-          if (index[d] == n[d] - 1)
-            m.face_sets[names[2 * d + 1]].push_back({element, 2 * d + 1});
-        }
-      }
-  m.topology = HexTopology(std::move(hexes), static_cast<int>(m.nodes.size()), m.context);
-  check_hex_mesh(m);
+  add_structured_hexes(m, n, {"inner", "outer", "theta0", "theta1", "z0", "z1"},
+                       [&](int i, int j, int k, const std::array<Vec3, 8>& x) {
+                         const std::array<geometry::SurfacePtr, 6> faces{
+                             cylinder[i], cylinder[i + 1], meridian[j],
+                             meridian[j + 1], level[k], level[k + 1]};
+                         return HexMap::blending(geometry::blending_hex(x, faces, "cylinder sector"));
+                       });
   return m;
 }
 

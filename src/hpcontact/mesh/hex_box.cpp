@@ -40,38 +40,12 @@ HexMesh hex_box_mesh(const std::array<std::vector<double>, 3>& planes) {
   }
   HexMesh m;
   m.context = "hexahedral box";
-  auto node = [&](int i, int j, int k) { return i + (n[0] + 1) * (j + (n[1] + 1) * k); };
   for (int k = 0; k <= n[2]; ++k)
     for (int j = 0; j <= n[1]; ++j)
       for (int i = 0; i <= n[0]; ++i)
         m.nodes.push_back(Vec3(planes[0][i], planes[1][j], planes[2][k]));
-  std::vector<std::array<int, 8>> hexes;
-  const std::string names[6] = {"x0", "x1", "y0", "y1", "z0", "z1"};
-  for (const std::string& name : names) m.face_sets[name];
-  for (int k = 0; k < n[2]; ++k)
-    for (int j = 0; j < n[1]; ++j)
-      for (int i = 0; i < n[0]; ++i) {
-        const int element = static_cast<int>(hexes.size());
-        std::array<int, 8> v;
-        std::array<Vec3, 8> x;
-        for (int c = 0; c < 8; ++c) {
-          const auto* r = basis::kHexVertexCoordinates[c];
-          v[c] = node(i + (r[0] > 0), j + (r[1] > 0), k + (r[2] > 0));
-          x[c] = m.nodes[v[c]];
-        }
-        hexes.push_back(v);
-        m.maps.push_back(HexMap::trilinear(x));
-        // Local face 2d + s lies on the box's side s of axis d when the element is the last
-        // (s = 1) or the first (s = 0) along d.
-        const std::array<int, 3> index{i, j, k};
-        for (int d = 0; d < 3; ++d) {
-          if (index[d] == 0) m.face_sets[names[2 * d]].push_back({element, 2 * d});
-          if (index[d] == n[d] - 1)
-            m.face_sets[names[2 * d + 1]].push_back({element, 2 * d + 1});
-        }
-      }
-  m.topology = HexTopology(std::move(hexes), static_cast<int>(m.nodes.size()), m.context);
-  check_hex_mesh(m);
+  add_structured_hexes(m, n, {"x0", "x1", "y0", "y1", "z0", "z1"},
+                       [](int, int, int, const std::array<Vec3, 8>& x) { return HexMap::trilinear(x); });
   return m;
 }
 
