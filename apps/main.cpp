@@ -240,7 +240,7 @@ int check_solid(const std::string& file, const model::ProblemSpec& spec) {
     std::cout << ' ' << printable(name) << " (" << faces.size() << ")";
   std::cout << "\n  " << solid.body.constraints.size() << " constraint(s), "
             << solid.body.loads.size() << " load(s)\n  free dofs " << d.n_free() << " ("
-            << 3 * d.dofs.n_external_modes() - static_cast<int>(d.fixed.size())
+            << d.n_free_external()
             << " after condensing internal modes)\n";
   return 0;
 }

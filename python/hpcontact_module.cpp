@@ -117,7 +117,7 @@ py::dict describe_solid(const model::ProblemSpec& spec) {
   out["dimension"] = 3;
   out["bodies"] = bodies;
   out["dofs"] = d.n_free();
-  out["dofs_condensed"] = 3 * d.dofs.n_external_modes() - static_cast<int>(d.fixed.size());
+  out["dofs_condensed"] = d.n_free_external();
   return out;
 }
 

@@ -10,7 +10,6 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/hex_assembly.hpp"
 #include "hpcontact/fem/hex_face_load.hpp"
-#include "hpcontact/basis/quadrature.hpp"
 #include "hpcontact/geometry/blending_hex.hpp"
 #include "hpcontact/mesh/hex_box.hpp"
 #include "hpcontact/mesh/shell_octant.hpp"
@@ -122,29 +121,48 @@ mesh::Vec3 traction_of(const FaceLoadSpec& load) {
   return mesh::Vec3((*load.traction)[0], (*load.traction)[1], (*load.traction)[2]);
 }
 
-/// ∫ t dA over the load's faces as given (before any scaling); refused when it vanishes and the
-/// load asks for a resultant.
-mesh::Vec3 load_resultant(const SolidDiscretization& d, const FaceLoadSpec& load) {
-  mesh::Vec3 total = mesh::Vec3::Zero();
-  double area = 0;
-  for (const auto& [h, lf] : faces_of(d.mesh, load.faces)) {
-    const int n_points =
-        fem::hex_face_gauss_points(d.dofs.element(h).hierarchic, d.mesh.maps[h], lf);
-    const auto& rule = basis::gauss_legendre(n_points);
-    for (int i = 0; i < n_points; ++i)
-      for (int j = 0; j < n_points; ++j) {
-        const mesh::Vec3 n_dA = rule.weights[i] * rule.weights[j] *
-                                fem::hex_face_area_normal(d.mesh.maps[h], lf, rule.points[i],
-                                                          rule.points[j]);
-        total += load.pressure ? mesh::Vec3(-*load.pressure * n_dA) : mesh::Vec3(n_dA.norm() * traction_of(load));
-        area += n_dA.norm();
-      }
+/// A surface load as given (before any scaling): each face's element load vector.
+struct FaceLoads {
+  std::vector<std::pair<int, Eigen::VectorXd>> faces;  ///< element, its load (component-blocked)
+  /// ∫ t dA: the vertex modes sum to one (basis/hex_modes.hpp: local modes 0..7), so their
+  /// entries of the load vectors sum to the load's integral.
+  mesh::Vec3 resultant() const {
+    mesh::Vec3 total = mesh::Vec3::Zero();
+    for (const auto& [h, f] : faces)
+      for (int c = 0; c < 3; ++c) total(c) += f.segment(c * (f.size() / 3), 8).sum();
+    return total;
   }
-  const double magnitude = load.pressure ? std::abs(*load.pressure) * area : traction_of(load).norm() * area;
-  HPC_REQUIRE(total.norm() > 1e-9 * magnitude, InputError, load.where.str(),
-              ": the load's integral over its faces vanishes (", total.norm(), " of ", magnitude,
+  /// Σ |vertex entries|: the scale against which a resultant is zero.
+  double magnitude() const {
+    double sum = 0;
+    for (const auto& [h, f] : faces)
+      for (int c = 0; c < 3; ++c) sum += f.segment(c * (f.size() / 3), 8).cwiseAbs().sum();
+    return sum;
+  }
+};
+
+FaceLoads face_loads(const SolidDiscretization& d, const FaceLoadSpec& load) {
+  FaceLoads out;
+  for (const auto& [h, lf] : faces_of(d.mesh, load.faces)) {
+    const fem::HexElementSpace& space = d.dofs.element(h);
+    const int n_points = fem::hex_face_gauss_points(space.hierarchic, d.mesh.maps[h], lf);
+    out.faces.emplace_back(
+        h, load.pressure ? fem::hex_face_pressure_load(space.hierarchic, d.mesh.maps[h], lf,
+                                                       *load.pressure, n_points)
+                         : fem::hex_face_traction_load(space.hierarchic, d.mesh.maps[h], lf,
+                                                       traction_of(load), n_points));
+  }
+  return out;
+}
+
+/// 1, or the factor that gives the load the resultant asked for; refused where it vanishes.
+double load_scale(const FaceLoads& loads, const FaceLoadSpec& load) {
+  if (!load.resultant) return 1.0;
+  const double total = loads.resultant().norm(), magnitude = loads.magnitude();
+  HPC_REQUIRE(total > 1e-9 * magnitude, InputError, load.where.str(),
+              ": the load's integral over its faces vanishes (", total, " of ", magnitude,
               "), so no scale gives it the resultant asked for");
-  return total;
+  return *load.resultant / total;
 }
 
 }  // namespace
@@ -224,15 +242,10 @@ SolidSolution solve_solid(const SolidSpec& spec, const SolidDiscretization& d,
   fem::HexSystem system = fem::assemble_hex_elasticity(body, {.condense_internal = true});
   // Surface loads: face modes are external, so they keep their numbers in the condensed system.
   for (const FaceLoadSpec& load : spec.body.loads) {
-    const double scale = load.resultant ? *load.resultant / load_resultant(d, load).norm() : 1.0;
-    for (const auto& [h, lf] : faces_of(d.mesh, load.faces)) {
+    const FaceLoads loads = face_loads(d, load);
+    const double scale = load_scale(loads, load);
+    for (const auto& [h, f] : loads.faces) {
       const fem::HexElementSpace& space = d.dofs.element(h);
-      const int n_points = fem::hex_face_gauss_points(space.hierarchic, d.mesh.maps[h], lf);
-      const Eigen::VectorXd f =
-          load.pressure ? fem::hex_face_pressure_load(space.hierarchic, d.mesh.maps[h], lf,
-                                                      *load.pressure, n_points)
-                        : fem::hex_face_traction_load(space.hierarchic, d.mesh.maps[h], lf,
-                                                      traction_of(load), n_points);
       const int n = space.n_modes();
       for (int local = 0; local < 3 * n; ++local)
         if (f(local) != 0) system.f(3 * space.modes[local % n] + local / n) += scale * f(local);

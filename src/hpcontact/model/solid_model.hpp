@@ -26,6 +26,10 @@ struct SolidDiscretization {
   std::vector<int> fixed;
   std::vector<double> fixed_values;
   int n_free() const { return dofs.n_dofs() - static_cast<int>(fixed.size()); }
+  /// Free dofs after condensing the internal modes (the prescribed ones are all external).
+  int n_free_external() const {
+    return 3 * dofs.n_external_modes() - static_cast<int>(fixed.size());
+  }
 };
 
 /// Builds the mesh and the modes of `spec` (degrees and space for every element) and the

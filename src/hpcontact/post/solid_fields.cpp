@@ -135,8 +135,10 @@ void write_solid_vtu(const std::string& path, const model::SolidDiscretization& 
   for (int k = 0; k < 6; ++k)
     grid.point_scalar(names[k], [&](std::size_t i) { return values[i].sigma[k]; });
   grid.point_scalar("von_mises", [&](std::size_t i) { return von_mises(values[i].sigma); });
+  std::vector<std::array<double, 3>> principals(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) principals[i] = principal(values[i].sigma);
   grid.point_components("principal_stress", 3,
-                        [&](std::size_t i, int c) { return principal(values[i].sigma)[c]; });
+                        [&](std::size_t i, int c) { return principals[i][c]; });
   grid.begin_cell_data("element");
   grid.cell_scalar("element", [&](std::size_t c) { return cell_element[c]; });
   grid.cell_scalar("degree", [&](std::size_t c) { return cell_degree[c]; });
