@@ -221,3 +221,18 @@ def test_a_resultant_scales_the_load_to_that_force(hpcontact, box, tmp_path):
                                 "- {faces: [x0, x1, y0, y1, z0, z1], pressure: 1, resultant: 5}"))
     expect_refused(hpcontact, str(path), str(tmp_path / "b"), [],
                    "bodies[0].loads[0]: the load's integral over its faces vanishes", 1)
+
+
+def test_a_face_on_two_surfaces_is_refused(hpcontact, root, tmp_path):
+    """The hole's face set named on two cylinders: refused naming the second surface's key."""
+    case = os.path.join(root, "examples", "plate-hole-3d", "plate-hole-3d.yaml")
+    line = "      - {faces: [hole], cylinder: {point: [0, 0, 0], axis: [0, 0, 1], radius: 2}}\n"
+    text = open(case).read()
+    assert line in text
+    text = text.replace(line, line + line.replace("radius: 2}", "radius: 3}"))
+    bad = tmp_path / "plate.yaml"
+    bad.write_text(text.replace("plate-thin.msh", os.path.join(os.path.dirname(case), "plate-thin.msh")))
+    r = hpcontact("run", str(bad), "--out", str(tmp_path / "out"), "-q")
+    assert r.returncode == 1, r.stderr
+    assert "bodies[0].surfaces[1]: face " in r.stderr
+    assert "is also in the sets of bodies[0].surfaces[0]: a face lies on one surface" in r.stderr
