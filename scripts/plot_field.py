@@ -3,17 +3,27 @@
 element outlines and the rigid obstacles: a quick look without ParaView.
 
 usage: plot_field.py RESULTS_DIR/solution.vtu [--field von_mises] [--scale 0] [--out FILE.png]
-       [--xlim A B] [--ylim A B] [--vmin V] [--vmax V]
+       [--xlim A B] [--ylim A B] [--vmin V] [--vmax V] [--units LENGTH,FORCE]
 
 --field: a point field of the file (von_mises, sigma_xx, sigma_yy, sigma_xy, sigma_zz,
 principal_1, principal_2, strain_xx, strain_yy, gamma_xy).
 
 --scale: magnification of the displacement (1: true scale). 0 (the default) chooses it: the
-largest displacement drawn as 5 % of the model size, but where bodies touch each other or a
-rigid obstacle, no more than keeps them from overlapping — magnifying a deformation pushes a
-body into what it presses on — so the largest scale, at least 1, at which no drawn body
-penetrates another or an obstacle deeper than the computed solution does (plus 0.2 % of the
-model size). The title gives the scale and why.
+largest displacement drawn as 5 % of the size of the view (the model, or --xlim/--ylim), but
+where bodies touch each other or a rigid obstacle, no more than keeps what touches touching.
+Magnifying a deformation misdraws contact both ways: it pushes a body into what it presses on,
+and it parts surfaces whose contact closed an overlap of the input — a press fit's shaft is
+meshed larger than the hub's bore by the interference δ, the solution closes it, and at scale
+s the two are drawn (s - 1) δ apart (× 180 drew a hub 3.6 mm off its shaft). So the scale is
+the largest, at least 1, at which (a) no drawn body penetrates another or an obstacle deeper
+than the computed solution does, plus a tolerance, and (b) no boundary point that touches
+(lies within the tolerance of the other body or the obstacle at true scale) is drawn farther
+from it — apart or into it — than at true scale, plus the tolerance. The tolerance is 0.2 % of
+the view's size: about a pixel at the default figure size, an overlap or a gap no one sees.
+Bounding the drawing, rather than a fraction of the element size, keeps the picture honest
+where it matters (what a reader sees touching does touch) and lets the magnification grow
+wherever contact is not at stake. The title gives the scale and why; --scale 1 draws the true
+deformation.
 
 The rigid obstacles of the run's contact pairs (input.yaml beside the .vtu: planes, circles,
 curves through points) are drawn in grey at their final position (obstacle.displacement times
@@ -48,10 +58,11 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from hpc_run import axis_label, read_vtu, script_parser, units_of  # noqa: E402
+from plot_runs import parse_units  # noqa: E402
 
 STRESS_FIELDS = {"von_mises", "sigma_xx", "sigma_yy", "sigma_xy", "sigma_zz", "principal_1",
                  "principal_2"}
-OVERLAP_TOLERANCE = 0.002  # of the model size: a penetration no one sees
+OVERLAP_TOLERANCE = 0.002  # of the view's size: an overlap or a gap no one sees (about a pixel)
 
 
 def results_file(vtu, name):
@@ -246,25 +257,91 @@ def penetration(x, scale, obstacles, loops_of, pairs_bodies):
     return deepest
 
 
+def distance_to_loops(pts, x, loops, chunk=512):
+    """Unsigned distance of points pts (n, 2) to the nearest of the closed loops (point indices
+    into x), in chunks of points (the distances to every segment are held at once)."""
+    out = np.full(len(pts), np.inf)
+    for loop in loops:
+        line = x[np.append(loop, loop[0])]
+        for i in range(0, len(pts), chunk):
+            d = np.abs(distance_to_polyline(pts[i:i + chunk], line))
+            out[i:i + chunk] = np.minimum(out[i:i + chunk], d)
+    return out
+
+
+class ClosedContact:
+    """The boundary points that touch a rigid obstacle or the other body of a two-body pair in
+    the computed solution (drawn at true scale within `tolerance` of it), and their distance
+    to it then. separation(s) is how much farther from it — apart or into it — the drawing at
+    magnification s puts them: an interference fit's surfaces start overlapped by the
+    interference δ and the solution closes it, so at scale s they are drawn (s - 1) δ apart."""
+
+    def __init__(self, X, u, tolerance, obstacles, loops_of, pairs_bodies):
+        self.X, self.u, self.checks = X, u, []
+        x = X + u
+        for b, obstacle in obstacles:
+            if loops_of[b]:
+                idx = np.concatenate(loops_of[b])
+                d = np.abs(obstacle.distance(x[idx], 1.0))
+                self.checks.append((idx[d <= tolerance], d[d <= tolerance], obstacle, None))
+        for a, b in pairs_bodies:
+            for own, other in ((a, b), (b, a)):
+                if loops_of[own] and loops_of[other]:
+                    idx = np.concatenate(loops_of[own])
+                    d = distance_to_loops(x[idx], x, loops_of[other])
+                    self.checks.append((idx[d <= tolerance], d[d <= tolerance], None,
+                                        loops_of[other]))
+
+    def separation(self, s):
+        """The largest growth of a touching point's distance to what it touches, drawn at s."""
+        x = self.X + s * self.u
+        worst = 0.0
+        for idx, d1, obstacle, loops in self.checks:
+            if not len(idx):
+                continue
+            d = (np.abs(obstacle.distance(x[idx], s)) if obstacle is not None
+                 else distance_to_loops(x[idx], x, loops))
+            worst = max(worst, float((d - d1).max()))
+        return worst
+
+
+def view_size(X, xlim, ylim):
+    """The diagonal of what the plot shows: the model's extent, or the ranges --xlim and --ylim
+    give (a zoom on the contact magnifies less and sees a smaller gap)."""
+    lo, hi = X.min(axis=0), X.max(axis=0)
+    for k, lim in enumerate((xlim, ylim)):
+        if lim:
+            lo[k], hi[k] = min(lim), max(lim)
+    return float(np.linalg.norm(hi - lo))
+
+
 def choose_scale(X, u, size, obstacles, loops_of, pairs_bodies):
-    """The automatic magnification and a note saying why (see --scale)."""
+    """The automatic magnification and a note saying why (see --scale): `size` the extent of
+    the view the tolerance is a fraction of."""
     umax = np.abs(u).max()
     wanted = 0.05 * size / umax if umax > 0 else 1.0
     if not obstacles and not pairs_bodies:
         return wanted, "5 % of the size"
+    tolerance = OVERLAP_TOLERANCE * size
+    closed = ClosedContact(X, u, tolerance, obstacles, loops_of, pairs_bodies)
 
     def depth(s):
         return penetration(X + s * u, s, obstacles, loops_of, pairs_bodies)
 
-    allowed = depth(1.0) + OVERLAP_TOLERANCE * size
+    allowed = depth(1.0) + tolerance
+
+    def fits(s):
+        return depth(s) <= allowed and closed.separation(s) <= tolerance
+
     top = max(wanted, 1.0)
-    if depth(top) <= allowed:
+    if fits(top):
         return top, "5 % of the size" if top == wanted else "true scale"
     lo, hi = 1.0, top
     for _ in range(40):
         mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if depth(mid) <= allowed else (lo, mid)
-    return lo, f"the largest without overlap where bodies touch; 5 % of the size: × {wanted:.3g}"
+        lo, hi = (mid, hi) if fits(mid) else (lo, mid)
+    return lo, ("the largest at which touching bodies neither overlap nor part; 5 % of the "
+                f"size: × {wanted:.3g}")
 
 
 def colour_range(values, points, vmin, vmax, unit):
@@ -304,6 +381,9 @@ def main(argv=None):
     ap.add_argument("--ylim", type=float, nargs=2, metavar=("A", "B"), help="y range of the view")
     ap.add_argument("--vmin", type=float, help="bottom of the colour scale (default: see below)")
     ap.add_argument("--vmax", type=float, help="top of the colour scale (default: see below)")
+    ap.add_argument("--units", metavar="LENGTH,FORCE",
+                    help="the units the input's numbers are in, e.g. mm,N: labels then say [mm], "
+                         "[N/mm²] (hpcontact has no units of its own; default: see below)")
     args = ap.parse_args(argv)
     try:
         X, cell_list, point_data, cell_data = read_vtu(args.vtu)
@@ -315,7 +395,10 @@ def main(argv=None):
             sys.exit(f"plot_field: {args.vtu}: no DataArray '{name}'"
                      + (f" (point fields: {', '.join(sorted(point_data))})" if data is point_data else ""))
     summary, pairs, body_names, factor = read_run(args.vtu)
-    units = units_of(summary)
+    try:
+        units = parse_units(args.units) if args.units else units_of(summary)
+    except ValueError as e:
+        ap.error(str(e))
     u = point_data["displacement"][:, :2]
     cells = np.array(cell_list, dtype=int).reshape(-1, 4)
     element = cell_data["element"].astype(int)
@@ -342,7 +425,8 @@ def main(argv=None):
     if args.scale > 0:
         scale, why = args.scale, "--scale"
     else:
-        scale, why = choose_scale(X, u, size, obstacles, loops_of, pairs_bodies)
+        scale, why = choose_scale(X, u, view_size(X, args.xlim, args.ylim), obstacles, loops_of,
+                                  pairs_bodies)
     x = X + scale * u
     tri = mtri.Triangulation(x[:, 0], x[:, 1],
                              np.vstack([cells[:, [0, 1, 2]], cells[:, [0, 2, 3]]]))

@@ -47,7 +47,7 @@ def test_plot_field_keeps_touching_bodies_apart_at_its_automatic_scale(hpcontact
     assert r.returncode == 0, r.stderr
     r = run_script(root, "plot_field.py", out / "solution.vtu", "--out", tmp_path / "vm.png")
     assert r.returncode == 0, r.stderr
-    assert "the largest without overlap where bodies touch" in r.stdout, r.stdout
+    assert "the largest at which touching bodies neither overlap nor part" in r.stdout, r.stdout
 
     pf = load_script("plot_field")
     X, cells, points, cell_data = pf.read_vtu(str(out / "solution.vtu"))
