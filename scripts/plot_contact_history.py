@@ -246,7 +246,7 @@ def main(argv=None):
     pairs = sorted({p for r in runs for p in r.pairs})
 
     grid_rows, grid_cols = panel_grid(len(pairs))
-    fig = plt.figure(figsize=(4.3 * grid_cols, grid_rows * (0.9 + 2.3 * len(kinds)) + 0.8))
+    fig = plt.figure(figsize=(max(7.0, 4.3 * grid_cols), grid_rows * (0.9 + 2.3 * len(kinds)) + 1.0))
     cells = pair_cells(fig, len(pairs), len(kinds))
     try:
         for pair, axes in zip(pairs, cells):
@@ -272,9 +272,9 @@ def main(argv=None):
     heading = "contact over the load path"
     if x.name == "squeeze":
         moved = {find_prescribed(r.problem, x.qualifier or None, r.folder).name for r in runs}
-        heading += f" — squeeze: how far {', '.join(sorted(moved))} has moved"
+        heading += f"\nsqueeze: how far {', '.join(sorted(moved))} has moved"
     if args.per_circumference and any(r.axisymmetric for r in runs):
-        heading += f"; axisymmetric forces per length of the circle r = {args.per_circumference:g}"
+        heading += f"\naxisymmetric forces per length of the circle r = {args.per_circumference:g}"
     fig.suptitle(heading, fontsize=10)
     fig.tight_layout(rect=(0, bottom, 1, 1))
     out = args.out or os.path.join(args.folders[0], "contact-history.png")
