@@ -28,7 +28,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 191 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
+--list prints them. A run of all 197 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp (but for its adjoint and its load-step cuts) and contact/penalty.cpp,
@@ -1109,6 +1109,41 @@ MUTATIONS = [
              "a face traction acts against its direction (the cantilever bends the other way)",
              ["HexFaceLoad.BoxFaceTractionResultantAndMoment", "HexCantilever.EqualElementsConvergeInPWithoutLocking",
               "HexCantilever.GradedElementsAreWithinHalfAPercentFromP4"]),
+    # the plot scripts: several pairs, several runs, the squeeze, the field's magnification
+    Mutation("field-scale-parts-closed-contact", "scripts", "scripts/plot_field.py",
+             "        return depth(s) <= allowed and closed.separation(s) <= tolerance",
+             "        return depth(s) <= allowed",
+             "plot_field's automatic scale bounds only overlap: a press fit's closed interface drawn millimetres apart",
+             ["cli:tests/cli/test_plots.py::test_plot_field_keeps_a_press_fit_closed"]),
+    Mutation("history-pairs-one-polyline", "scripts", "scripts/plot_contact_history.py",
+             '        return [i for i, p in enumerate(self.cols["pair"]) if int(p) == pair]',
+             '        return list(range(len(self.cols["pair"])))',
+             "the history of every pair drawn as one curve in each panel (the zig-zag of rows of all pairs)",
+             ["cli:tests/cli/test_plots.py::test_contact_history_one_panel_per_pair_one_label_per_run",
+              "cli:tests/cli/test_plots.py::test_contact_history_axes_a_user_chooses"]),
+    Mutation("squeeze-is-the-factor", "scripts", "scripts/plot_runs.py",
+             "        return (factor_x * self.d[0] ** 2 + factor_y * self.d[1] ** 2) / norm",
+             "        return factor_y",
+             "the squeeze axis plots the displacement factor, not the distance the plate has moved",
+             ["cli:tests/cli/test_plots.py::test_contact_history_one_panel_per_pair_one_label_per_run",
+              "cli:tests/cli/test_plots.py::test_labels_and_units_of_several_runs"]),
+    Mutation("contact-plot-pairs-one-polyline", "scripts", "scripts/plot_contact.py",
+             '        rows = [i for i, p in enumerate(self.cols["pair"]) if int(p) == pair]',
+             '        rows = list(range(len(self.cols["pair"])))',
+             "plot_contact draws the rows of every pair in each panel (top, bottom and wall rows as one line)",
+             ["cli:tests/cli/test_plots.py::test_contact_plot_one_panel_per_pair_one_label_per_run"]),
+    Mutation("run-label-ignored", "scripts", "scripts/plot_runs.py",
+             "        return list(labels)",
+             "        return [os.path.basename(os.path.normpath(f)) for f in folders]",
+             "--label ignored: runs labelled by folder name whatever the user names them",
+             ["cli:tests/cli/test_plots.py::test_contact_history_one_panel_per_pair_one_label_per_run",
+              "cli:tests/cli/test_plots.py::test_labels_and_units_of_several_runs"]),
+    Mutation("units-swapped", "scripts", "scripts/plot_runs.py",
+             '    return {"length": parts[0], "force": parts[1]}',
+             '    return {"length": parts[1], "force": parts[0]}',
+             "--units mm,N read as length N, force mm (labels say [N], [mm/N])",
+             ["cli:tests/cli/test_plots.py::test_contact_history_one_panel_per_pair_one_label_per_run",
+              "cli:tests/cli/test_plots.py::test_labels_and_units_of_several_runs"]),
 ]
 
 
