@@ -24,9 +24,8 @@ double hoop_stretch(const Eigen::VectorXd& N, const Vec2& X, const Eigen::Vector
 }
 
 FiniteStrainElement axisymmetric_finite_strain_element(const ElementValues& ev,
-                                                       const material::LinearElastic& elastic,
-                                                       material::Law law, const Eigen::VectorXd& u_e,
-                                                       bool tangent) {
+                                                       const material::FiniteStrainLaw& law,
+                                                       const Eigen::VectorXd& u_e, bool tangent) {
   const int n = ev.n_modes(), nq = ev.n_points();
   FiniteStrainElement el;
   std::vector<Eigen::Matrix2d> F(nq);
@@ -53,7 +52,7 @@ FiniteStrainElement axisymmetric_finite_strain_element(const ElementValues& ev,
   if (tangent) CB.resize(4 * nq, 2 * n);
   const OutOfPlane ring(0, true);
   for (int k = 0; k < nq; ++k) {
-    const auto state = material::hoop_hyperelastic_state(elastic, law, F[k], F_hoop(k));
+    const auto state = material::hoop_hyperelastic_state(law, F[k], F_hoop(k));
     const double w = ev.JxW(k) * ring.at(ev.x[k]);
     el.energy += w * state.W;
     const auto Nx = ev.dN_dx.col(k), Ny = ev.dN_dy.col(k);

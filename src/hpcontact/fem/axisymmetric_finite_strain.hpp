@@ -21,8 +21,7 @@ double hoop_stretch(const Eigen::VectorXd& N, const Vec2& X, const Eigen::Vector
 /// R is that of the Gauss points, never 0. Inverted (det F ≤ 0 or F_θθ ≤ 0 at a point): as
 /// finite_strain_element.
 FiniteStrainElement axisymmetric_finite_strain_element(const ElementValues& ev,
-                                                       const material::LinearElastic& elastic,
-                                                       material::Law law, const Eigen::VectorXd& u_e,
-                                                       bool tangent);
+                                                       const material::FiniteStrainLaw& law,
+                                                       const Eigen::VectorXd& u_e, bool tangent);
 
 }  // namespace hpcontact::fem

@@ -44,9 +44,8 @@ void add_geometric_stiffness(const ElementValues& ev, const Eigen::VectorXd& wS1
   K.bottomRightCorner(n, n) += G;
 }
 
-FiniteStrainElement finite_strain_element(const ElementValues& ev, const material::LinearElastic& elastic,
-                                          material::Law law, double thickness,
-                                          const Eigen::VectorXd& u_e, bool tangent) {
+FiniteStrainElement finite_strain_element(const ElementValues& ev, const material::FiniteStrainLaw& law,
+                                          double thickness, const Eigen::VectorXd& u_e, bool tangent) {
   const int n = ev.n_modes(), nq = ev.n_points();
   FiniteStrainElement el;
   std::vector<Eigen::Matrix2d> F(nq);
@@ -65,7 +64,7 @@ FiniteStrainElement finite_strain_element(const ElementValues& ev, const materia
   Eigen::VectorXd wS11(nq), wS22(nq), wS12(nq);
   if (tangent) CB.resize(3 * nq, 2 * n);
   for (int k = 0; k < nq; ++k) {
-    const auto state = material::hyperelastic_state(elastic, law, F[k]);
+    const auto state = material::hyperelastic_state(law, F[k]);
     const double w = ev.JxW(k) * thickness;
     el.energy += w * state.W;
     const auto Nx = ev.dN_dx.col(k), Ny = ev.dN_dy.col(k);

@@ -32,8 +32,7 @@ void add_geometric_stiffness(const ElementValues& ev, const Eigen::VectorXd& wS1
                              const Eigen::VectorXd& wS22, const Eigen::VectorXd& wS12,
                              Eigen::MatrixXd& K);
 
-FiniteStrainElement finite_strain_element(const ElementValues& ev, const material::LinearElastic& elastic,
-                                          material::Law law, double thickness,
-                                          const Eigen::VectorXd& u_e, bool tangent);
+FiniteStrainElement finite_strain_element(const ElementValues& ev, const material::FiniteStrainLaw& law,
+                                          double thickness, const Eigen::VectorXd& u_e, bool tangent);
 
 }  // namespace hpcontact::fem

@@ -125,12 +125,39 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Material law. `linear-elastic`: small strain. `saint-venant-kirchhoff` and "
               "`neo-hooke` (compressible, W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2, plane "
               "strain or axisymmetric, not plane stress): finite strain, total Lagrangian, solved by Newton in load steps; "
-              "stresses reported are Cauchy stresses on the deformed body, strains Green-Lagrange.",
-       .choices = {"linear-elastic", "saint-venant-kirchhoff", "neo-hooke"}},
-      {.path = "bodies[].material.E", .type = T::number, .required = true,
-       .unit = "force/length²", .doc = "Young's modulus.", .lower = greater_than(0)},
-      {.path = "bodies[].material.nu", .type = T::number, .required = true,
-       .doc = "Poisson's ratio.", .lower = greater_than(-1), .upper = less_than(0.5)},
+              "stresses reported are Cauchy stresses on the deformed body, strains Green-Lagrange. "
+              "These three take E and nu. The rubber laws, finite strain in plane strain or "
+              "axisymmetric, W = W_iso(I1bar, I2bar) + K/2 (J - 1)^2 on the invariants of "
+              "J^(-2/3) C, take C10.. and K instead: `neo-hooke-split` (C10, K: "
+              "W_iso = C10 (I1bar - 3)), `mooney-rivlin` (C10, C01, K: + C01 (I2bar - 3)), "
+              "`yeoh` (C10, C20, C30, K: C10 (I1bar - 3) + C20 (I1bar - 3)^2 + C30 (I1bar - 3)^3); "
+              "their small-strain shear modulus is 2 (C10 + C01), bulk modulus K.",
+       .choices = {"linear-elastic", "saint-venant-kirchhoff", "neo-hooke", "neo-hooke-split",
+                   "mooney-rivlin", "yeoh"}},
+      {.path = "bodies[].material.E", .type = T::number,
+       .unit = "force/length²",
+       .doc = "Young's modulus; required by linear-elastic, saint-venant-kirchhoff and "
+              "neo-hooke, not taken by a rubber law.",
+       .lower = greater_than(0)},
+      {.path = "bodies[].material.nu", .type = T::number,
+       .doc = "Poisson's ratio; required with E, not taken by a rubber law.",
+       .lower = greater_than(-1), .upper = less_than(0.5)},
+      {.path = "bodies[].material.C10", .type = T::number, .unit = "force/length²",
+       .doc = "Coefficient of (I1bar - 3) of a rubber law (required by each; half the "
+              "small-strain shear modulus of neo-hooke-split and yeoh).",
+       .lower = greater_than(0)},
+      {.path = "bodies[].material.C01", .type = T::number, .unit = "force/length²",
+       .doc = "Coefficient of (I2bar - 3): mooney-rivlin only (required there).",
+       .lower = at_least(0)},
+      {.path = "bodies[].material.C20", .type = T::number, .unit = "force/length²",
+       .doc = "Coefficient of (I1bar - 3)^2: yeoh only (required there).", .lower = at_least(0)},
+      {.path = "bodies[].material.C30", .type = T::number, .unit = "force/length²",
+       .doc = "Coefficient of (I1bar - 3)^3: yeoh only (required there).", .lower = at_least(0)},
+      {.path = "bodies[].material.K", .type = T::number, .unit = "force/length²",
+       .doc = "Bulk modulus of a rubber law (required by each): U(J) = K/2 (J - 1)^2. Rubber's "
+              "K is ~1000 times its shear modulus 2 (C10 + C01); the displacement elements "
+              "stiffen (lock) as that ratio grows, less so at high p.",
+       .lower = greater_than(0)},
       {.path = "bodies[].material.plane", .type = T::choice, .default_yaml = "strain",
        .doc = "Plane strain, plane stress, or axisymmetric: the body is the meridian section "
               "of a solid of revolution about the axis x = 0 (x the radius r >= 0, y the axial "

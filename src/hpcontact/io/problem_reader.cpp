@@ -201,8 +201,15 @@ class SpecBuilder {
   MaterialSpec material(const YAML::Node& node, const std::string& path) {
     MaterialSpec m;
     m.model = node["model"].Scalar();
-    m.youngs_modulus = number(node["E"]);
-    m.poisson_ratio = number(node["nu"]);
+    require_constants(node, path, m.model);
+    const auto constant = [&](const char* key) { return node[key] ? number(node[key]) : 0.0; };
+    m.youngs_modulus = constant("E");
+    m.poisson_ratio = constant("nu");
+    m.C10 = constant("C10");
+    m.C01 = constant("C01");
+    m.C20 = constant("C20");
+    m.C30 = constant("C30");
+    m.K = constant("K");
     const std::string plane = node["plane"].Scalar();
     m.plane = plane == "stress"         ? PlaneMode::plane_stress
               : plane == "axisymmetric" ? PlaneMode::axisymmetric
@@ -214,6 +221,25 @@ class SpecBuilder {
                    "circle, 2 pi r per unit area of the section");
     m.where = source_.where(node, path);
     return m;
+  }
+
+  /// Each constant the model takes is given, and no other (the schema checks their ranges).
+  void require_constants(const YAML::Node& node, const std::string& path, const std::string& model) {
+    const std::vector<std::string> takes = model == "neo-hooke-split" ? std::vector<std::string>{"C10", "K"}
+                                           : model == "mooney-rivlin" ? std::vector<std::string>{"C10", "C01", "K"}
+                                           : model == "yeoh" ? std::vector<std::string>{"C10", "C20", "C30", "K"}
+                                                             : std::vector<std::string>{"E", "nu"};
+    std::string list;
+    for (const auto& key : takes) list += (list.empty() ? "" : ", ") + key;
+    for (const char* key : {"E", "nu", "C10", "C01", "C20", "C30", "K"}) {
+      const bool taken = std::find(takes.begin(), takes.end(), key) != takes.end();
+      if (taken && !node[key])
+        source_.fail(node, path, std::string("missing required key '") + key + "' (model " + model +
+                                     " takes " + list + ")");
+      if (!taken && node[key])
+        source_.fail(node[key], path + "." + key,
+                     "is not a constant of model " + model + " (it takes " + list + ")");
+    }
   }
 
   /// Nodes and elements in the file's order; element corners must be existing nodes.
@@ -281,6 +307,10 @@ class SpecBuilder {
     for (std::size_t i = 0; i < list.size(); ++i) {
       const std::string item = join_index(path, i);
       MaterialRegionSpec r;
+      if (b.material.model != "linear-elastic" && b.material.model != "saint-venant-kirchhoff" &&
+          b.material.model != "neo-hooke")
+        source_.fail(list[i], item, "a body of a rubber law (" + b.material.model +
+                                        ") has one set of constants: no regions");
       const YAML::Node els = list[i]["elements"];
       for (std::size_t k = 0; k < els.size(); ++k) {
         const int id = integer(els[k]);

@@ -1,4 +1,4 @@
-// St. Venant–Kirchhoff and compressible Neo-Hooke in plane strain.
+// St. Venant–Kirchhoff, compressible Neo-Hooke and the rubber laws in plane strain.
 #include "hpcontact/material/hyperelastic.hpp"
 
 #include <cmath>
@@ -10,8 +10,15 @@ std::string law_name(Law law) {
     case Law::linear: return "linear-elastic";
     case Law::saint_venant_kirchhoff: return "saint-venant-kirchhoff";
     case Law::neo_hooke: return "neo-hooke";
+    case Law::neo_hooke_split: return "neo-hooke-split";
+    case Law::mooney_rivlin: return "mooney-rivlin";
+    case Law::yeoh: return "yeoh";
   }
   return "?";
+}
+
+bool is_rubber(Law law) {
+  return law == Law::neo_hooke_split || law == Law::mooney_rivlin || law == Law::yeoh;
 }
 
 namespace {
@@ -49,6 +56,22 @@ HyperelasticState hyperelastic_state(const LinearElastic& elastic, Law law, cons
   s.S = s.C * e;
   s.S33 = elastic.sigma_zz(s.S);
   s.W = 0.5 * e.dot(s.S);
+  return s;
+}
+
+HyperelasticState hyperelastic_state(const FiniteStrainLaw& law, const Eigen::Matrix2d& F) {
+  if (!is_rubber(law.law)) return hyperelastic_state(law.elastic, law.law, F);
+  Eigen::Matrix3d C = Eigen::Matrix3d::Identity();
+  C.topLeftCorner<2, 2>() = F.transpose() * F;
+  const StressTangent3 r = rubber_stress(law.rubber, C);
+  constexpr int kPlane[3] = {0, 1, 5};  // (11, 22, 12) in the 3-D Voigt order
+  HyperelasticState s;
+  s.J = F.determinant();
+  s.W = r.W;
+  s.S << r.S(0, 0), r.S(1, 1), r.S(0, 1);
+  s.S33 = r.S(2, 2);
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) s.C(a, b) = r.C(kPlane[a], kPlane[b]);
   return s;
 }
 

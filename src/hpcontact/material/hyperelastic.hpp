@@ -1,5 +1,6 @@
 // Hyperelastic laws of the total Lagrangian formulation in plane strain (seed §2.1.1, §5.3-5.4):
-// St. Venant–Kirchhoff and compressible Neo-Hooke, with their consistent material tangents.
+// St. Venant–Kirchhoff, compressible Neo-Hooke and the rubber laws (rubber.hpp), with their
+// consistent material tangents.
 #pragma once
 
 #include <string>
@@ -7,15 +8,29 @@
 #include <Eigen/Dense>
 
 #include "hpcontact/material/linear_elastic.hpp"
+#include "hpcontact/material/rubber.hpp"
 
 namespace hpcontact::material {
 
 /// How stress follows from deformation: linear elasticity (small strain), or a hyperelastic law
 /// of finite strain, evaluated with the Green–Lagrange strain of the whole deformation gradient.
-enum class Law { linear, saint_venant_kirchhoff, neo_hooke };
+/// The first two finite-strain laws take E and ν; the rubber laws (neo_hooke_split,
+/// mooney_rivlin, yeoh) the RubberConstants of rubber.hpp.
+enum class Law { linear, saint_venant_kirchhoff, neo_hooke, neo_hooke_split, mooney_rivlin, yeoh };
 
-/// The input name of a law ("linear-elastic", "saint-venant-kirchhoff", "neo-hooke").
+/// The input name of a law ("linear-elastic", "saint-venant-kirchhoff", "neo-hooke",
+/// "neo-hooke-split", "mooney-rivlin", "yeoh").
 std::string law_name(Law law);
+
+/// Whether the law is one of W_iso(Ī₁, Ī₂) + U(J) with RubberConstants.
+bool is_rubber(Law law);
+
+/// A finite-strain law with its constants.
+struct FiniteStrainLaw {
+  Law law = Law::saint_venant_kirchhoff;
+  LinearElastic elastic;   ///< E, ν of St. Venant–Kirchhoff and Neo-Hooke
+  RubberConstants rubber;  ///< the rubber laws' (is_rubber)
+};
 
 /// The second Piola–Kirchhoff stress of a deformation gradient, its tangent and energy.
 struct HyperelasticState {
@@ -34,6 +49,10 @@ struct HyperelasticState {
 ///    S = μ (I − C⁻¹) + λ ln J C⁻¹, ℂ = λ C⁻¹⊗C⁻¹ + 2(μ − λ ln J) 𝕀(C⁻¹).
 /// Both reduce to linear elasticity for small strains; λ, μ are Lamé's constants of E, ν.
 HyperelasticState hyperelastic_state(const LinearElastic& elastic, Law law, const Eigen::Matrix2d& F);
+
+/// The state of any finite-strain law; a rubber law is rubber_stress with C33 = 1 (plane
+/// strain), restricted to (11, 22, 12) and S33.
+HyperelasticState hyperelastic_state(const FiniteStrainLaw& law, const Eigen::Matrix2d& F);
 
 /// Cauchy stress σ = F S Fᵀ / J in Voigt (xx, yy, xy) and σ_zz = S33 / J (plane strain).
 Voigt cauchy_stress(const HyperelasticState& state, const Eigen::Matrix2d& F, double* sigma_zz);

@@ -1,5 +1,6 @@
-// St. Venant–Kirchhoff and compressible Neo-Hooke in axisymmetry: the 3-D laws on a deformation
-// gradient whose third row and column are the hoop stretch alone (no r–θ or z–θ shear).
+// St. Venant–Kirchhoff, compressible Neo-Hooke and the rubber laws in axisymmetry: the 3-D laws
+// on a deformation gradient whose third row and column are the hoop stretch alone (no r–θ or
+// z–θ shear).
 #include "hpcontact/material/hyperelastic_hoop.hpp"
 
 #include <cmath>
@@ -48,6 +49,23 @@ HoopHyperelasticState hoop_hyperelastic_state(const LinearElastic& elastic, Law 
       lambda, lambda, 0, l2m;
   s.S = s.C * e;
   s.W = 0.5 * e.dot(s.S);
+  return s;
+}
+
+HoopHyperelasticState hoop_hyperelastic_state(const FiniteStrainLaw& law, const Eigen::Matrix2d& F,
+                                              double F_hoop) {
+  if (!is_rubber(law.law)) return hoop_hyperelastic_state(law.elastic, law.law, F, F_hoop);
+  Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+  C.topLeftCorner<2, 2>() = F.transpose() * F;
+  C(2, 2) = F_hoop * F_hoop;
+  const StressTangent3 r = rubber_stress(law.rubber, C);
+  constexpr int kHoop[4] = {0, 1, 5, 2};  // (11, 22, 12, θθ) in the 3-D Voigt order
+  HoopHyperelasticState s;
+  s.J = F.determinant() * F_hoop;
+  s.W = r.W;
+  s.S << r.S(0, 0), r.S(1, 1), r.S(0, 1), r.S(2, 2);
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) s.C(a, b) = r.C(kHoop[a], kHoop[b]);
   return s;
 }
 

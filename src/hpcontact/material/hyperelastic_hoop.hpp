@@ -25,6 +25,11 @@ struct HoopHyperelasticState {
 HoopHyperelasticState hoop_hyperelastic_state(const LinearElastic& elastic, Law law,
                                               const Eigen::Matrix2d& F, double F_hoop);
 
+/// The state of any finite-strain law; a rubber law is rubber_stress with C_θθ = F_hoop²,
+/// restricted to (11, 22, 12, θθ).
+HoopHyperelasticState hoop_hyperelastic_state(const FiniteStrainLaw& law, const Eigen::Matrix2d& F,
+                                              double F_hoop);
+
 /// Cauchy stress σ = F S Fᵀ / J in Voigt (rr, zz, rz) and σ_θθ = F_hoop² S_θθ / J into *hoop.
 Voigt hoop_cauchy_stress(const HoopHyperelasticState& state, const Eigen::Matrix2d& F,
                          double F_hoop, double* hoop);

@@ -31,11 +31,11 @@ PointStress point_stress(const Body& body, int q, const fem::PointValues& pv, co
   ps.strain = {E(0, 0), E(1, 1), 2 * E(0, 1)};
   if (body.axisymmetric()) {
     const double F_hoop = fem::hoop_stretch(pv.N, pv.x, u_e, ps.F(0, 0));
-    const auto state = material::hoop_hyperelastic_state(m, body.law, ps.F, F_hoop);
+    const auto state = material::hoop_hyperelastic_state(body.finite_strain_law(q), ps.F, F_hoop);
     ps.stress = material::hoop_cauchy_stress(state, ps.F, F_hoop, &ps.stress_zz);
     return ps;
   }
-  const auto state = material::hyperelastic_state(m, body.law, ps.F);
+  const auto state = material::hyperelastic_state(body.finite_strain_law(q), ps.F);
   ps.stress = material::cauchy_stress(state, ps.F, &ps.stress_zz);
   return ps;
 }

@@ -50,6 +50,14 @@ geometry::CurvePtr make_curve(const CurveSpec& c, const Vec2& a, const Vec2& b) 
   return curve;
 }
 
+/// The law of an input model name (the schema admits only these).
+material::Law law_of(const MaterialSpec& m) {
+  for (auto law : {material::Law::saint_venant_kirchhoff, material::Law::neo_hooke,
+                   material::Law::neo_hooke_split, material::Law::mooney_rivlin, material::Law::yeoh})
+    if (m.model == material::law_name(law)) return law;
+  return material::Law::linear;
+}
+
 Body make_body(const ProblemSpec& spec, int b) {
   const BodySpec& bs = spec.bodies[b];
   const std::string ctx = body_context(spec, b);
@@ -98,16 +106,23 @@ Body make_body(const ProblemSpec& spec, int b) {
     HPC_REQUIRE(dofs.vertex_mode(v) >= 0, InputError, bs.where.str(), ".nodes: node ",
                 mesh.node_id(v), " is a corner of no element (remove it or use it in an element)");
 
+  const material::Law law = law_of(bs.material);
+  const auto plane = bs.material.plane == PlaneMode::plane_stress  ? material::Plane::stress
+                     : bs.material.plane == PlaneMode::axisymmetric ? material::Plane::axisymmetric
+                                                                    : material::Plane::strain;
+  material::RubberConstants rubber;
   material::LinearElastic mat;
   mat.youngs_modulus = bs.material.youngs_modulus;
   mat.poisson_ratio = bs.material.poisson_ratio;
-  mat.plane = bs.material.plane == PlaneMode::plane_stress  ? material::Plane::stress
-              : bs.material.plane == PlaneMode::axisymmetric ? material::Plane::axisymmetric
-                                                             : material::Plane::strain;
+  mat.plane = plane;
+  if (material::is_rubber(law)) {
+    rubber = {bs.material.C10, bs.material.C01, bs.material.C20, bs.material.C30, bs.material.K};
+    mat = rubber.small_strain(plane);
+  }
   mat.validate(bs.material.where.str());
 
   Body body{bs.name, std::move(mesh), std::move(dofs), {}, {}, mat, bs.material.thickness, 0, {},
-            material::Law::linear, {}, {}, {}};
+            law, rubber, {}, {}, {}};
   if (!bs.regions.empty()) body.element_region.assign(body.mesh.n_quads(), -1);
   for (const auto& region : bs.regions) {
     material::LinearElastic rm = mat;
@@ -118,11 +133,11 @@ Body make_body(const ProblemSpec& spec, int b) {
       body.element_region[body.mesh.quad_index(id)] = static_cast<int>(body.region_materials.size());
     body.region_materials.push_back(rm);
   }
-  if (bs.material.model == "saint-venant-kirchhoff") body.law = material::Law::saint_venant_kirchhoff;
-  if (bs.material.model == "neo-hooke") body.law = material::Law::neo_hooke;
-  HPC_REQUIRE(body.law != material::Law::neo_hooke || mat.plane != material::Plane::stress, InputError,
-              bs.material.where.str(), ".plane: neo-hooke is implemented in plane strain and "
-              "axisymmetry only (use plane: strain, or saint-venant-kirchhoff in plane stress)");
+  HPC_REQUIRE(law == material::Law::linear || law == material::Law::saint_venant_kirchhoff ||
+                  mat.plane != material::Plane::stress,
+              InputError, bs.material.where.str(), ".plane: ", bs.material.model,
+              " is implemented in plane strain and axisymmetry only (use plane: strain, or "
+              "saint-venant-kirchhoff in plane stress)");
   if (body.axisymmetric()) {
     for (int v = 0; v < body.mesh.n_nodes(); ++v)
       HPC_REQUIRE(body.mesh.node(v).x() >= 0, InputError, bs.where.str(), ".nodes: node ",

@@ -27,8 +27,11 @@ struct Body {
   double thickness = 1.0;
   int dof_offset = 0;
   std::map<std::string, std::vector<int>> edge_sets;  ///< name -> mesh edges
-  /// Linear elasticity, or a hyperelastic law of finite strain (total Lagrangian).
+  /// Linear elasticity, or a hyperelastic law of finite strain (total Lagrangian). A rubber law
+  /// takes its constants from `rubber`; `material` is then its small-strain equivalent.
   material::Law law = material::Law::linear;
+  /// The rubber law's constants (a body of a rubber law has no regions).
+  material::RubberConstants rubber;
   bool finite_strain() const { return law != material::Law::linear; }
   /// The meridian section of a solid of revolution about x = 0 (integrals over 2π r dA).
   bool axisymmetric() const { return material.plane == material::Plane::axisymmetric; }
@@ -44,6 +47,8 @@ struct Body {
     const int r = element_region.empty() ? -1 : element_region[q];
     return r < 0 ? material : region_materials[r];
   }
+  /// The finite-strain law of element q with its constants.
+  material::FiniteStrainLaw finite_strain_law(int q) const { return {law, material_of(q), rubber}; }
 
   /// Global dof of local dof `local` (component-blocked) of element q.
   int global_dof(int q, int local) const {

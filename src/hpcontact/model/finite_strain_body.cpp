@@ -8,8 +8,8 @@ namespace hpcontact::model {
 fem::FiniteStrainElement finite_strain_element(const Body& body, int q, const fem::ElementValues& ev,
                                                const Eigen::VectorXd& u_e, bool tangent) {
   if (body.axisymmetric())
-    return fem::axisymmetric_finite_strain_element(ev, body.material_of(q), body.law, u_e, tangent);
-  return fem::finite_strain_element(ev, body.material_of(q), body.law, body.thickness, u_e, tangent);
+    return fem::axisymmetric_finite_strain_element(ev, body.finite_strain_law(q), u_e, tangent);
+  return fem::finite_strain_element(ev, body.finite_strain_law(q), body.thickness, u_e, tangent);
 }
 
 }  // namespace hpcontact::model

@@ -34,8 +34,11 @@ enum class PlaneMode { plane_strain, plane_stress, axisymmetric };
 
 struct MaterialSpec {
   std::string model = "linear-elastic";
-  double youngs_modulus = 0;  ///< E [force/length²]
-  double poisson_ratio = 0;   ///< ν
+  double youngs_modulus = 0;  ///< E [force/length²] (not of a rubber law)
+  double poisson_ratio = 0;   ///< ν (not of a rubber law)
+  /// A rubber law's constants (material/rubber.hpp) [force/length²]; those the law does not
+  /// take stay 0.
+  double C10 = 0, C01 = 0, C20 = 0, C30 = 0, K = 0;
   PlaneMode plane = PlaneMode::plane_strain;
   double thickness = 1.0;  ///< out-of-plane thickness [length]
   SourceRef where;

@@ -61,22 +61,38 @@ Eigen::VectorXd displacement(const Setup& s, double scale) {
   return u;
 }
 
-const material::Law kLaws[] = {material::Law::saint_venant_kirchhoff, material::Law::neo_hooke};
+/// The finite-strain laws at the small-strain constants of elastic(nu) (E = 1000): the two of E, ν
+/// and the rubber laws of the same μ and K, their higher constants large enough to matter.
+std::vector<material::FiniteStrainLaw> laws(double nu) {
+  const auto m = elastic(nu);
+  const double mu = m.mu(), K = m.lambda() + 2 * mu / 3;
+  material::RubberConstants neo{.C10 = mu / 2, .K = K}, mr = neo, yeoh = neo;
+  mr.C10 = 0.35 * mu;
+  mr.C01 = 0.15 * mu;
+  yeoh.C20 = 0.2 * mu;
+  yeoh.C30 = 0.05 * mu;
+  return {{material::Law::saint_venant_kirchhoff, m},
+          {material::Law::neo_hooke, m},
+          {material::Law::neo_hooke_split, m, neo},
+          {material::Law::mooney_rivlin, m, mr},
+          {material::Law::yeoh, m, yeoh}};
+}
 
 }  // namespace
 
 // K against central differences of f_int (h = 1e-7), < 1e-6 of max |K|; f_int against
-// differences of the energy, < 1e-6 of max |f|; K symmetric. p = 2 and 4, both laws, on the
-// element touching the axis (its u_r held there) and on the curved sector 1 <= R <= 2.
+// differences of the energy, < 1e-6 of max |f|; K symmetric. p = 2 and 4, every finite-strain law
+// (the rubber laws of laws() among them), on the element touching the axis (its u_r held there)
+// and on the curved sector 1 <= R <= 2.
 TEST(AxisymmetricFiniteStrainElement, TangentAndForceAgreeWithFiniteDifferences) {
   for (bool touches_axis : {true, false})
     for (int p : {2, 4})
-      for (auto law : kLaws) {
+      for (const auto& law : laws(0.3)) {
         const auto s = setup(touches_axis ? axis_quad() : fem_test::sector_quad(), p);
         EXPECT_EQ(s.on_axis.empty(), !touches_axis);
         const int n = 2 * s.ev.n_modes();
         const Eigen::VectorXd u = displacement(s, 0.05);
-        const auto el = fem::axisymmetric_finite_strain_element(s.ev, elastic(0.3), law, u, true);
+        const auto el = fem::axisymmetric_finite_strain_element(s.ev, law, u, true);
         ASSERT_FALSE(el.inverted()) << "det F " << el.min_J;
         ASSERT_LT(el.min_J, 0.95);  // a large deformation, not a small one
         const double h = 1e-7;
@@ -86,14 +102,14 @@ TEST(AxisymmetricFiniteStrainElement, TangentAndForceAgreeWithFiniteDifferences)
           Eigen::VectorXd up = u, um = u;
           up(b) += h;
           um(b) -= h;
-          const auto ep = fem::axisymmetric_finite_strain_element(s.ev, elastic(0.3), law, up, false);
-          const auto em = fem::axisymmetric_finite_strain_element(s.ev, elastic(0.3), law, um, false);
+          const auto ep = fem::axisymmetric_finite_strain_element(s.ev, law, up, false);
+          const auto em = fem::axisymmetric_finite_strain_element(s.ev, law, um, false);
           K_fd.col(b) = (ep.f_int - em.f_int) / (2 * h);
           f_fd(b) = (ep.energy - em.energy) / (2 * h);
         }
         const double scale = el.K.cwiseAbs().maxCoeff();
         const std::string what = std::string(touches_axis ? "axis" : "sector") + " " +
-                                 material::law_name(law) + " p " + std::to_string(p);
+                                 material::law_name(law.law) + " p " + std::to_string(p);
         EXPECT_LT((K_fd - el.K).cwiseAbs().maxCoeff(), 1e-6 * scale) << what;
         EXPECT_LT((el.K - el.K.transpose()).cwiseAbs().maxCoeff(), 1e-12 * scale) << what;
         EXPECT_LT((f_fd - el.f_int).cwiseAbs().maxCoeff(), 1e-6 * el.f_int.cwiseAbs().maxCoeff())
@@ -101,14 +117,14 @@ TEST(AxisymmetricFiniteStrainElement, TangentAndForceAgreeWithFiniteDifferences)
       }
 }
 
-// At u = 0 the tangent is the linear axisymmetric stiffness (hoop row included) and the force
-// and energy vanish.
+// At u = 0 the tangent is the linear axisymmetric stiffness (hoop row included; the rubber laws
+// of the same μ and K too) and the force and energy vanish.
 TEST(AxisymmetricFiniteStrainElement, TangentAtRestIsLinearStiffness) {
   for (bool touches_axis : {true, false})
-    for (auto law : kLaws) {
+    for (const auto& law : laws(0.3)) {
       const auto s = setup(touches_axis ? axis_quad() : fem_test::sector_quad(), 3);
       const int n = 2 * s.ev.n_modes();
-      const auto el = fem::axisymmetric_finite_strain_element(s.ev, elastic(0.3), law,
+      const auto el = fem::axisymmetric_finite_strain_element(s.ev, law,
                                                               Eigen::VectorXd::Zero(n), true);
       const Eigen::MatrixXd K = fem::axisymmetric_stiffness(s.ev, elastic(0.3));
       EXPECT_LT((el.K - K).cwiseAbs().maxCoeff(), 1e-12 * K.cwiseAbs().maxCoeff());
@@ -126,8 +142,8 @@ TEST(AxisymmetricFiniteStrainElement, HoopFoldIsDetected) {
   for (int k = 0; k < s.ev.n_points(); ++k) target(k) = -1.5 * s.ev.x[k].x();
   Eigen::VectorXd u = Eigen::VectorXd::Zero(2 * nm);
   u.head(nm) = s.ev.N.transpose().colPivHouseholderQr().solve(target);
-  const auto el = fem::axisymmetric_finite_strain_element(s.ev, elastic(0.3),
-                                                          material::Law::neo_hooke, u, true);
+  const auto el = fem::axisymmetric_finite_strain_element(
+      s.ev, {material::Law::neo_hooke, elastic(0.3)}, u, true);
   EXPECT_TRUE(el.inverted());
   EXPECT_NEAR(el.min_J, -0.5, 0.05);
   EXPECT_EQ(el.f_int.size(), 0);

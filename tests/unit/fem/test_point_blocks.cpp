@@ -81,7 +81,7 @@ TEST(PointBlocks, HighDegreeStiffnessIsTheSumOverEveryPoint) {
   const Eigen::MatrixXd K_all = B.transpose() * WDB;
   const Eigen::MatrixXd K = fem::stiffness(e.ev, D, 1.0);
   EXPECT_LT((K - K_all).norm(), 1e-12 * K_all.norm());
-  const auto at_rest = fem::finite_strain_element(e.ev, steel(), material::Law::neo_hooke, 1.0,
+  const auto at_rest = fem::finite_strain_element(e.ev, {material::Law::neo_hooke, steel()}, 1.0,
                                                   Eigen::VectorXd::Zero(2 * n), true);
   EXPECT_LT((at_rest.K - K_all).norm(), 1e-12 * K_all.norm());
 }

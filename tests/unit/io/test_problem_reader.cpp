@@ -9,6 +9,7 @@
 #include "edit_text.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/io/problem_reader.hpp"
+#include "hpcontact/model/discretization.hpp"
 
 #ifndef HPC_SOURCE_DIR
 #define HPC_SOURCE_DIR "/work/main"
@@ -288,6 +289,53 @@ TEST(ProblemReader, RejectsIncompressiblePoissonRatio) {
   EXPECT_EQ(input_error(with(square, "nu: 0.25", "nu: 0.5"), {}),
             "case.yaml:4:29: bodies[0].material.nu: must be < 0.5 (got 0.5)");
   input_error(with(square, "nu: 0.25", "nu: -1"), {"bodies[0].material.nu: must be > -1 (got -1)"});
+}
+
+// A rubber law shall take exactly its own constants (C10, C01, C20, C30, K), each named when
+// missing, misplaced or out of range (C's >= 0, C10 and K > 0), and E, nu no longer; its body
+// shall be plane strain or axisymmetric and have no regions.
+TEST(ProblemReader, ReadsRubberLawsAndRefusesConstantsTheyDoNotTake) {
+  const auto mr = with(square, "{E: 1000, nu: 0.25}", "{model: mooney-rivlin, C10: 0.4, C01: 0.1, K: 50}");
+  const auto spec = hio::parse_problem(mr, label, {});
+  const auto& m = spec.bodies[0].material;
+  EXPECT_EQ(m.model, "mooney-rivlin");
+  EXPECT_EQ(m.C10, 0.4);
+  EXPECT_EQ(m.C01, 0.1);
+  EXPECT_EQ(m.K, 50);
+  EXPECT_EQ(m.C20, 0.0);
+  const auto d = hm::discretize(spec);
+  EXPECT_NEAR(d.bodies[0].material.mu(), 1.0, 1e-14);  // 2 (C10 + C01)
+  EXPECT_EQ(d.bodies[0].rubber.C01, 0.1);
+  const auto yeoh = with(square, "{E: 1000, nu: 0.25}", "{model: yeoh, C10: 0.4, C20: 0.01, C30: 0.002, K: 50}");
+  EXPECT_EQ(hio::parse_problem(yeoh, label, {}).bodies[0].material.C30, 0.002);
+
+  input_error(with(mr, "C01: 0.1, ", ""),
+              {"case.yaml:4:", "bodies[0].material: missing required key 'C01' (model mooney-rivlin "
+                               "takes C10, C01, K)"});
+  input_error(with(mr, "K: 50", "K: 50, C20: 1"),
+              {"case.yaml:4:", "bodies[0].material.C20: is not a constant of model mooney-rivlin"});
+  input_error(with(yeoh, "K: 50", "K: 50, E: 3"),
+              {"bodies[0].material.E: is not a constant of model yeoh (it takes C10, C20, C30, K)"});
+  input_error(with(yeoh, "C30: 0.002, ", ""), {"bodies[0].material: missing required key 'C30'"});
+  input_error(with(square, "nu: 0.25", "nu: 0.25, K: 3"),
+              {"bodies[0].material.K: is not a constant of model linear-elastic (it takes E, nu)"});
+  input_error(with(mr, "C01: 0.1", "C01: -0.1"), {"bodies[0].material.C01: must be >= 0 (got -0.1)"});
+  input_error(with(yeoh, "C20: 0.01", "C20: -0.01"), {"bodies[0].material.C20: must be >= 0 (got -0.01)"});
+  input_error(with(mr, "C10: 0.4", "C10: 0"), {"bodies[0].material.C10: must be > 0 (got 0)"});
+  input_error(with(mr, "K: 50", "K: 0"), {"bodies[0].material.K: must be > 0 (got 0)"});
+  input_error(with(mr, "K: 50", "K: -5"), {"bodies[0].material.K: must be > 0 (got -5)"});
+  input_error(mr + "    regions:\n      - {elements: [1], material: {E: 1, nu: 0.3}}\n",
+              {"bodies[0].regions[0]: a body of a rubber law (mooney-rivlin) has one set of "
+               "constants: no regions"});
+  try {
+    hm::discretize(hio::parse_problem(with(mr, "K: 50", "K: 50, plane: stress"), label, {}));
+    ADD_FAILURE() << "a rubber law in plane stress accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "bodies[0].material.plane: mooney-rivlin is implemented in plane strain and axisymmetry only"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 // An element shall reference existing nodes only, four distinct ones.
