@@ -28,7 +28,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 191 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
+--list prints them. A run of all 198 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp (but for its adjoint and its load-step cuts) and contact/penalty.cpp,
@@ -1109,6 +1109,38 @@ MUTATIONS = [
              "a face traction acts against its direction (the cantilever bends the other way)",
              ["HexFaceLoad.BoxFaceTractionResultantAndMoment", "HexCantilever.EqualElementsConvergeInPWithoutLocking",
               "HexCantilever.GradedElementsAreWithinHalfAPercentFromP4"]),
+    # model: reactions
+    Mutation("reaction-all-modes", "model", S + "model/reactions.cpp",
+             "  Eigen::VectorXd w = Eigen::VectorXd::Zero(body.dofs.n_modes());",
+             "  Eigen::VectorXd w = Eigen::VectorXd::Ones(body.dofs.n_modes());",
+             "a resultant sums every mode of a force vector, not the vertex modes alone",
+             ["Reactions.ResultantAndMomentOfALoadOnACurvedEdge",
+              "cli:tests/cli/test_reactions.py::test_bar_reaction_is_E_A_u_over_L"]),
+    Mutation("reaction-lagrange-vertices", "model", S + "model/reactions.cpp",
+             "  if (body.dofs.lagrange()) return Eigen::VectorXd::Ones(body.dofs.n_modes());",
+             "  if (false) return Eigen::VectorXd::Ones(body.dofs.n_modes());",
+             "an h-version resultant sums the corner nodes alone (a Q8 edge's mid node carries 2/3)",
+             ["Reactions.ResultantAndMomentOfALoadOnACurvedEdge"]),
+    Mutation("reaction-without-load", "model", S + "model/reactions.cpp",
+             "  Eigen::VectorXd R = -loads_factor * d.load - f_c;",
+             "  Eigen::VectorXd R = -f_c;",
+             "a reaction leaves out the external load at the prescribed dofs (a body force's share)",
+             ["cli:tests/cli/test_reactions.py::test_bar_under_its_weight"]),
+    Mutation("reaction-moment-wrong-point", "model", S + "model/reactions.cpp",
+             "    fm.moment += x.x() * f(2 * m + 1) - x.y() * f(2 * m);",
+             "    fm.moment += (x.x() - 1.0) * f(2 * m + 1) - x.y() * f(2 * m);",
+             "the moment is taken about (1, 0), not the origin",
+             ["cli:tests/cli/test_reactions.py::test_moment_of_a_bent_block"]),
+    Mutation("reaction-curved-edge-straight", "model", S + "model/reactions.cpp",
+             "      X[body.dofs.edge_mode(e, static_cast<int>(i) + 2)] = Vec2(x[i], y[i]);",
+             "      X[body.dofs.edge_mode(e, static_cast<int>(i) + 2)] = Vec2::Zero();",
+             "a curved edge's position taken as the chord between its vertices (its edge modes left out)",
+             ["Reactions.ResultantAndMomentOfALoadOnACurvedEdge"]),
+    Mutation("shared-dof-last-entry", "model", S + "model/discretization.cpp",
+             "    if (taken[dof - body.dof_offset]) return;",
+             "    if (false && taken[dof - body.dof_offset]) return;",
+             "a dof two constraint entries prescribe counts in both reactions",
+             ["cli:tests/cli/test_reactions.py::test_a_dof_two_entries_hold_belongs_to_the_first"]),
 ]
 
 
