@@ -83,6 +83,24 @@ def test_forces_on_every_body_balance(hpcontact, root, tmp_path, case):
         assert float(rows[-1][name + "_y"]) == pytest.approx(sup["force"][1], rel=1e-10, abs=1e-9)
 
 
+def test_balance_of_an_rp_loop_and_of_penalty_friction(hpcontact, root, tmp_path):
+    """The reactions of an rp loop's final mesh (Hertz rp5) and of penalty Coulomb friction
+    between two bodies at every step (two bars: the friction histories as each step converged)
+    balance too (measured 4e-15 and 7e-11: the penalty's Newton tolerance); the rp loop's
+    path.csv has no reaction columns (its steps are not recorded)."""
+    s = run(hpcontact, os.path.join(root, "examples/hertz/rp5.yaml"), tmp_path / "rp")
+    assert s["equilibrium_residual"] < BALANCE
+    assert s["reactions"]["supports"][1]["force"][1] == pytest.approx(-35000, rel=1e-8)
+    with open(tmp_path / "rp" / "path.csv") as f:
+        assert "equilibrium_residual" not in f.readline()
+    s = run(hpcontact, os.path.join(root, "examples/two-bars/coulomb.yaml"), tmp_path / "penalty",
+            "contact[0].enforcement=penalty")
+    assert s["contact"]["enforcement"] == "penalty"
+    with open(tmp_path / "penalty" / "path.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 5 and all(float(r["equilibrium_residual"]) < BALANCE for r in rows)
+
+
 @pytest.mark.parametrize("plane,factor", [("stress", 1.0), ("strain", 1 / (1 - 0.3**2))])
 def test_bar_reaction_is_E_A_u_over_L(hpcontact, tmp_path, plane, factor):
     """A bar stretched by u: each end's reaction is E' A u / L (E' = E in plane stress, E / (1 −
@@ -206,3 +224,29 @@ def test_axisymmetric_faces_of_a_shrink_fit(hpcontact, root, tmp_path):
     assert support(s, "shaft", 2)["force"][1] == pytest.approx(-shaft_top["force"][1], rel=1e-10)
     assert shaft_top["moment"] is None
     assert s["equilibrium_residual"] < BALANCE
+
+
+def test_finite_strain_moments_about_the_deformed_position(hpcontact, tmp_path):
+    """A neo-Hooke block (plane strain) held at x = 0 whose end x = 4 is moved by (0.8, 0.4): the
+    two supports' forces are opposite and their moments, taken where the forces act (the deformed
+    end), cancel; about the undeformed end they would miss u × F."""
+    text = """case: sheared-block
+bodies:
+  - name: block
+    material: {model: neo-hooke, E: 1000, nu: 0.3, plane: strain}
+    nodes: {1: [0, 0], 2: [2, 0], 3: [4, 0], 4: [0, 1], 5: [2, 1], 6: [4, 1]}
+    elements: {1: [1, 2, 5, 4], 2: [2, 3, 6, 5]}
+    edge_sets: {left: [[4, 1]], right: [[3, 6]]}
+    constraints:
+      - {edges: [left], ux: 0, uy: 0}
+      - {edges: [right], ux: 0.8, uy: 0.4}
+discretization: {method: p, degree: 4}
+solver: {load_steps: 4}
+"""
+    s = run_text(hpcontact, tmp_path, text)
+    left, right = support(s, "block", 0), support(s, "block", 1)
+    F = right["force"]
+    scale = abs(left["moment"]) + abs(right["moment"])
+    assert left["force"] == pytest.approx([-F[0], -F[1]], rel=1e-9)
+    assert abs(left["moment"] + right["moment"]) < 1e-9 * scale
+    assert abs(0.8 * F[1] - 0.4 * F[0]) > 1e-2 * scale  # u × F: what the undeformed end misses
