@@ -101,6 +101,21 @@ def test_balance_of_an_rp_loop_and_of_penalty_friction(hpcontact, root, tmp_path
     assert len(rows) == 5 and all(float(r["equilibrium_residual"]) < BALANCE for r in rows)
 
 
+def test_a_loose_solve_is_warned(hpcontact, root, tmp_path):
+    """The neo-Hooke O-ring solved to a loose tolerance (1e-3) leaves its forces out of balance by
+    1e-5 of the largest: above the limit 1e-6, so summary.json and the run's messages warn,
+    naming the body and the tolerance (the examples above balance to 1e-14 and are not warned)."""
+    case = os.path.join(root, "examples/o-ring/o-ring-plane-strain.yaml")
+    r = hpcontact("run", case, "--out", tmp_path / "loose", "-q", "--set", "solver.tolerance=1e-3")
+    assert r.returncode == 0, r.stderr
+    with open(tmp_path / "loose" / "summary.json") as f:
+        s = json.load(f)
+    assert s["equilibrium_residual"] > s["reactions"]["equilibrium_limit"] == 1e-6
+    warning = [w for w in s.get("warnings", []) if "do not balance" in w]
+    assert len(warning) == 1 and "body 'ring'" in warning[0] and "solver.tolerance" in warning[0]
+    assert "do not balance" in r.stderr
+
+
 @pytest.mark.parametrize("plane,factor", [("stress", 1.0), ("strain", 1 / (1 - 0.3**2))])
 def test_bar_reaction_is_E_A_u_over_L(hpcontact, tmp_path, plane, factor):
     """A bar stretched by u: each end's reaction is E' A u / L (E' = E in plane stress, E / (1 −

@@ -70,9 +70,9 @@ std::optional<std::string> equilibrium_warning(const model::ProblemSpec& spec, c
      << "' do not balance: reactions (" << bb.reactions.x() << ", " << bb.reactions.y()
      << ") + loads (" << bb.loads.x() << ", " << bb.loads.y() << ") + contact ("
      << bb.contact.x() << ", " << bb.contact.y() << ") leave " << bb.relative
-     << " of the largest force (limit " << kEquilibriumLimit
-     << "): the solve's residual is larger than its tolerance says, or a force is not where the "
-        "reactions assume it";
+     << " of the largest force (limit " << kEquilibriumLimit << "): the solve's residual is "
+        "that large (solver.tolerance " << spec.solver.tolerance << " is relative to the "
+        "residual's norm; make it smaller), or a force acts where the reactions do not see it";
   return os.str();
 }
 
