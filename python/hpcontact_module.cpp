@@ -240,6 +240,61 @@ py::dict contact_table(const Result& res) {
   return out;
 }
 
+/// The reactions of the result's last converged step (reactions) and of every step
+/// (reaction_history), as numpy arrays; the rows' meaning is summary.json's `reactions`.
+py::dict reactions_of(const Result& res, bool history) {
+  const auto& steps = res.run->reaction_history;
+  py::dict out;
+  const auto& bodies = res.run->discretization.bodies;
+  if (steps.empty()) return out;
+  const auto& last = steps.back();
+  const auto n_s = static_cast<py::ssize_t>(last.supports.size());
+  const auto n_p = static_cast<py::ssize_t>(last.pairs.size());
+  const auto n_t = static_cast<py::ssize_t>(history ? steps.size() : 1);
+  py::list body, constraint;
+  for (const auto& s : last.supports) {
+    body.append(bodies[s.body].name);
+    constraint.append(s.constraint);
+  }
+  py::array_t<double> force({n_t, n_s, py::ssize_t(2)}), moment({n_t, n_s}),
+      pair_force({n_t, n_p, py::ssize_t(2)}), pair_moment({n_t, n_p}), residual(n_t);
+  auto f = force.mutable_unchecked<3>();
+  auto m = moment.mutable_unchecked<2>();
+  auto pf = pair_force.mutable_unchecked<3>();
+  auto pm = pair_moment.mutable_unchecked<2>();
+  auto e = residual.mutable_unchecked<1>();
+  for (py::ssize_t t = 0; t < n_t; ++t) {
+    const auto& r = history ? steps[t] : last;
+    for (py::ssize_t i = 0; i < n_s; ++i) {
+      f(t, i, 0) = r.supports[i].reaction.force.x();
+      f(t, i, 1) = r.supports[i].reaction.force.y();
+      m(t, i) = r.supports[i].reaction.moment;
+    }
+    for (py::ssize_t k = 0; k < n_p; ++k) {
+      pf(t, k, 0) = r.pairs[k].force.x();
+      pf(t, k, 1) = r.pairs[k].force.y();
+      pm(t, k) = r.pairs[k].moment;
+    }
+    e(t) = r.equilibrium_residual;
+  }
+  out["body"] = body;
+  out["constraint"] = constraint;
+  if (history) {
+    out["force"] = force;
+    out["moment"] = moment;
+    out["pair_force"] = pair_force;
+    out["pair_moment"] = pair_moment;
+    out["equilibrium_residual"] = residual;
+  } else {
+    out["force"] = force[py::int_(0)];
+    out["moment"] = moment[py::int_(0)];
+    out["pair_force"] = pair_force[py::int_(0)];
+    out["pair_moment"] = pair_moment[py::int_(0)];
+    out["equilibrium_residual"] = e(0);
+  }
+  return out;
+}
+
 py::object pressure_curve(const Result& res) {
   const auto& c = res.run->pressure_curve;
   if (!c) return py::none();
@@ -402,6 +457,18 @@ body="name" searches that body only. Raises ValueError naming the first point ou
 Cauchy stresses under finite strain; szz is the out-of-plane stress (nu (sxx + syy) in linear
 plane strain, 0 in plane stress).
 points and body as for displacement(); returns shape (n, 4) (or (4,)).)")
+      .def_property_readonly(
+          "reactions", [](const Result& r) { return reactions_of(r, false); },
+          R"(The reactions of the last converged step (summary.json's `reactions`), as numpy arrays:
+body and constraint (lists: support i is bodies[body[i]].constraints[constraint[i]]), force
+(n_supports, 2) what each constraint entry exerts on its body, moment (n_supports,) about the
+origin (nan for an axisymmetric body), pair_force (n_pairs, 2) and pair_moment the contact force
+on each pair's body, equilibrium_residual the largest relative imbalance of a body's forces.)")
+      .def_property_readonly(
+          "reaction_history", [](const Result& r) { return reactions_of(r, true); },
+          R"(The same at every converged load step (the rows of path.csv; one for a linear solve,
+the final mesh's last step for rp and hp): force (n_steps, n_supports, 2), moment (n_steps,
+n_supports), pair_force (n_steps, n_pairs, 2), pair_moment, equilibrium_residual (n_steps,).)")
       .def("contact", &contact_table,
            R"(The interface curve: contact.csv's columns as numpy arrays, one entry per contact
 Gauss point of every pair (the "pair" column says which): pair, X, Y (undeformed), x, y

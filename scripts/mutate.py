@@ -28,7 +28,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 206 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
+--list prints them. A run of all 214 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp (but for its adjoint and its load-step cuts) and contact/penalty.cpp,
@@ -1187,6 +1187,48 @@ MUTATIONS = [
              "--units mm,N read as length N, force mm (labels say [N], [mm/N])",
              ["cli:tests/cli/test_plots.py::test_contact_history_one_panel_per_pair_one_label_per_run",
               "cli:tests/cli/test_plots.py::test_labels_and_units_of_several_runs"]),
+    # model: reactions
+    Mutation("reaction-all-modes", "model", S + "model/reactions.cpp",
+             "  Eigen::VectorXd w = Eigen::VectorXd::Zero(body.dofs.n_modes());",
+             "  Eigen::VectorXd w = Eigen::VectorXd::Ones(body.dofs.n_modes());",
+             "a resultant sums every mode of a force vector, not the vertex modes alone",
+             ["Reactions.ResultantAndMomentOfALoadOnACurvedEdge",
+              "cli:tests/cli/test_reactions.py::test_bar_reaction_is_E_A_u_over_L"]),
+    Mutation("reaction-lagrange-vertices", "model", S + "model/reactions.cpp",
+             "  if (body.dofs.lagrange()) return Eigen::VectorXd::Ones(body.dofs.n_modes());",
+             "  if (false) return Eigen::VectorXd::Ones(body.dofs.n_modes());",
+             "an h-version resultant sums the corner nodes alone (a Q8 edge's mid node carries 2/3)",
+             ["Reactions.ResultantAndMomentOfALoadOnACurvedEdge"]),
+    Mutation("reaction-without-load", "model", S + "model/reactions.cpp",
+             "  Eigen::VectorXd R = -loads_factor * d.load - f_c;",
+             "  Eigen::VectorXd R = -f_c;",
+             "a reaction leaves out the external load at the prescribed dofs (a body force's share)",
+             ["cli:tests/cli/test_reactions.py::test_bar_under_its_weight"]),
+    Mutation("reaction-moment-wrong-point", "model", S + "model/reactions.cpp",
+             "    fm.moment += x.x() * f(2 * m + 1) - x.y() * f(2 * m);",
+             "    fm.moment += (x.x() - 1.0) * f(2 * m + 1) - x.y() * f(2 * m);",
+             "the moment is taken about (1, 0), not the origin",
+             ["cli:tests/cli/test_reactions.py::test_moment_of_a_bent_block"]),
+    Mutation("reaction-moment-undeformed", "model", S + "model/reactions.cpp",
+             "    if (body.finite_strain()) x += Vec2(u_body(2 * m), u_body(2 * m + 1));",
+             "    if (false) x += Vec2(u_body(2 * m), u_body(2 * m + 1));",
+             "a finite-strain moment taken about the undeformed position, not where the force acts",
+             ["cli:tests/cli/test_reactions.py::test_finite_strain_moments_about_the_deformed_position"]),
+    Mutation("reaction-curved-edge-straight", "model", S + "model/reactions.cpp",
+             "      X[body.dofs.edge_mode(e, static_cast<int>(i) + 2)] = Vec2(x[i], y[i]);",
+             "      X[body.dofs.edge_mode(e, static_cast<int>(i) + 2)] = Vec2::Zero();",
+             "a curved edge's position taken as the chord between its vertices (its edge modes left out)",
+             ["Reactions.ResultantAndMomentOfALoadOnACurvedEdge"]),
+    Mutation("equilibrium-never-warned", "driver", S + "driver/reaction_report.cpp",
+             "  if (!(r.equilibrium_residual > kEquilibriumLimit)) return std::nullopt;",
+             "  if (true) return std::nullopt;",
+             "a body whose forces do not balance is not warned about",
+             ["cli:tests/cli/test_reactions.py::test_a_loose_solve_is_warned"]),
+    Mutation("shared-dof-last-entry", "model", S + "model/discretization.cpp",
+             "    if (taken[dof - body.dof_offset]) return;",
+             "    if (false && taken[dof - body.dof_offset]) return;",
+             "a dof two constraint entries prescribe counts in both reactions",
+             ["cli:tests/cli/test_reactions.py::test_a_dof_two_entries_hold_belongs_to_the_first"]),
 ]
 
 

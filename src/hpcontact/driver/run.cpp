@@ -17,11 +17,13 @@
 #include "hpcontact/driver/contact_compare.hpp"
 #include "hpcontact/driver/contact_history.hpp"
 #include "hpcontact/driver/contact_json.hpp"
+#include "hpcontact/driver/reaction_report.hpp"
 #include "hpcontact/driver/solution_warnings.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/core/stop.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/linear_solve.hpp"
+#include "hpcontact/model/reactions.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
 #include "hpcontact/post/fields.hpp"
 #include "hpcontact/post/contact_vtu.hpp"
@@ -209,6 +211,12 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
     if (const int k = compared_pair(comparisons); k >= 0)
       r.pressure_curve = comparisons[k]->curve(disc, st.pairs[k], st.contact[k], st.u, st.multipliers_of(k));
   }
+  if (!r.reaction_history.empty()) {
+    const model::Reactions& reactions = r.reaction_history.back();
+    s.extra["reactions"] = reactions_json(spec, reactions);
+    s.extra["equilibrium_residual"] = reactions.equilibrium_residual;
+    if (const auto w = equilibrium_warning(spec, reactions)) warn(*w, options, s);
+  }
   if (out_dir.empty()) return;
   const fs::path out(out_dir);
   if (!options.effective_input.empty())
@@ -226,9 +234,11 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
 
 /// The load path (path.csv): a row per converged step, with the monitored node and the first
 /// pair's resultant, then every further pair's (pair1_resultant_x, ...; from the contact
-/// history, a row per pair and step). Nothing without an output folder.
+/// history, a row per pair and step), then the supports' reactions and the balance (from the
+/// reactions' history, a row per step). Nothing without an output folder.
 void write_path(const model::ProblemSpec& spec, const model::NonlinearSolution& sol,
-                const std::vector<ContactHistoryRow>& history, const std::string& out_dir) {
+                const std::vector<ContactHistoryRow>& history,
+                const std::vector<model::Reactions>& reactions, const std::string& out_dir) {
   if (out_dir.empty() || sol.path.empty()) return;
   std::ostringstream csv;
   const bool per_direction = std::any_of(spec.solver.stages.begin(), spec.solver.stages.end(),
@@ -240,6 +250,8 @@ void write_path(const model::ProblemSpec& spec, const model::NonlinearSolution& 
   for (const auto& h : history) n_pairs = std::max(n_pairs, h.pair + 1);
   for (int k = 1; k < n_pairs; ++k) csv << ",pair" << k << "_resultant_x,pair" << k << "_resultant_y";
   if (per_direction) csv << ",displacement_factor_x,displacement_factor_y";
+  const bool with_reactions = !reactions.empty() && reactions.size() == sol.path.size();
+  if (with_reactions) csv << reaction_header(spec, reactions.front());
   csv << '\n';
   for (size_t i = 0; i < sol.path.size(); ++i) {
     const auto& p = sol.path[i];
@@ -253,6 +265,7 @@ void write_path(const model::ProblemSpec& spec, const model::NonlinearSolution& 
       else csv << ",,";
     }
     if (per_direction) csv << ',' << p.displacement_factors.x() << ',' << p.displacement_factors.y();
+    if (with_reactions) csv << reaction_row(reactions[i]);
     csv << '\n';
   }
   post::write_text_file((std::filesystem::path(out_dir) / "path.csv").string(), csv.str());
@@ -522,9 +535,13 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
     if (!out_dir.empty()) fs::create_directories(out_dir);
     SolvedState st{&last->discretization, last->solution.u, last->solution.contact,
                    last->solution.pairs, last->solution.multipliers};
+    result.reaction_history = {model::reactions(
+        last->discretization, model::pairs_of_last_step(last->solution), last->solution.u,
+        last->solution.multipliers, last->solution.loads_factor)};
     post_process(last->spec, st, out_dir, options, comparisons, result);
-    // the load path of the final mesh's solve (its first pair's resultant: no contact history)
-    write_path(last->spec, last->solution, {}, out_dir);
+    // the load path of the final mesh's solve (its first pair's resultant: no contact history,
+    // no reactions per step)
+    write_path(last->spec, last->solution, {}, {}, out_dir);
     if (!out_dir.empty())
       post::write_text_file((fs::path(out_dir) / "mesh.yaml").string(), mesh_yaml(last->spec));
     s.converged = converged;
@@ -574,6 +591,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
        << " s, factorisation and solve " << sol.solve_seconds << " s";
     say(os.str());
     st.u = sol.u;
+    result.reaction_history = {model::reactions(d, {}, st.u, {}, 1.0)};
     s.newton_iterations = 1;
     s.extra["newton_iterations_total"] = 1;
     s.load_steps = 1;
@@ -593,6 +611,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
                               const std::vector<model::ContactPair>& pairs,
                               const std::vector<Eigen::VectorXd>& multipliers) {
       ++n_steps;
+      result.reaction_history.push_back(model::reactions(d, pairs, u, multipliers, at.loads));
       for (size_t k = 0; k < pairs.size(); ++k)
         history.push_back(contact_history_row(
             n_steps, at, static_cast<int>(k), d.bodies[pairs[k].body].name, pairs[k],
@@ -647,7 +666,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
         fs::create_directories(good);
         const SolvedState last{&d, sol.u, sol.contact, sol.pairs, sol.multipliers};
         post_process(spec, last, good, options, comparisons, result);
-        write_path(spec, sol, history, good);
+        write_path(spec, sol, history, result.reaction_history, good);
         s.converged = false;
         s.extra["message"] = sol.message;
         write_summary(good);
@@ -666,7 +685,7 @@ RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options)
       }
       throw NumericalError(spec.file + ": the solver stopped: " + sol.message + kept);
     }
-    write_path(spec, sol, history, stage);
+    write_path(spec, sol, history, result.reaction_history, stage);
     st.u = sol.u;
     st.contact = std::move(sol.contact);
     st.pairs = std::move(sol.pairs);

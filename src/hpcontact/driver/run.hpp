@@ -12,6 +12,7 @@
 #include "hpcontact/driver/output_folder.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "hpcontact/model/problem_spec.hpp"
+#include "hpcontact/model/reactions.hpp"
 #include "hpcontact/post/summary.hpp"
 
 namespace hpcontact::driver {
@@ -35,6 +36,9 @@ struct RunResult {
   ContactTable contact;  ///< the rows of contact.csv; empty without contact
   /// The curves of pressure.csv, when the first contact pair has a `compare` section.
   std::optional<PressureCurve> pressure_curve;
+  /// The reactions at the supports and pairs and the bodies' balance at every converged load
+  /// step (a linear solve: its one), the last the result's (summary.json `reactions`).
+  std::vector<model::Reactions> reaction_history;
 };
 
 /// The files a run writes into its output folder: summary.json (the marker), input.yaml,

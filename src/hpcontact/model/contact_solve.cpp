@@ -597,10 +597,6 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
   LoadPath path(spec, d, progress, start, on_step);
   return path.solve();
 }
-namespace {
-
-/// With friction, the pairs with the histories the last load step started from: what its Newton
-/// iterations converged with (the committed slips would put slipping points on the cone).
 std::vector<ContactPair> pairs_of_last_step(const NonlinearSolution& sol) {
   std::vector<ContactPair> pairs = sol.pairs;
   for (auto& pair : pairs)
@@ -612,6 +608,8 @@ std::vector<ContactPair> pairs_of_last_step(const NonlinearSolution& sol) {
     }
   return pairs;
 }
+
+namespace {
 
 solve::SparseMatrix tangent_at(const ProblemSpec& spec, const Discretization& d,
                                const NonlinearSolution& sol, ContactSystem::Tangent kind,

@@ -83,6 +83,11 @@ NonlinearSolution solve_contact(const ProblemSpec& spec, const Discretization& d
                                 const ProgressFn& progress = {}, const StartState& start = {},
                                 const StepFn& on_step = {});
 
+/// The pairs of a solution with, for friction, the histories its last load step started from:
+/// what its Newton iterations converged with (the committed slips would put slipping points on
+/// the cone). Its forces at the solution are those the solve balanced.
+std::vector<ContactPair> pairs_of_last_step(const NonlinearSolution& sol);
+
 /// The Newton tangent of the contact problem at a solution, on the unknowns of its solve:
 /// analytic, or the seed's central finite differences (eq. 3.36). The residual there into
 /// `residual` if not null. For tests and benchmarks of the two tangents.

@@ -17,6 +17,7 @@
 #include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/mesh/element_shape.hpp"
 #include "hpcontact/model/axis.hpp"
+#include "hpcontact/model/edge_interpolant.hpp"
 #include "hpcontact/model/expression.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
 
@@ -122,7 +123,7 @@ Body make_body(const ProblemSpec& spec, int b) {
   mat.validate(bs.material.where.str());
 
   Body body{bs.name, std::move(mesh), std::move(dofs), {}, {}, mat, bs.material.thickness, 0, {},
-            law, rubber, {}, {}, {}};
+            law, rubber, {}, {}, {}, {}};
   if (!bs.regions.empty()) body.element_region.assign(body.mesh.n_quads(), -1);
   for (const auto& region : bs.regions) {
     material::LinearElastic rm = mat;
@@ -171,46 +172,29 @@ const std::vector<int>& edge_set(const Body& body, const std::string& name, cons
 }
 
 /// Prescribes component `comp` = g(x, y) on an edge: vertex values, and the edge modes by the L2
-/// projection of g minus its linear interpolant onto phi_2..phi_p along the edge.
-void prescribe_edge(const Body& body, int e, int comp, const Expression& g, Discretization& d) {
-  const auto& edge = body.mesh.edge(e);
+/// projection of g minus its linear interpolant onto phi_2..phi_p along the edge. Returns the
+/// dofs it prescribed.
+std::vector<int> prescribe_edge(const Body& body, int e, int comp, const Expression& g, Discretization& d) {
+  std::vector<int> dofs;
   auto set = [&](int mode, double v) {
     const int dof = body.dof_offset + 2 * mode + comp;
     d.free_index[dof] = -1;
     d.prescribed(dof) = v;
+    dofs.push_back(dof);
   };
+  const auto& edge = body.mesh.edge(e);
   const Vec2 x0 = body.mesh.node(edge.v0), x1 = body.mesh.node(edge.v1);
-  const double g0 = g(x0.x(), x0.y()), g1 = g(x1.x(), x1.y());
-  set(body.dofs.vertex_mode(edge.v0), g0);
-  set(body.dofs.vertex_mode(edge.v1), g1);
+  set(body.dofs.vertex_mode(edge.v0), g(x0.x(), x0.y()));
+  set(body.dofs.vertex_mode(edge.v1), g(x1.x(), x1.y()));
   const int p = body.dofs.edge_degree(e);
-  if (p < 2) return;
-  if (body.dofs.lagrange()) {  // the mid-edge node
-    const Vec2 xm = body.mesh.edge_point(e, 0.0);
-    set(body.dofs.edge_mode(e, 2), g(xm.x(), xm.y()));
-    return;
-  }
-  if (g.is_constant()) {
+  if (p < 2) return dofs;
+  if (g.is_constant() && !body.dofs.lagrange()) {
     for (int k = 2; k <= p; ++k) set(body.dofs.edge_mode(e, k), 0.0);
-    return;
+    return dofs;
   }
-  const int m = p - 1;
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m, m);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
-  const auto& rule = basis::gauss_legendre(p + 10);
-  std::vector<double> phi(p + 1);
-  for (int i = 0; i < rule.size(); ++i) {
-    const double t = rule.points[i], w = rule.weights[i];
-    const Vec2 x = body.mesh.edge_point(e, t);
-    const double r = g(x.x(), x.y()) - (0.5 * (1 - t) * g0 + 0.5 * (1 + t) * g1);
-    basis::hierarchic_1d(p, t, phi.data(), nullptr);
-    for (int k = 0; k < m; ++k) {
-      rhs(k) += w * phi[k + 2] * r;
-      for (int l = 0; l < m; ++l) M(k, l) += w * phi[k + 2] * phi[l + 2];
-    }
-  }
-  const Eigen::VectorXd a = M.ldlt().solve(rhs);
-  for (int k = 2; k <= p; ++k) set(body.dofs.edge_mode(e, k), a(k - 2));
+  const auto a = edge_mode_values(body, e, [&](const Vec2& x) { return g(x.x(), x.y()); });
+  for (int k = 2; k <= p; ++k) set(body.dofs.edge_mode(e, k), a[k - 2]);
+  return dofs;
 }
 
 /// The radial dofs of an axisymmetric body's axis: the vertex modes of its nodes on the axis and
@@ -232,22 +216,35 @@ std::vector<std::pair<int, std::string>> axis_radial_dofs(const Body& body) {
   return dofs;
 }
 
-void apply_constraints(const BodySpec& bs, const Body& body, Discretization& d) {
+/// Prescribes a body's constraints; returns per constraint entry the dofs it holds (a dof that
+/// two entries prescribe is held by the first listed: its reaction is that entry's; the value
+/// prescribed is the last's).
+std::vector<std::vector<int>> apply_constraints(const BodySpec& bs, const Body& body, Discretization& d) {
   const auto axis = axis_radial_dofs(body);
-  for (const auto& c : bs.constraints) {
+  std::vector<std::vector<int>> held(bs.constraints.size());
+  std::vector<char> taken(body.dofs.n_dofs(), 0);
+  auto hold = [&](size_t entry, int dof) {
+    if (taken[dof - body.dof_offset]) return;
+    taken[dof - body.dof_offset] = 1;
+    held[entry].push_back(dof);
+  };
+  for (size_t i = 0; i < bs.constraints.size(); ++i) {
+    const auto& c = bs.constraints[i];
     const std::string where = c.where.str();
     for (int comp = 0; comp < 2; ++comp) {
       const auto& text = comp == 0 ? c.ux : c.uy;
       if (!text) continue;
       const Expression g(*text, {"x", "y"}, where + (comp == 0 ? ".ux" : ".uy"));
       for (const auto& name : c.edge_sets)
-        for (int e : edge_set(body, name, c.where)) prescribe_edge(body, e, comp, g, d);
+        for (int e : edge_set(body, name, c.where))
+          for (int dof : prescribe_edge(body, e, comp, g, d)) hold(i, dof);
       for (int id : c.nodes) {
         const int v = body.mesh.node_index(id);
         HPC_REQUIRE(v >= 0, InputError, where, ".nodes: node ", id, " does not exist");
         const int dof = body.dof_offset + 2 * body.dofs.vertex_mode(v) + comp;
         d.free_index[dof] = -1;
         d.prescribed(dof) = g(body.mesh.node(v).x(), body.mesh.node(v).y());
+        hold(i, dof);
       }
       // The axis cannot move radially: it would open a hole, or pass through itself.
       if (comp == 0)
@@ -259,6 +256,7 @@ void apply_constraints(const BodySpec& bs, const Body& body, Discretization& d) 
                       "hole or pass through itself)");
     }
   }
+  return held;
 }
 
 /// A warning for an axisymmetric body whose nodes on the axis are free to move radially: the
@@ -455,7 +453,7 @@ Discretization discretize(const ProblemSpec& spec) {
   for (size_t b = 0; b < spec.bodies.size(); ++b) {
     const BodySpec& bs = spec.bodies[b];
     const Body& body = d.bodies[b];
-    apply_constraints(bs, body, d);
+    d.bodies[b].constraint_dofs = apply_constraints(bs, body, d);
     if (const auto w = axis_left_free(spec, static_cast<int>(b), body, d)) d.warnings.push_back(*w);
     for (const auto& ls : bs.edge_loads) apply_edge_load(ls, body, d);
     for (const auto& nf : bs.nodal_forces) {

@@ -40,6 +40,11 @@ struct Body {
   /// Elastic constants of the material regions, and per element its region (-1: `material`).
   std::vector<material::LinearElastic> region_materials;
   std::vector<int> element_region;
+  /// Per entry of the body's constraints (BodySpec::constraints), the global dofs it holds: its
+  /// edges' vertex and edge modes and its nodes' vertex modes, in the components it prescribes;
+  /// a dof two entries prescribe belongs to the first listed (the one its reaction is
+  /// reported for).
+  std::vector<std::vector<int>> constraint_dofs;
   /// Rigid-body motions the constraints leave free (model/rigid_motion.hpp); empty: held.
   std::vector<std::string> free_rigid_motions;
   /// The elastic constants of element q.
