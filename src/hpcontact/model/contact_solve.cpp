@@ -410,7 +410,7 @@ bool LoadPath::advance(double from, double target, int steps, const FactorsAt& f
 constexpr int kContinuationParts[] = {2, 4};
 
 // With friction, a load step whose Newton fails from the last converged state is reached by
-// continuation before it is cut: the path parameters between `from` and `next` in equal parts,
+// continuation before it is cut (within solver.max_cuts: 2^k parts count as k cuts): the path parameters between `from` and `next` in equal parts,
 // each solved from the same committed state (the friction's history does not advance: every
 // part is the same incremental problem at a smaller load) and each solution the next part's
 // first guess; only the solution at `next` is kept and committed. A cut commits its shorter
@@ -421,6 +421,8 @@ std::optional<LoadPath::StepAttempt> LoadPath::continue_to(double from, double n
                                                            const FactorsAt& factors,
                                                            const ForceTarget& force) {
   for (const int parts : kContinuationParts) {
+    // parts = 2^k count as k cuts: solver.max_cuts bounds how finely a step is divided either way
+    if (parts > (1 << std::min(ss_.max_cuts, 20))) break;
     std::optional<StepAttempt> last;
     for (int i = 1; i <= parts; ++i) {
       const double s = i == parts ? next : from + (next - from) * i / parts;
