@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <set>
 #include <sstream>
 
 #include "hpcontact/adapt/boundary_track.hpp"
@@ -110,21 +112,23 @@ std::string limit_message(const HpOutcome& out, const HpOptions& options, const 
   return os.str();
 }
 
-/// A contact edge holding at least this share of the estimated error of the pressure is where the
-/// next centre goes, when a zone end on it has none.
+/// A contact edge holding at least this share of the estimated error of the pressure (or of the
+/// shear) is where the next centre goes, when a zone end (a stick–slip point) on it has none.
 constexpr double kErrorPeakShare = 0.5;
 
-/// With a tolerance: when one contact edge holds most of the estimated error of the pressure and
-/// a zone end of the enriched solve lies within its length of the error's peak there with no
+/// With a tolerance: when one contact edge holds most of the estimated error of the pressure
+/// (`kind` contact; of the shear: `kind` stick_slip) and a zone end (a stick–slip point, a
+/// memory point) of the enriched solve lies within its length of the error's peak there with no
 /// centre following it (two ends nearest to one node of a coarse input mesh: the node serves
 /// one), a centre for it: the nearest vertex of the mesh the steps are built from (`base`'s)
 /// that is no centre yet and can move onto it, followed from then on as the others. Whether one
 /// was added.
 bool add_unfollowed_zone_end(const Solved& base, const Solved& coarse, const Solved& enriched,
-                             const std::vector<ZoneEnd>& ends, std::vector<Centre>& centres) {
-  const auto peak = pressure_error_peak(coarse, enriched);
+                             const std::vector<ZoneEnd>& ends, ZoneEnd::Kind kind,
+                             std::vector<Centre>& centres) {
+  const auto peak = traction_error_peak(coarse, enriched, kind == ZoneEnd::Kind::stick_slip);
   if (!peak || peak->share < kErrorPeakShare) return false;
-  const ZoneEnd* end = nearest_end(ends, peak->body, ZoneEnd::Kind::contact, peak->X);
+  const ZoneEnd* end = nearest_end(ends, peak->body, kind, peak->X);
   if (!end || (end->X - peak->X).norm() > peak->edge_length) return false;
   for (const Centre& c : centres)  // followed already: a centre at it, or ending the edge
     if (c.body == peak->body &&
@@ -152,13 +156,110 @@ bool add_unfollowed_zone_end(const Solved& base, const Solved& coarse, const Sol
     } catch (const AdaptError&) {
       continue;  // an end of an edge set, a corner: it cannot move
     }
-    centres.push_back({peak->body, id, end->X, ZoneEnd::Kind::contact});
+    centres.push_back({peak->body, id, end->X, kind});
     return true;
   }
   return false;
 }
 
+/// A stick–slip or memory point counts as followed when a centre on its body lies within this
+/// share of the contact zone's extent.
+constexpr double kFollowedWithin = 0.02;
+
+/// The extent of the contact zones on `body`: the largest distance between two of its zone ends.
+double zone_extent(const std::vector<ZoneEnd>& ends, int body) {
+  double extent = 0;
+  for (const ZoneEnd& a : ends)
+    for (const ZoneEnd& b : ends)
+      if (a.body == body && b.body == body && a.kind == ZoneEnd::Kind::contact &&
+          b.kind == ZoneEnd::Kind::contact)
+        extent = std::max(extent, (a.X - b.X).norm());
+  return extent;
+}
+
+/// A node of `base` for the point X of body `body`: the boundary vertex nearest to X whose
+/// track (its two boundary edges) holds X is refined towards, with the factor that puts the new
+/// node on its edge at X (clamped to [0.1, 0.5]); the new node's id, or -1 if no vertex holds X.
+int node_made_at(model::ProblemSpec& base, int body, const Vec2& X) {
+  const auto& nodes = base.bodies[body].node_ids;
+  int best = -1;
+  double best_distance = 0, factor = 0;
+  for (int id : nodes) {
+    try {
+      const BoundaryTrack track(base, body, id);
+      if (!track.reaches(X)) continue;
+      const double d = (node_position(base.bodies[body], id) - X).norm();
+      if (best >= 0 && d >= best_distance) continue;
+      const double t = track.parameter(X);
+      const double edge = t > track.node() ? track.upper() - track.node() : track.node() - track.lower();
+      best = id;
+      best_distance = d;
+      factor = std::clamp(std::abs(t - track.node()) / edge, 0.1, 0.5);
+    } catch (const AdaptError&) {
+      continue;  // not on the boundary, or a corner
+    }
+  }
+  if (best < 0) return -1;
+  const std::set<int> before(nodes.begin(), nodes.end());
+  base = refine_towards_node(base, body, best, factor);
+  int made = -1;
+  double made_distance = 0;
+  for (int id : base.bodies[body].node_ids) {
+    if (before.count(id)) continue;
+    const double d = (node_position(base.bodies[body], id) - X).norm();
+    if (made < 0 || d < made_distance) {
+      made = id;
+      made_distance = d;
+    }
+  }
+  return made;
+}
+
+/// With a shear above the tolerance: each stick–slip and memory point of `points` (the enriched
+/// solve's) that no centre follows gets one, on a node made for it in `base` — a later load
+/// step's stick zone keeps the traction of an earlier one up to its end, a kink the estimate
+/// finds but no zone end of the last state marks. A point whose refinement or centre would not
+/// give a mesh `builds` accepts is left. The points now followed.
+std::vector<Vec2> follow_new_points(model::ProblemSpec& base, std::vector<Centre>& centres,
+                                    const std::vector<ZoneEnd>& points,
+                                    const std::function<bool(const model::ProblemSpec&,
+                                                             const std::vector<Centre>&)>& builds) {
+  std::vector<Vec2> followed;
+  for (const ZoneEnd& p : points) {
+    if (p.kind != ZoneEnd::Kind::stick_slip) continue;
+    const double within = kFollowedWithin * zone_extent(points, p.body);
+    const bool has_centre = std::any_of(centres.begin(), centres.end(), [&](const Centre& c) {
+      return c.body == p.body && (c.at - p.X).norm() <= within;
+    });
+    if (has_centre) continue;
+    model::ProblemSpec refined = base;
+    int node = -1;
+    try {
+      node = node_made_at(refined, p.body, p.X);
+    } catch (const Error&) {
+      continue;  // the refinement cannot be built there
+    }
+    if (node < 0) continue;
+    std::vector<Centre> more = centres;
+    more.push_back({p.body, node, p.X, ZoneEnd::Kind::stick_slip});
+    if (!builds(refined, more)) continue;
+    base = std::move(refined);
+    centres = std::move(more);
+    followed.push_back(p.X);
+  }
+  return followed;
+}
+
 }  // namespace
+
+/// What the steps after the first follow on a solve: its zone ends (not those at singular
+/// points) and, with stick_slip, its stick–slip points and memory points.
+std::vector<ZoneEnd> followed_points(const Solved& s, const HpOptions& options) {
+  auto ends = without_ends_at_singular_points(zone_ends_of(s, options.stick_slip), singular_ends_of(s));
+  if (options.stick_slip)
+    for (const ZoneEnd& m : memory_points_of(s)) ends.push_back(m);
+  return ends;
+}
 
 HpOptions hp_options(const model::AdaptSpec& adapt) {
   HpOptions o;
@@ -222,9 +323,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
           }
           // A later step may find fewer ends (a stick–slip point gone on the coarse elements
           // next to it): the centres stay where they are.
-          ends = step == 0 ? adapt_targets(*s, options.stick_slip, true)
-                           : without_ends_at_singular_points(zone_ends_of(*s, options.stick_slip),
-                                                             singular_ends_of(*s));
+          ends = step == 0 ? adapt_targets(*s, options.stick_slip, true) : followed_points(*s, options);
           if (step == 0) {
             base_solved = s;
             for (const auto& n : nearest_movable_nodes(*s, ends))
@@ -321,17 +420,39 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         return out;
       }
       // The next mesh is centred on the zone ends of the better solve.
-      const auto ends_plus = without_ends_at_singular_points(zone_ends_of(*enriched, options.stick_slip),
-                                                             singular_ends_of(*enriched));
-      if (base_solved && add_unfollowed_zone_end(*base_solved, *s, *enriched, ends_plus, centres)) {
+      const auto ends_plus = followed_points(*enriched, options);
+      for (const auto kind : {ZoneEnd::Kind::contact, ZoneEnd::Kind::stick_slip}) {
+        const double error = kind == ZoneEnd::Kind::contact ? rec.estimate.pressure : rec.estimate.shear;
+        if (!(error > options.tolerance) || !base_solved ||
+            !add_unfollowed_zone_end(*base_solved, *s, *enriched, ends_plus, kind, centres))
+          continue;
         std::ostringstream os;
         os.precision(6);
-        os << "hp step " << step << ": the estimated error concentrates at the zone end (" << centres.back().at.x()
-           << ", " << centres.back().at.y() << "), which no refinement follows: refining towards it too";
+        os << "hp step " << step << ": the estimated error of the "
+           << (kind == ZoneEnd::Kind::contact ? "pressure" : "shear") << " concentrates at the "
+           << kind_name(kind) << " (" << centres.back().at.x() << ", " << centres.back().at.y()
+           << "), which no refinement follows: refining towards it too";
         say(os.str());
       }
       for (Centre& c : centres)
         if (const ZoneEnd* nearest = nearest_end(ends_plus, c.body, c.kind, c.at)) c.at = nearest->X;
+      if (rec.estimate.shear > options.tolerance) {
+        auto builds = [&](const model::ProblemSpec& b, const std::vector<Centre>& c) {
+          try {
+            build_mesh(b, c, step + 1, options, corrections);
+            return true;
+          } catch (const Error&) {
+            return false;
+          }
+        };
+        for (const Vec2& X : follow_new_points(base, centres, ends_plus, builds)) {
+          std::ostringstream os;
+          os.precision(6);
+          os << "hp step " << step << ": the shear's estimate is above the tolerance and no refinement "
+                "follows the stick-slip point (" << X.x() << ", " << X.y() << "): refining towards it too";
+          say(os.str());
+        }
+      }
     }
     if (options.tolerance > 0) {
       out.stopped = "step limit";

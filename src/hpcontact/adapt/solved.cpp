@@ -47,6 +47,18 @@ std::vector<ZoneEnd> zone_ends_of(const Solved& s, bool stick_slip) {
   return ends;
 }
 
+std::vector<ZoneEnd> memory_points_of(const Solved& s) {
+  std::vector<ZoneEnd> points;
+  for (size_t k = 0; k < s.solution.contact.size(); ++k) {
+    const auto& pair = s.solution.pairs[k];
+    for (const Vec2& X : s.solution.contact[k].memory_points)
+      points.push_back({pair.body, X, ZoneEnd::Kind::stick_slip});
+    for (const Vec2& X : s.solution.contact[k].other_memory_points)
+      points.push_back({pair.other, X, ZoneEnd::Kind::stick_slip});
+  }
+  return points;
+}
+
 std::vector<ZoneEnd> singular_ends_of(const Solved& s) {
   std::vector<ZoneEnd> ends;
   for (size_t k = 0; k < s.solution.contact.size(); ++k) {

@@ -50,6 +50,11 @@ const char* kind_name(ZoneEnd::Kind kind);
 /// (ContactResult::stick_slip) on both bodies; possibly none.
 std::vector<ZoneEnd> zone_ends_of(const Solved& s, bool stick_slip);
 
+/// The memory points of `s`'s pairs (ContactResult::memory_points: earlier steps' stick–slip
+/// points where it has stuck since, the tangential traction kinked there) on both bodies, as
+/// stick–slip points.
+std::vector<ZoneEnd> memory_points_of(const Solved& s);
+
 /// zone_ends_of(s, false); AdaptError when there is none.
 std::vector<ZoneEnd> outer_zone_ends(const Solved& s);
 

@@ -136,6 +136,8 @@ nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureCompa
     if (pair.constraints && coulomb) {
       fj["stick_slip_points"] = points_json(c.stick_slip.X);
       if (pair.other >= 0) fj["stick_slip_points_other"] = points_json(c.other_stick_slip.X);
+      fj["memory_points"] = points_json(c.memory_points);
+      if (pair.other >= 0) fj["memory_points_other"] = points_json(c.other_memory_points);
     }
     cj["friction"] = fj;
   }

@@ -113,6 +113,10 @@ struct ContactResult {
   /// points rp and hp adapt to as to Γ*. Against another body their feet on its boundary are
   /// `other`.
   ZoneEnds stick_slip, other_stick_slip;
+  /// Exact Coulomb friction, after a solve along a load path (model/memory_points.hpp): the
+  /// stick–slip points of earlier load steps where every later step stuck — the tangential
+  /// traction keeps a kink there — undeformed, on the pair's body and on the other one.
+  std::vector<Vec2> memory_points, other_memory_points;
 };
 
 /// The contact state of a pair at the dofs u (and its multipliers, when it is enforced exactly):

@@ -18,6 +18,7 @@
 #include "hpcontact/model/contact_solve_failure.hpp"
 #include "hpcontact/model/contact_system.hpp"
 #include "hpcontact/model/load_scale.hpp"
+#include "hpcontact/model/memory_points.hpp"
 #include "hpcontact/solve/arc_length.hpp"
 
 namespace hpcontact::model {
@@ -147,6 +148,7 @@ private:
                         double guess);
   void drop_force_target(Eigen::VectorXd& x);
   void record(const Factors& f, int iterations, double arc);
+  void record_stick_slip(const Eigen::VectorXd& u, const std::vector<Eigen::VectorXd>& multipliers);
   void set_out();
   bool advance(double from, double target, int steps, const FactorsAt& factors,
                const ForceTarget& force = std::nullopt);
@@ -159,7 +161,10 @@ private:
     Factors factors;
     solve::SolveReport report;
   };
-  StepAttempt attempt_step(double s, const FactorsAt& factors, const ForceTarget& force);
+  StepAttempt attempt_step(double s, const FactorsAt& factors, const ForceTarget& force,
+                           const Eigen::VectorXd* start = nullptr);
+  std::optional<StepAttempt> continue_to(double from, double next, const FactorsAt& factors,
+                                         const ForceTarget& force);
   void accept_step(StepAttempt attempt);
   bool arc_length_path();
   bool accept_arc_length_step(const Eigen::VectorXd& x, const solve::ArcLengthStep& st);
@@ -284,7 +289,32 @@ void LoadPath::record(const Factors& f, int iterations, double arc) {
     p.resultant = contact_resultant(d_, pairs_.front(), u,
                                     multipliers[0].size() ? &multipliers[0] : nullptr);
   sol_.path.push_back(p);
+  record_stick_slip(u, multipliers);
   if (on_step_) on_step_(u, p, pairs_, multipliers);
+}
+
+/// The stick–slip points of the exact Coulomb pairs at the converged state u (their step's
+/// slips committed) and where they stick and slip: NonlinearSolution::stick_slip_history.
+void LoadPath::record_stick_slip(const Eigen::VectorXd& u, const std::vector<Eigen::VectorXd>& multipliers) {
+  const auto& slips = system_.step_slips();
+  NonlinearSolution::StepStickSlip step;
+  for (auto* v : {&step.stuck, &step.slipped}) v->resize(pairs_.size());
+  step.own.resize(pairs_.size());
+  step.other.resize(pairs_.size());
+  bool any = false;
+  for (size_t k = 0; k < pairs_.size(); ++k) {
+    if (slips[k].size() == 0 || multipliers[k].size() == 0) continue;
+    const ContactResult c = evaluate_contact(d_, pairs_[k], u, &multipliers[k], &slips[k]);
+    step.own[k] = c.stick_slip;
+    step.other[k] = c.other_stick_slip;
+    for (size_t i = 0; i < c.states.size(); ++i) {
+      const auto state = contact::contact_state(c.states[i]);
+      if (state == contact::ContactState::stick) step.stuck[k].push_back(c.s[i]);
+      if (state == contact::ContactState::slip) step.slipped[k].push_back(c.s[i]);
+    }
+    any = true;
+  }
+  if (any) sol_.stick_slip_history.push_back(std::move(step));
 }
 
 /// The state the path sets out from: unloaded, or a warm start.
@@ -340,6 +370,13 @@ bool LoadPath::advance(double from, double target, int steps, const FactorsAt& f
       sol_.message = "load step " + std::to_string(sol_.load_steps + 1) + " (" + factors_now + "): " + rep.message;
       return false;
     }
+    // With friction the load path is part of the problem: continuation first, cuts last.
+    if (cuts == 0 && system_.has_friction())
+      if (auto reached = continue_to(lambda, next, factors, force)) {
+        lambda = next;
+        accept_step(std::move(*reached));
+        continue;
+      }
     const std::string why = newton_failure_reason(rep, d_, pairs_, system_);
     // A tangent made singular by a body that only contact holds (its constraints leave a
     // rigid motion free) stays singular on a shorter step when nothing has converged yet (no
@@ -369,13 +406,51 @@ bool LoadPath::advance(double from, double target, int steps, const FactorsAt& f
   return true;
 }
 
+/// Parts a failing load step is split into for continuation (each tried in turn).
+constexpr int kContinuationParts[] = {2, 4};
+
+// With friction, a load step whose Newton fails from the last converged state is reached by
+// continuation before it is cut (within solver.max_cuts: 2^k parts count as k cuts): the path parameters between `from` and `next` in equal parts,
+// each solved from the same committed state (the friction's history does not advance: every
+// part is the same incremental problem at a smaller load) and each solution the next part's
+// first guess; only the solution at `next` is kept and committed. A cut commits its shorter
+// steps — another load path, which friction remembers, so that two solves of one problem (an
+// adaptive loop's mesh and its estimate) would answer two problems. The attempt at `next`, or
+// nothing.
+std::optional<LoadPath::StepAttempt> LoadPath::continue_to(double from, double next,
+                                                           const FactorsAt& factors,
+                                                           const ForceTarget& force) {
+  for (const int parts : kContinuationParts) {
+    // parts = 2^k count as k cuts: solver.max_cuts bounds how finely a step is divided either way
+    if (parts > (1 << std::min(ss_.max_cuts, 20))) break;
+    std::optional<StepAttempt> last;
+    for (int i = 1; i <= parts; ++i) {
+      const double s = i == parts ? next : from + (next - from) * i / parts;
+      StepAttempt a = attempt_step(s, factors, force, last ? &last->x : nullptr);
+      if (!a.report.ok()) {
+        if (a.report.status == solve::SolveStatus::stopped) return std::nullopt;
+        last.reset();
+        break;
+      }
+      last = std::move(a);
+    }
+    if (last) {
+      say("load step " + std::to_string(sol_.load_steps + 1) + " reached by continuation in " +
+          std::to_string(parts) + " parts from the last converged state (the friction's history "
+          "kept: no shorter step committed)");
+      return last;
+    }
+  }
+  return std::nullopt;
+}
+
 // A load step's Newton solve at the path parameter s, from the last converged state. With
 // `force`, force-controlled: the factor on the prescribed displacements is the unknown of the
 // bordered system whose target is share(s) × value (factors(s) then gives its first guess, and
 // the loads' factor unless they follow the unknown); the factors it reached are the attempt's.
 LoadPath::StepAttempt LoadPath::attempt_step(double s, const FactorsAt& factors,
-                                             const ForceTarget& force) {
-  StepAttempt a{x_, factors(s), {}};
+                                             const ForceTarget& force, const Eigen::VectorXd* start) {
+  StepAttempt a{start ? *start : x_, factors(s), {}};
   system_.set_factors(a.factors.displacements, a.factors.loads);
   if (force)
     add_force_target(force->component, force->share(s) * force->value, force->scales_loads, a.x,
@@ -586,6 +661,11 @@ NonlinearSolution LoadPath::result(bool converged) {
                                             slips[k].size() ? &slips[k] : nullptr,
                                             totals[k].size() ? &totals[k] : nullptr));
   sol_.pairs = std::move(pairs_);
+  for (size_t k = 0; k < sol_.contact.size(); ++k) {
+    const MemoryPoints m = memory_points(sol_, k);
+    sol_.contact[k].memory_points = m.own;
+    sol_.contact[k].other_memory_points = m.other;
+  }
   return std::move(sol_);
 }
 

@@ -49,6 +49,14 @@ struct NonlinearSolution {
   };
   std::vector<PathPoint> path;
   std::vector<ContactResult> contact;  ///< per pair
+  /// Per converged load step: for each exactly enforced Coulomb pair its stick–slip points then
+  /// and where it stuck and slipped (empty for other pairs) — model/memory_points.hpp.
+  struct StepStickSlip {
+    std::vector<ZoneEnds> own, other;  ///< per pair: ContactResult::stick_slip, other_stick_slip
+    /// Per pair: the coordinates (ContactPair::coordinate) of its sticking and slipping points.
+    std::vector<std::vector<double>> stuck, slipped;
+  };
+  std::vector<StepStickSlip> stick_slip_history;
   /// Per pair: the pressures at its multiplier nodes (exact enforcement), empty for the penalty.
   std::vector<Eigen::VectorXd> multipliers;
   /// The pair's multipliers, or null (for evaluate_contact and BoundaryPressureProbe).
