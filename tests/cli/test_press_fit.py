@@ -160,3 +160,23 @@ def test_a_ramp_is_refused_where_it_means_nothing(hpcontact, root, tmp_path):
     expect_refused(hpcontact, os.path.join(root, CASE), tmp_path / "out",
                    ["contact[0].enforcement=penalty", "contact[0].penalty=2.1e8", "contact[0].interference=ramp"],
                    "contact[0].interference", 2)
+
+
+def test_auto_lets_the_hub_carry_and_says_why(runs, hpcontact, root, tmp_path):
+    """contact[].carrier: auto on the input as written (the shaft named as the pair's body): the
+    hub, whose bore lies within the shaft's face, carries; summary.json's `carrier` says so and
+    why; contact.csv is the hub-carried run's, byte for byte. normal_direction, written for the
+    force on the shaft (-x), turns with the swap to the hub's (+x): the same positive normal
+    force as the hub-carried run's radial resultant."""
+    out = tmp_path / "auto"
+    r = hpcontact("run", os.path.join(root, CASE), "--out", out, "-q", "--set", "contact[0].carrier=auto",
+                  "--set", "contact[0].normal_direction=[-1, 0]")
+    assert r.returncode == 0, r.stderr
+    pair = json.loads((out / "summary.json").read_text())["contact_pairs"][0]
+    assert pair["body"] == "hub" and pair["obstacle"] == "body 'shaft'"
+    assert pair["carrier"].startswith("auto: body 'hub' carries: its contact edges lie within body 'shaft''s")
+    (hub_summary, hub_rows) = runs["hub"]
+    assert hub_summary["contact_pairs"][0]["carrier"] == "as written: body 'hub'"
+    assert csv_rows(out / "contact.csv") == hub_rows
+    assert pair["normal_force"] == pytest.approx(hub_summary["contact_pairs"][0]["resultant"][0], rel=1e-12)
+    assert pair["normal_force"] > 0

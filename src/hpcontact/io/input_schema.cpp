@@ -368,6 +368,20 @@ const std::vector<KeySpec>& input_schema() {
               "rule, other otherwise. "
               "Against a rigid obstacle only other applies.",
        .choices = {"auto", "other", "mean"}},
+      {.path = "contact[].carrier", .type = T::choice, .default_yaml = "as-written",
+       .doc = "augmented-lagrangian between two bodies: which body carries the multipliers "
+              "(the one-sided constraint is posed on its surface). as-written: `body`. auto: "
+              "chosen by a rule symmetric in the two bodies, the first of these that tells them "
+              "apart: the body whose contact boundary lies within the other's (the larger share "
+              "of its contact length faces the other's boundary, by more than 1e-3: its "
+              "multipliers end where the other surface does, and a zone ending there ends at a "
+              "node — a shaft in a shorter hub: the hub); the finer contact mesh (more "
+              "multiplier nodes per unit length where they face each other, by more than 1 %); "
+              "the softer body (E' at the first contact edge); the body named first under "
+              "`bodies`. summary.json's `carrier` says which and why; `body`, the pair's rows "
+              "and its forces are then the chosen body's. Not with `compare`, whose closed forms "
+              "are measured along the obstacle as written.",
+       .choices = {"as-written", "auto"}},
       {.path = "contact[].interference", .type = T::choice, .default_yaml = "initial",
        .doc = "augmented-lagrangian: what an overlap of the bodies in the input (an interference "
               "fit: a shaft meshed larger than its bore) does. initial: it is there from the "
@@ -806,7 +820,9 @@ std::string input_schema_markdown() {
         "`load_steps`, `newton_iterations` (of the final solve; `newton_iterations_total` of "
         "every solve of the run), `shape_space` of the p-version (tensor or trunk), the first "
         "contact pair as `contact` and every pair "
-        "in `contact_pairs` (body, obstacle, `enforcement`, `resultant` [x, y] the integral of "
+        "in `contact_pairs` (body, obstacle, `enforcement`, `carrier` (exact contact between two "
+        "bodies: \"as written: body '...'\" or, with contact[].carrier: auto, \"auto: \" and the "
+        "rule that chose the body), `resultant` [x, y] the integral of "
         "the contact tractions on the body, `normal_force` its component along "
         "`normal_direction` (contact[].normal_direction, else the surface's normal where it is a "
         "line, else the resultant's own direction: positive in compression), `tangential_force` "
