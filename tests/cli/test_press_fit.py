@@ -42,8 +42,8 @@ def test_no_row_beyond_the_hub_is_in_contact(runs):
 def test_mid_length_pressure_is_lames_for_free_ends(runs):
     """Ten times as long as its wall is thick, the hub holds Lamé's shrink-fit pressure for
     cylinders free to extend (sigma_z = 0) at mid-length: p = E d (c² − b²) / (2 b c²) = 78.75
-    with E 210000, d 0.01, b 10, c 20, to 0.5 % (measured 0.06 % and 0.15 %: the two carriers'
-    pressures are on surfaces 0.1 % apart in radius)."""
+    with E 210000, d 0.01, b 10, c 20, to 0.5 % (measured 0.06 % and 0.15 %: each carrier's
+    pressure is per unit of its own surface, 0.1 % apart in radius and 3e-4 in axial stretch)."""
     lame = 210000 * 0.01 * (20 ** 2 - 10 ** 2) / (2 * 10 * 20 ** 2)
     for carrier, (_, rows) in runs.items():
         (mid,) = [float(r["pressure"]) for r in rows if r["body"] == carrier and float(r["Y"]) == 0]
