@@ -38,6 +38,7 @@
 #include "hpcontact/io/input_schema.hpp"
 #include "hpcontact/io/problem_reader.hpp"
 #include "hpcontact/io/study_reader.hpp"
+#include "hpcontact/model/contact_carrier.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "hpcontact/model/rigid_motion.hpp"
@@ -246,7 +247,7 @@ int check_solid(const std::string& file, const model::ProblemSpec& spec) {
 }
 
 int check_command(const std::string& file, const std::vector<std::string>& sets) {
-  const auto spec = io::read_problem(file, sets);
+  const auto spec = model::with_chosen_carriers(io::read_problem(file, sets));
   if (spec.solid) return check_solid(file, spec);
   const auto d = model::discretize(spec);
   model::require_held(spec, d);
@@ -286,6 +287,7 @@ int check_command(const std::string& file, const std::vector<std::string>& sets)
       std::cout << ", penalty " << pair.penalty;
     std::cout << (spec.contact[k].friction.law == "none" ? "" : ", friction " + spec.contact[k].friction.law)
               << '\n';
+    if (!pair.carrier_choice.empty()) std::cout << "    carrier " << printable(pair.carrier_choice) << '\n';
   }
   driver::require_references(spec);
   // The compare sections' preconditions, as a run checks them before solving.

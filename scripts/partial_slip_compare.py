@@ -19,6 +19,17 @@ length along the common tangent (the tangential multiplier times the pressure's 
   (shear_rel_L2_carried, stick zone c_carried): the error without the tilt's coupling, which
   the linear theory leaves out (it grows with the load: 0.04 % of Q at b/R = 0.002).
 
+- shear_rel_L2_uniform and pressure_rel_L2_uniform: one metric for the exact method and the
+  penalty alike (the node-based figures above need multiplier nodes), on the same points for
+  every run: the relative L2 error against Cattaneo–Mindlin's (and Hertz's) over
+  s in [-1.5 a, 1.5 a], by the trapezoidal rule on 6001 uniform points, of each method's
+  traction as its output defines it between its own points (contact.csv, the pair's own body):
+  exact, the multipliers' polynomial through the Gauss–Lobatto nodes of each contact edge;
+  penalty, linear between its Gauss points (50 per edge: halving them moves the p = 8,
+  eps = 1000 E figure by 4e-4, so the full set's interpolation costs about a quarter of that).
+  6001 points are within 5e-5 of 96001. Outside [-a, a] the closed forms are zero: a traction
+  there counts as error. A penalty run reports P, Q, a, c and these figures.
+
 - with --reference REF (a run of the same case on a much finer discretization: the model's own
   answer, which the half-space's closed forms are not exactly), the shear's and the pressure's
   relative L2 errors against it (shear_rel_L2_reference, pressure_rel_L2_reference): both
@@ -28,6 +39,7 @@ length along the common tangent (the tangential multiplier times the pressure's 
     partial_slip_compare.py results/small-load                  # figures as JSON
     partial_slip_compare.py results/small-load --plot shear.png # and the plot
     partial_slip_compare.py results/ps-hp --reference results/ps-hp-3e-4
+    partial_slip_compare.py results/ps-penalty                   # a penalty run: the uniform figures
 
 E, nu and R are read from the run's input.yaml (the upper body's material and its contact
 arcs' radius), mu from its friction.
@@ -180,6 +192,55 @@ def discrete_tractions(folder):
             "breaks": np.array(breaks)}
 
 
+UNIFORM_POINTS = 6001  # of the uniform metric over [-1.5 a, 1.5 a]
+UNIFORM_EXTENT = 1.5
+
+
+def point_tractions(folder, body):
+    """The shear and pressure of the body's rows of contact.csv (a penalty run: its Gauss points)
+    as functions of s, linear between neighbouring points, nan beyond the outermost."""
+    n = read_nodes(folder, body)
+    s = n["s"]
+    line = lambda v: (lambda x: np.interp(x, s, v, left=np.nan, right=np.nan))  # noqa: E731
+    return {"shear": line(shear(n)), "pressure": line(n["pressure"]), "breaks": np.array([s[0], s[-1]])}
+
+
+def uniform_rule(a, n=UNIFORM_POINTS, extent=UNIFORM_EXTENT):
+    """Points and trapezoidal weights of n uniform points on [-extent a, extent a]."""
+    x = np.linspace(-extent * a, extent * a, n)
+    w = np.full(n, x[1] - x[0])
+    w[0] = w[-1] = 0.5 * (x[1] - x[0])
+    return x, w
+
+
+def relative_l2(x, w, measured, exact):
+    """sqrt(Σ w (measured - exact)² / Σ w exact²) over the points x with weights w, measured and
+    exact functions of s; refused where measured is not defined on all of them."""
+    m = measured(x)
+    if np.any(np.isnan(m)):
+        raise SystemExit(f"the run's contact points do not cover [{x[0]:.6g}, {x[-1]:.6g}]")
+    e = exact(x)
+    return float(np.sqrt(np.sum(w * (m - e) ** 2) / np.sum(w * e ** 2)))
+
+
+def uniform_errors(folder):
+    """The method's shear and pressure against Cattaneo–Mindlin's and Hertz's by one metric for
+    both methods (the module's docstring): shear_rel_L2_uniform, pressure_rel_L2_uniform, with
+    P, Q, a, c and the method."""
+    summary = json.load(open(os.path.join(folder, "summary.json")))
+    pair = summary["contact_pairs"][0]
+    mu, R_star, E_star, body, _ = read_case(folder)
+    P, Q = pair["normal_force"], abs(pair["tangential_force"])
+    a, c, _, p_exact, q_exact = closed_form(R_star, E_star, mu, P, Q)
+    penalty = pair["enforcement"] == "penalty"
+    t = point_tractions(folder, body) if penalty else discrete_tractions(folder)
+    x, w = uniform_rule(a)
+    return {"method": pair["enforcement"], "P": P, "Q": Q, "mu": mu, "a": a, "c": c, "dofs": summary["dofs"],
+            "shear_rel_L2_uniform": relative_l2(x, w, t["shear"], q_exact),
+            "pressure_rel_L2_uniform": relative_l2(x, w, t["pressure"], p_exact),
+            "uniform": {"from": float(x[0]), "to": float(x[-1]), "points": len(x)}}
+
+
 def measure(folder):
     summary = json.load(open(os.path.join(folder, "summary.json")))
     pair = summary["contact_pairs"][0]
@@ -267,7 +328,13 @@ def main():
     ap.add_argument("--reference", help="a run of the same case on a much finer discretization: the "
                     "errors against it as well (shear_rel_L2_reference, pressure_rel_L2_reference)")
     args = ap.parse_args()
+    uniform = uniform_errors(args.folder)
+    if uniform["method"] == "penalty":  # no multiplier nodes: the uniform figures alone
+        json.dump(uniform, sys.stdout, indent=1)
+        sys.stdout.write("\n")
+        return
     out, data = measure(args.folder)
+    out.update({k: uniform[k] for k in ("method", "shear_rel_L2_uniform", "pressure_rel_L2_uniform", "uniform")})
     if args.reference:
         reference, _ = measure(args.reference)
         out.update(against_reference(discrete_tractions(args.folder), discrete_tractions(args.reference)))

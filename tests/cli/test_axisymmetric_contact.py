@@ -107,7 +107,9 @@ def test_shrink_fit_pressure_is_lames(hpcontact, root, tmp_path):
     """examples/lame/shrink-fit.yaml: a hub of bore a = 9.99 and outer radius b = 20 on a shaft
     of radius c = 10 (E = 210000, ν = 0.3, u_z = 0 on both faces): the interface pressure of
     exact contact, at every multiplier node and from the stresses, within 1e-6 of Lamé's
-    (computed here; measured 2e-12)."""
+    (computed here; measured 2e-12). The hub's rows, which read the shaft's multipliers at their
+    feet, report the same force per unit area of the hub's own bore, p c / a, as the hub's
+    stresses do (measured 1e-12; before, p itself, 1e-3 off)."""
     s = run(hpcontact, os.path.join(root, "examples/lame/shrink-fit.yaml"), tmp_path / "sf")
     E, nu, a, b, c = 210000.0, 0.3, 9.99, 20.0, 10.0
     k = (1 + nu) / E
@@ -120,5 +122,11 @@ def test_shrink_fit_pressure_is_lames(hpcontact, root, tmp_path):
     for r in rows:
         assert abs(float(r["pressure"]) / p - 1) < 1e-6, (r["Y"], r["pressure"], p)
         assert abs(float(r["pressure_from_stress"]) / p - 1) < 1e-6
+    with open(tmp_path / "sf" / "contact.csv") as f:
+        bore = [r for r in csv.DictReader(f) if r["body"] == "hub"]
+    assert len(bore) >= 9
+    for r in bore:
+        assert float(r["pressure"]) == pytest.approx(p * c / a, rel=1e-6), r["Y"]
+        assert float(r["pressure_from_stress"]) == pytest.approx(p * c / a, rel=1e-6), r["Y"]
     # the total force on the shaft's face, 2π c h p, h = 4
     assert abs(s["contact"]["normal_force"]) == pytest.approx(2 * math.pi * c * 4 * p, rel=1e-6)

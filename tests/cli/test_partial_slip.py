@@ -174,3 +174,65 @@ def test_error_against_a_reference_run_of_other_edges():
     assert errors["shear_rel_L2_reference"] == pytest.approx(np.sqrt(diff2 / norm2), rel=1e-10)
     assert errors["pressure_rel_L2_reference"] == pytest.approx(np.sqrt(diff2 / norm2), rel=1e-10)
     assert compare.against_reference(ref, ref)["shear_rel_L2_reference"] < 1e-14
+
+
+def test_uniform_metric_closed_form():
+    """partial_slip_compare's one metric for both methods: the relative L2 difference on the
+    uniform trapezoidal rule over [-1.5 a, 1.5 a]. Against e(x) = sqrt(1 - x²/a²) (zero beyond a,
+    ∫ e² = 4a/3): itself gives 0, 1.1 e gives 0.1, e + d (d constant over the whole range,
+    ∫ d² = 3 a d²) gives 1.5 d; a measured traction undefined somewhere is refused."""
+    a = 0.2
+    x, w = compare.uniform_rule(a)
+    assert (x[0], x[-1], np.sum(w)) == pytest.approx((-1.5 * a, 1.5 * a, 3 * a), rel=1e-12)
+    e = lambda s: np.sqrt(np.clip(1 - (s / a) ** 2, 0, None))  # noqa: E731
+    assert compare.relative_l2(x, w, e, e) == 0
+    assert compare.relative_l2(x, w, lambda s: 1.1 * e(s), e) == pytest.approx(0.1, rel=1e-12)
+    assert compare.relative_l2(x, w, lambda s: e(s) + 0.02, e) == pytest.approx(0.03, rel=1e-5)
+    with pytest.raises(SystemExit):
+        compare.relative_l2(x, w, lambda s: np.where(s < a, e(s), np.nan), e)
+
+
+def _synthetic_run(folder, enforcement, s, factor):
+    """A run folder of two steel cylinders (R = 10, mu = 0.3; P = 700, Q = mu P / 2) whose pair's
+    rows at s carry `factor` times Cattaneo–Mindlin's shear and Hertz's pressure."""
+    spec = {"bodies": [{"name": n, "material": {"E": 210000.0, "nu": 0.3, "plane": "strain"},
+                        "curves": [{"arc": {"radius": 10.0}}]} for n in ("upper", "lower")],
+            "contact": [{"body": "upper", "obstacle": {"type": "body", "body": "lower"},
+                         "friction": {"law": "coulomb", "mu": 0.3}}],
+            "discretization": {"degree": 4}}
+    os.makedirs(folder)
+    with open(os.path.join(folder, "input.yaml"), "w") as f:
+        yaml.safe_dump(spec, f)
+    with open(os.path.join(folder, "summary.json"), "w") as f:
+        json.dump({"dofs": 1, "contact_pairs": [{"enforcement": enforcement, "normal_force": 700.0,
+                                                 "tangential_force": -105.0}]}, f)
+    mu, R_star, E_star, _, _ = compare.read_case(folder)
+    _, _, _, p, q = compare.closed_form(R_star, E_star, mu, 700.0, 105.0)
+    with open(os.path.join(folder, "contact.csv"), "w") as f:
+        f.write("pair,body,X,Y,x,y,s,pressure,traction,tangential_traction,state\n")
+        for si in s:
+            pi, qi = factor * p(si), factor * q(si)
+            f.write(f"0,upper,{si},0,{si},0,{si},{pi},{pi},{qi},{'slip' if pi > 0 else 'open'}\n")
+
+
+def test_uniform_metric_reads_both_methods_alike(tmp_path):
+    """The same tractions, 10 % above Cattaneo–Mindlin's shear and Hertz's pressure, written at a
+    penalty run's points (50 per edge, linear between them) and at an exact run's nodes (degree
+    4, Gauss–Lobatto, a polynomial on each edge; edges of a / 16, ending at ±a and ±c), give the
+    same figures: 0.1 each to 5e-4 (measured 2.1e-4 and 1.6e-5 off: what interpolating the
+    square-root ends costs)."""
+    mu, E_star, R_star = 0.3, 210000.0 / (2 * (1 - 0.3 ** 2)), 5.0
+    a, c, _, _, _ = compare.closed_form(R_star, E_star, mu, 700.0, 105.0)
+    grid = [g for g in np.linspace(-2 * a, 2 * a, 65) if min(abs(abs(g) - a), abs(abs(g) - c)) > 1e-3 * a]
+    ends = np.sort(np.concatenate([grid, [-a, -c, c, a]]))
+    penalty = np.concatenate([np.linspace(lo, hi, 50) for lo, hi in zip(ends, ends[1:])])
+    nodes = [ends[0]]
+    for lo, hi in zip(ends, ends[1:]):
+        nodes.extend(gauss_lobatto(4, lo, hi)[1:])
+    for method, s in (("penalty", np.unique(penalty)), ("augmented-lagrangian", np.array(nodes))):
+        folder = str(tmp_path / method)
+        _synthetic_run(folder, method, s, 1.1)
+        errors = compare.uniform_errors(folder)
+        assert errors["method"] == method
+        assert errors["shear_rel_L2_uniform"] == pytest.approx(0.1, abs=5e-4), method
+        assert errors["pressure_rel_L2_uniform"] == pytest.approx(0.1, abs=5e-4), method

@@ -42,27 +42,44 @@ def test_no_row_beyond_the_hub_is_in_contact(runs):
 def test_mid_length_pressure_is_lames_for_free_ends(runs):
     """Ten times as long as its wall is thick, the hub holds Lamé's shrink-fit pressure for
     cylinders free to extend (sigma_z = 0) at mid-length: p = E d (c² − b²) / (2 b c²) = 78.75
-    with E 210000, d 0.01, b 10, c 20, to 0.5 % (measured 0.06 % and 0.15 %: the two carriers'
-    pressures are on surfaces 0.1 % apart in radius)."""
+    with E 210000, d 0.01, b 10, c 20, to 0.5 % (measured 0.06 % and 0.15 %: each carrier's
+    pressure is per unit of its own surface, 0.1 % apart in radius and 3e-4 in axial stretch)."""
     lame = 210000 * 0.01 * (20 ** 2 - 10 ** 2) / (2 * 10 * 20 ** 2)
     for carrier, (_, rows) in runs.items():
         (mid,) = [float(r["pressure"]) for r in rows if r["body"] == carrier and float(r["Y"]) == 0]
         assert mid == pytest.approx(lame, rel=5e-3), carrier
 
 
+def _at_mid_length(rows, body):
+    """A body's row nearest z = 0: its radius X and pressure, and its surface's axial stretch
+    dz/dZ there (z odd in Z about the mirror: z/Z of the next row, to O(Z²))."""
+    own = sorted((r for r in rows if r["body"] == body), key=lambda r: float(r["Y"]))
+    first, nxt = own[0], own[1]
+    assert abs(float(first["Y"])) < 1e-2
+    return float(first["X"]), float(first["pressure"]), float(nxt["y"]) / float(nxt["Y"])
+
+
 def test_the_carriers_agree(runs):
-    """Either body may carry the multipliers: the ring force per unit meridian length at
-    mid-length, 2 pi r p, and the resultants' radial components are the same to 5e-4 (measured
-    3.0e-4 and 3.0e-4: the one-sided constraint is posed on the carrier's surface, which the
-    linear theory cannot tell from the other's at d / b = 1e-3, and the resultant takes in the
-    singular peak at the hub's end, which each carrier resolves on its own edges)."""
-    ring = {}
+    """Either body may carry the multipliers; each body's rows report the pressure per unit area
+    of its own undeformed surface (its stresses' reference): the shaft's, and the hub's, at
+    mid-length the same whichever carries, to 2e-6 (measured 9.3e-7 and 9.3e-7 at p = 8; before,
+    the other body's rows held the carrier's multiplier per unit of the carrier's surface, 7e-4
+    off). The two surfaces differ in radius (10 and 9.99) and stretch differently along the axis
+    (Poisson: +2.25e-4 and -0.75e-4), so the ring forces 2 pi R p per unit of each body's own
+    undeformed length differ by 3.0e-4 (what this test compared before); per unit deformed length,
+    2 pi R p / (dz/dZ), the two bodies' agree to 2e-6 in each run (measured 1e-6: the action and
+    reaction). The normal force, the resultant of the whole fit, agrees to 1e-5 (measured 6.8e-6
+    at p = 8, 2.3e-4 at p = 4, 2.1e-5 at p = 10: the shaft's multipliers resolve the hub's end
+    inside its elements, the hub's at its own last node)."""
+    for body in ("shaft", "hub"):
+        (_, p_shaft, _), (_, p_hub, _) = (_at_mid_length(runs[c][1], body) for c in ("shaft", "hub"))
+        assert p_shaft == pytest.approx(p_hub, rel=2e-6), body
     for carrier, (_, rows) in runs.items():
-        (row,) = [r for r in rows if r["body"] == carrier and float(r["Y"]) == 0]
-        ring[carrier] = 2 * math.pi * float(row["X"]) * float(row["pressure"])
-    assert ring["shaft"] == pytest.approx(ring["hub"], rel=5e-4)
+        (R_s, p_s, st_s), (R_h, p_h, st_h) = (_at_mid_length(rows, b) for b in ("shaft", "hub"))
+        assert abs(R_s * p_s / (R_h * p_h) - 1) == pytest.approx(3.0e-4, abs=2e-5), carrier
+        assert R_s * p_s / st_s == pytest.approx(R_h * p_h / st_h, rel=2e-6), carrier
     radial = {c: abs(s["contact_pairs"][0]["resultant"][0]) for c, (s, _) in runs.items()}
-    assert radial["shaft"] == pytest.approx(radial["hub"], rel=5e-4)
+    assert radial["shaft"] == pytest.approx(radial["hub"], rel=1e-5)
     for s, _ in runs.values():
         pair = s["contact_pairs"][0]
         # a ring pressure's resultant is radial: the normal force is its magnitude, positive
@@ -143,3 +160,23 @@ def test_a_ramp_is_refused_where_it_means_nothing(hpcontact, root, tmp_path):
     expect_refused(hpcontact, os.path.join(root, CASE), tmp_path / "out",
                    ["contact[0].enforcement=penalty", "contact[0].penalty=2.1e8", "contact[0].interference=ramp"],
                    "contact[0].interference", 2)
+
+
+def test_auto_lets_the_hub_carry_and_says_why(runs, hpcontact, root, tmp_path):
+    """contact[].carrier: auto on the input as written (the shaft named as the pair's body): the
+    hub, whose bore lies within the shaft's face, carries; summary.json's `carrier` says so and
+    why; contact.csv is the hub-carried run's, byte for byte. normal_direction, written for the
+    force on the shaft (-x), turns with the swap to the hub's (+x): the same positive normal
+    force as the hub-carried run's radial resultant."""
+    out = tmp_path / "auto"
+    r = hpcontact("run", os.path.join(root, CASE), "--out", out, "-q", "--set", "contact[0].carrier=auto",
+                  "--set", "contact[0].normal_direction=[-1, 0]")
+    assert r.returncode == 0, r.stderr
+    pair = json.loads((out / "summary.json").read_text())["contact_pairs"][0]
+    assert pair["body"] == "hub" and pair["obstacle"] == "body 'shaft'"
+    assert pair["carrier"].startswith("auto: body 'hub' carries: its contact edges lie within body 'shaft''s")
+    (hub_summary, hub_rows) = runs["hub"]
+    assert hub_summary["contact_pairs"][0]["carrier"] == "as written: body 'hub'"
+    assert csv_rows(out / "contact.csv") == hub_rows
+    assert pair["normal_force"] == pytest.approx(hub_summary["contact_pairs"][0]["resultant"][0], rel=1e-12)
+    assert pair["normal_force"] > 0

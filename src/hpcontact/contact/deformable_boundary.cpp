@@ -119,6 +119,13 @@ Vec2 DeformableBoundary::undeformed(int k, double t) const {
   return fem::edge_geometry(maps_[e.element], e.local_edge, t, nullptr, nullptr);
 }
 
+double DeformableBoundary::stretch(int k, double t) const {
+  const Edge& e = edges_[k];
+  double dS_dt = 0;
+  fem::edge_geometry(maps_[e.element], e.local_edge, t, nullptr, &dS_dt);
+  return tangent_at(k, t).norm() / dS_dt;
+}
+
 std::vector<DeformableBoundary::Vertex> DeformableBoundary::vertices() const {
   std::vector<Vertex> out;
   std::vector<int> count;

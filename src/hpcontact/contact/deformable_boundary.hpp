@@ -60,6 +60,10 @@ public:
   void evaluate(int k, double t, BoundaryPoint& bp) const;
   /// The same point undeformed.
   Vec2 undeformed(int k, double t) const;
+  /// ds/dS there: the deformed boundary's length per unit of its undeformed length (1 undeformed).
+  /// Where two boundaries touch, a length dS_a of one lies on dS_b = dS_a · stretch_a / stretch_b
+  /// of the other: what refers a traction per unit length of one to the other's.
+  double stretch(int k, double t) const;
   int n_edges() const { return static_cast<int>(edges_.size()); }
 
   /// A vertex of the deformed boundary: its position and the mean unit tangent of the edges

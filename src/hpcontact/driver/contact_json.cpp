@@ -68,6 +68,9 @@ nlohmann::json contact_json(const SolvedState& st, size_t k, const PressureCompa
   cj["obstacle"] = pair.other >= 0 ? "body '" + st.d->bodies[pair.other].name + "'"
                                    : pair.obstacle->describe();
   cj["enforcement"] = pair.constraints ? "augmented-lagrangian" : "penalty";
+  if (pair.other >= 0 && pair.constraints)
+    cj["carrier"] = pair.carrier_choice.empty() ? "as written: body '" + st.d->bodies[pair.body].name + "'"
+                                                : pair.carrier_choice;
   cj["surface"] = pair.frame->describe();
   if (c.half_width) cj["half_width"] = *c.half_width;
   cj["contact_length"] = c.contact_length;

@@ -21,6 +21,7 @@
 #include "hpcontact/driver/solution_warnings.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/core/stop.hpp"
+#include "hpcontact/model/contact_carrier.hpp"
 #include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/linear_solve.hpp"
 #include "hpcontact/model/reactions.hpp"
@@ -391,13 +392,17 @@ auto unless_stopped(const model::ProblemSpec& spec, const Solve& solve) {
 
 }  // namespace
 
-RunResult run_problem(const model::ProblemSpec& spec, const RunOptions& options) {
+RunResult run_problem(const model::ProblemSpec& input, const RunOptions& options) {
   using Clock = std::chrono::steady_clock;
   namespace fs = std::filesystem;
   const auto t0 = Clock::now();
   auto say = [&](const std::string& s) {
     if (options.progress) options.progress(s);
   };
+  // contact[].carrier: auto, chosen once on the input's mesh (an adaptive step keeps the choice)
+  const model::ProblemSpec spec = model::with_chosen_carriers(input);
+  for (const auto& pair : spec.contact)
+    if (!pair.carrier_choice.empty()) say(pair.where.str() + ": " + pair.carrier_choice);
 
   // Every file goes into the folder's staging folder (`stage`); the folder moves them in at
   // the end, the run's last-good/ alone if it failed.

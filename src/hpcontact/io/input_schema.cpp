@@ -395,6 +395,20 @@ const std::vector<KeySpec>& input_schema() {
               "rule, other otherwise. "
               "Against a rigid obstacle only other applies.",
        .choices = {"auto", "other", "mean"}},
+      {.path = "contact[].carrier", .type = T::choice, .default_yaml = "as-written",
+       .doc = "augmented-lagrangian between two bodies: which body carries the multipliers "
+              "(the one-sided constraint is posed on its surface). as-written: `body`. auto: "
+              "chosen by a rule symmetric in the two bodies, the first of these that tells them "
+              "apart: the body whose contact boundary lies within the other's (the larger share "
+              "of its contact length faces the other's boundary, by more than 1e-3: its "
+              "multipliers end where the other surface does, and a zone ending there ends at a "
+              "node — a shaft in a shorter hub: the hub); the finer contact mesh (more "
+              "multiplier nodes per unit length where they face each other, by more than 1 %); "
+              "the softer body (E' at the first contact edge); the body named first under "
+              "`bodies`. summary.json's `carrier` says which and why; `body`, the pair's rows "
+              "and its forces are then the chosen body's. Not with `compare`, whose closed forms "
+              "are measured along the obstacle as written.",
+       .choices = {"as-written", "auto"}},
       {.path = "contact[].interference", .type = T::choice, .default_yaml = "initial",
        .doc = "augmented-lagrangian: what an overlap of the bodies in the input (an interference "
               "fit: a shaft meshed larger than its bore) does. initial: it is there from the "
@@ -833,7 +847,9 @@ std::string input_schema_markdown() {
         "`load_steps`, `newton_iterations` (of the final solve; `newton_iterations_total` of "
         "every solve of the run), `shape_space` of the p-version (tensor or trunk), the first "
         "contact pair as `contact` and every pair "
-        "in `contact_pairs` (body, obstacle, `enforcement`, `resultant` [x, y] the integral of "
+        "in `contact_pairs` (body, obstacle, `enforcement`, `carrier` (exact contact between two "
+        "bodies: \"as written: body '...'\" or, with contact[].carrier: auto, \"auto: \" and the "
+        "rule that chose the body), `resultant` [x, y] the integral of "
         "the contact tractions on the body, `normal_force` its component along "
         "`normal_direction` (contact[].normal_direction, else the surface's normal where it is a "
         "line, else the resultant's own direction: positive in compression), `tangential_force` "
@@ -912,6 +928,12 @@ std::string input_schema_markdown() {
         "normal force per unit length along the pair's surface (summary.json `surface`: the "
         "traction times dS/ds, s the arc length along it; per unit length of the meridian for an "
         "axisymmetric body, whose ring force per unit meridian length is 2 pi r times it); "
+        "each row per unit of its own body's undeformed surface (length, and 2 pi r), as its "
+        "stresses are: the other body's rows of an exact pair read the carrier's multipliers at "
+        "their feet and refer them to their own surface, times (w dS) / (w_o dS_o) (w the "
+        "carrier's 2 pi r or thickness at the foot, dS / dS_o the two undeformed lengths that "
+        "touch, from the two surfaces' stretches), so each body's rows are the same whichever "
+        "body carries the multipliers (a press fit: to 1e-6, docs/theory.md); "
         "`pressure_from_stress` the same from the body's "
         "stresses, n_o·(P N) dS/ds (P N the traction per unit undeformed length, σ N in the "
         "linear theory; n_o the obstacle's outward normal at the deformed point, which the normal "
@@ -925,7 +947,7 @@ std::string input_schema_markdown() {
         "tangent τ = (`tangent_x`, `tangent_y`) = (n_y, −n_x), n the outward normal of what the "
         "point touches, the same way along the whole boundary: against a rigid obstacle its "
         "tangent ((1, 0) on a plane with normal (0, 1)); between two bodies the other body's "
-        "normal turned, so the two bodies' rows have opposite tangents and the same t_T (the "
+        "normal turned, so the two bodies' rows have opposite tangents and t_T of one sign (the "
         "row's body receives −t_T τ; zero where the point has no foot); `state` open, contact, "
         "stick or slip; `s` the position along the pair's surface (arc length); `traction` "
         "what the method carries per unit undeformed boundary length (the multiplier, or the "

@@ -711,6 +711,14 @@ class SpecBuilder {
         source_.fail(node["interference"], item_path + ".interference",
                      "ramp applies to augmented-lagrangian (exact) enforcement; the penalty "
                      "takes an overlap of the input as a penetration from the start");
+      c.auto_carrier = node["carrier"].Scalar() == "auto";
+      if (c.auto_carrier && (c.obstacle.kind != ObstacleKind::body || c.enforcement == Enforcement::penalty))
+        source_.fail(node["carrier"], item_path + ".carrier",
+                     "auto chooses which of two bodies carries the multipliers of exact "
+                     "(augmented-lagrangian) enforcement; " +
+                         std::string(c.obstacle.kind != ObstacleKind::body
+                                         ? "against a rigid obstacle the body carries them"
+                                         : "the penalty has none and treats both bodies alike"));
       if (node["penalty"]) c.penalty = number(node["penalty"]);
       else if (c.enforcement == Enforcement::penalty)
         source_.fail(node, item_path, "missing key 'penalty' (required by enforcement: penalty)");
@@ -722,6 +730,11 @@ class SpecBuilder {
         if (cmp["force"]) pc.force = number(cmp["force"]);
         if (cmp["reference"]) pc.reference = cmp["reference"].Scalar();
         pc.where = source_.where(cmp, item_path + ".compare");
+        if (c.auto_carrier)
+          source_.fail(node["carrier"], item_path + ".carrier",
+                       "auto may swap body and obstacle, and compare's closed forms and reference "
+                       "are measured along the obstacle as written: name the carrier as `body` "
+                       "(as-written)");
         c.compare = pc;
       }
       if (const YAML::Node fr = node["friction"]) {

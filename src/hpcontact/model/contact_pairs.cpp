@@ -173,6 +173,7 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
   for (const auto& cs : spec.contact) {
     ContactPair pair;
     const Body& body = body_named(d, cs.body, cs.where, &pair.body);
+    pair.carrier_choice = cs.carrier_choice;
     pair.edges = edges_named(body, cs.edge_sets, cs.where.str() + ".edges");
     require_off_axis(body, pair.edges, cs.where.str() + ".edges");
     std::vector<contact::ChainEdge> chain;

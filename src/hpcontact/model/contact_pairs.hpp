@@ -23,6 +23,9 @@ namespace hpcontact::model {
 /// the other body's points are evaluated against this body's boundary too (seed §3.6).
 struct ContactPair {
   int body = -1;
+  /// How `body` came to carry the multipliers of a two-body pair: empty as the input wrote it,
+  /// else "auto: " and the rule (ContactPairSpec::carrier_choice).
+  std::string carrier_choice;
   std::vector<contact::ContactPoint> points;
   std::vector<int> edges;  ///< mesh edges of the contact boundary, in order
   contact::ObstaclePtr obstacle;

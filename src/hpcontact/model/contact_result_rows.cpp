@@ -164,19 +164,22 @@ void add_node_rows(ContactResult& res, const Body& body, const ContactPair& pair
   }
 }
 
-/// A point of the other body: its state, undeformed position, and dS/ds of this body's boundary
-/// at its foot (0 without a foot).
+/// A point of the other body: its state and undeformed position.
 struct OtherPoint {
   contact::PointState state;
   Vec2 X;
-  double length_ratio = 0;
 };
 
 /// The other body's point cp of an exactly enforced pair: its gap against this body's deformed
-/// boundary and the multipliers and slips at its foot on it (the reaction, per unit length of
-/// this body's boundary). Its tangent is friction_tangent of this body's normal, opposite to the
-/// pair's: the other body receives +λ_T times the pair's tangent, i.e. −λ_T τ along its own, so
-/// t_T is λ_T on both sides.
+/// boundary and the multipliers and slips at its foot on it. The multipliers are per unit of this
+/// body's undeformed boundary (length × thickness, 2π R axisymmetric); the reaction they exert is
+/// referred to the other body's own, as its stresses and its ring force 2π R p are: × (w dS) /
+/// (w_o dS_o), the two lengths that touch in the deformed state (DeformableBoundary::stretch).
+/// Without it the two bodies' rows differ by their tangential strains and radii (a press fit's
+/// shaft and hub: 3e-4 and 1e-3), and by which body carries the multipliers.
+/// Its tangent is friction_tangent of this body's normal, opposite to the pair's: the other body
+/// receives +λ_T times the pair's tangent, i.e. −λ_T τ along its own, so t_T has the sign of λ_T
+/// on both sides.
 OtherPoint point_at_foot(const Discretization& d, const ContactPair& pair, const PairMultipliers& m,
                          const contact::ContactPoint& cp, const Eigen::VectorXd& u) {
   const Body &body = d.bodies[pair.body], &other = d.bodies[pair.other];
@@ -188,20 +191,19 @@ OtherPoint point_at_foot(const Discretization& d, const ContactPair& pair, const
   ps.gap = gap_at(other, *pair.boundary, cp.element, cp.local_edge, cp.t, u, &ps.x, &p.X);
   contact::BoundaryPoint foot;
   if (!pair.boundary->project(ps.x, foot)) return p;
-  ps.pressure = c.nodes.interpolate(foot.edge, foot.t, m.lambda);
+  const double area_ratio =  // w dS / (w_o dS_o)
+      body.out_of_plane().at(pair.boundary->undeformed(foot.edge, foot.t)) *
+      pair.other_boundary->stretch(cp.edge, cp.t) /
+      (other.out_of_plane().at(cp.X) * pair.boundary->stretch(foot.edge, foot.t));
+  ps.pressure = area_ratio * c.nodes.interpolate(foot.edge, foot.t, m.lambda);
   ps.normal = foot.normal;
   ps.tau = contact::friction_tangent(foot.normal);
-  ps.t_t = c.nodes.interpolate(foot.edge, foot.t, m.lambda_t);
+  ps.t_t = area_ratio * c.nodes.interpolate(foot.edge, foot.t, m.lambda_t);
   // The slips are relative: the other body's along its tangent (−τ) are this body's along τ,
   // read at the foot as the multipliers are.
   if (m.step_slips) ps.g_t = c.nodes.interpolate(foot.edge, foot.t, *m.step_slips);
   if (m.total_slips) ps.slip = c.nodes.interpolate(foot.edge, foot.t, *m.total_slips);
   ps.traction = ps.pressure * foot.normal - ps.t_t * ps.tau;
-  const auto& edge = body.mesh.edge(pair.edges[foot.edge]);
-  Vec2 N;
-  double dS_dt = 0;
-  const Vec2 Xb = fem::edge_geometry(body.maps[edge.quads[0]], edge.local_edge[0], foot.t, &N, &dS_dt);
-  p.length_ratio = length_ratio(*pair.frame, Xb, N);
   return p;
 }
 
@@ -216,7 +218,7 @@ void add_rows_at_feet(ContactResult& res, const Discretization& d, const Contact
     const SideValues sv = side_values(other, pair, *pair.boundary, *pair.frame, cp.element,
                                       cp.local_edge, cp.t, u);
     res.other_states.push_back(p.state);
-    other_side.add(p.X, sv.s, p.state.pressure * p.length_ratio, sv);
+    other_side.add(p.X, sv.s, p.state.pressure * sv.length_ratio, sv);
   }
 }
 

@@ -243,6 +243,12 @@ struct ContactPairSpec {
   /// in proportion to the factor on the prescribed displacements, closed at factor 1, instead of
   /// being there from the start (contact[].interference: ramp).
   bool ramp_interference = false;
+  /// Between two bodies, exact enforcement: the program chooses which body carries the
+  /// multipliers (contact[].carrier: auto; model/contact_carrier.hpp), instead of `body`.
+  bool auto_carrier = false;
+  /// How the carrier was chosen, for summary.json: empty as written, else "auto: " and the rule
+  /// that chose it (with_chosen_carriers, which then swaps body and obstacle where it says so).
+  std::string carrier_choice;
   /// eps_N [force/length³]: the penalty; with augmented_lagrangian the augmentation (0: the
   /// default E p² / h at each node), a parameter of convergence speed, not of the answer.
   double penalty = 0;

@@ -65,7 +65,8 @@ TEST(RigidObstacle, DiscAndHoleGaps) {
 // The boundary of the square [0, 2] × [0, 1] (one p = 2 element, all four edges), deformed by
 // the affine u = (0.1 + 0.05 x, −0.02 + 0.1 y) into the rectangle [0.1, 2.2] × [−0.02, 1.08],
 // shall give every point the signed distance to that rectangle's nearest side as its gap,
-// positive outside, with that side's outward normal — on each of the four local edges.
+// positive outside, with that side's outward normal — on each of the four local edges; and
+// each side's stretch ds/dS, 1.05 along x and 1.1 along y.
 TEST(DeformableBoundary, GapToADeformedSquareIsTheSignedDistance) {
   const mesh::Mesh m({Vec2(0, 0), Vec2(2, 0), Vec2(2, 1), Vec2(0, 1)}, {1, 2, 3, 4}, {{0, 1, 2, 3}},
                      {1}, {}, "square");
@@ -102,5 +103,12 @@ TEST(DeformableBoundary, GapToADeformedSquareIsTheSignedDistance) {
     Vec2 normal;
     EXPECT_NEAR(boundary.gap(pr.x, &normal, nullptr), pr.gap, 1e-13) << pr.x.transpose();
     EXPECT_LT((normal - pr.normal).norm(), 1e-13) << pr.x.transpose();
+  }
+  // ds/dS along each side: 1.05 along x (the horizontal sides), 1.1 along y, at any t
+  for (int k = 0; k < boundary.n_edges(); ++k) {
+    const Vec2 along = boundary.undeformed(k, 1) - boundary.undeformed(k, -1);
+    const double expected = std::abs(along.x()) > 0 ? 1.05 : 1.1;
+    for (double t : {-1.0, -0.3, 0.6})
+      EXPECT_NEAR(boundary.stretch(k, t), expected, 1e-14) << "edge " << k << " t " << t;
   }
 }
