@@ -240,6 +240,69 @@ py::dict contact_table(const Result& res) {
   return out;
 }
 
+/// path.csv's columns (the load path, a row per converged step) as numpy arrays.
+py::dict load_history_of(const Result& res) {
+  std::vector<int> step, iterations;
+  std::vector<double> displacement_factor, displacement_factor_x, displacement_factor_y, load_factor,
+      arc_length, resultant_x, resultant_y, monitor_ux, monitor_uy;
+  for (const auto& p : res.run->path) {
+    step.push_back(static_cast<int>(step.size()) + 1);
+    iterations.push_back(p.iterations);
+    displacement_factor.push_back(p.displacements);
+    displacement_factor_x.push_back(p.displacement_factors.x());
+    displacement_factor_y.push_back(p.displacement_factors.y());
+    load_factor.push_back(p.loads);
+    arc_length.push_back(p.arc_length);
+    resultant_x.push_back(p.resultant.x());
+    resultant_y.push_back(p.resultant.y());
+    monitor_ux.push_back(p.monitor.x());
+    monitor_uy.push_back(p.monitor.y());
+  }
+  py::dict out;
+  out["step"] = to_numpy(step);
+  out["displacement_factor"] = to_numpy(displacement_factor);
+  out["displacement_factor_x"] = to_numpy(displacement_factor_x);
+  out["displacement_factor_y"] = to_numpy(displacement_factor_y);
+  out["load_factor"] = to_numpy(load_factor);
+  out["iterations"] = to_numpy(iterations);
+  out["arc_length"] = to_numpy(arc_length);
+  out["resultant_x"] = to_numpy(resultant_x);
+  out["resultant_y"] = to_numpy(resultant_y);
+  out["monitor_ux"] = to_numpy(monitor_ux);
+  out["monitor_uy"] = to_numpy(monitor_uy);
+  return out;
+}
+
+/// contact_history.csv's columns (a row per converged step and pair) as numpy arrays.
+py::dict contact_history_of(const Result& res) {
+  const auto& rows = res.run->contact_history;
+  auto column = [&](auto field) {
+    std::vector<std::decay_t<decltype(field(rows.front()))>> v;
+    for (const auto& r : rows) v.push_back(field(r));
+    return v;
+  };
+  py::dict out;
+  if (rows.empty()) return out;
+  using Row = driver::ContactHistoryRow;
+  out["step"] = to_numpy(column([](const Row& r) { return r.step; }));
+  out["pair"] = to_numpy(column([](const Row& r) { return r.pair; }));
+  out["body"] = py::cast(column([](const Row& r) { return r.body; }));
+  out["displacement_factor"] = to_numpy(column([](const Row& r) { return r.displacement_factor; }));
+  out["load_factor"] = to_numpy(column([](const Row& r) { return r.load_factor; }));
+  out["resultant_x"] = to_numpy(column([](const Row& r) { return r.resultant.x(); }));
+  out["resultant_y"] = to_numpy(column([](const Row& r) { return r.resultant.y(); }));
+  out["normal_force"] = to_numpy(column([](const Row& r) { return r.normal_force; }));
+  out["tangential_force"] = to_numpy(column([](const Row& r) { return r.tangential_force; }));
+  out["contact_length"] = to_numpy(column([](const Row& r) { return r.contact_length; }));
+  out["pressure_max"] = to_numpy(column([](const Row& r) { return r.pressure_max; }));
+  out["traction_max"] = to_numpy(column([](const Row& r) { return r.traction_max; }));
+  out["max_penetration"] = to_numpy(column([](const Row& r) { return r.max_penetration; }));
+  out["contact_points"] = to_numpy(column([](const Row& r) { return r.contact_points; }));
+  out["stick_points"] = to_numpy(column([](const Row& r) { return r.stick_points; }));
+  out["slip_points"] = to_numpy(column([](const Row& r) { return r.slip_points; }));
+  return out;
+}
+
 /// The reactions of the result's last converged step (reactions) and of every step
 /// (reaction_history), as numpy arrays; the rows' meaning is summary.json's `reactions`.
 py::dict reactions_of(const Result& res, bool history) {
@@ -469,6 +532,18 @@ on each pair's body, equilibrium_residual the largest relative imbalance of a bo
           R"(The same at every converged load step (the rows of path.csv; one for a linear solve,
 the final mesh's last step for rp and hp): force (n_steps, n_supports, 2), moment (n_steps,
 n_supports), pair_force (n_steps, n_pairs, 2), pair_moment, equilibrium_residual (n_steps,).)")
+      .def_property_readonly(
+          "load_history", &load_history_of,
+          R"(The load path, path.csv's rows as numpy arrays (one entry per converged load step;
+rp and hp: the final mesh's solve): step, displacement_factor (y's), displacement_factor_x,
+displacement_factor_y, load_factor, iterations, arc_length, resultant_x and resultant_y (the
+first contact pair's), monitor_ux and monitor_uy (zero without solver.monitor).)")
+      .def_property_readonly(
+          "contact_history", &contact_history_of,
+          R"(contact_history.csv's rows as numpy arrays (one entry per converged step and contact
+pair; an empty dict without contact or for rp and hp): step, pair, body (a list), the factors,
+resultant_x, resultant_y, normal_force, tangential_force, contact_length, pressure_max,
+traction_max, max_penetration, contact_points, stick_points, slip_points.)")
       .def("contact", &contact_table,
            R"(The interface curve: contact.csv's columns as numpy arrays, one entry per contact
 Gauss point of every pair (the "pair" column says which): pair, X, Y (undeformed), x, y

@@ -547,6 +547,7 @@ RunResult run_problem(const model::ProblemSpec& input, const RunOptions& options
     // the load path of the final mesh's solve (its first pair's resultant: no contact history,
     // no reactions per step)
     write_path(last->spec, last->solution, {}, {}, out_dir);
+    result.path = last->solution.path;
     if (!out_dir.empty())
       post::write_text_file((fs::path(out_dir) / "mesh.yaml").string(), mesh_yaml(last->spec));
     s.converged = converged;
@@ -691,6 +692,8 @@ RunResult run_problem(const model::ProblemSpec& input, const RunOptions& options
       throw NumericalError(spec.file + ": the solver stopped: " + sol.message + kept);
     }
     write_path(spec, sol, history, result.reaction_history, stage);
+    result.path = sol.path;
+    result.contact_history = history;
     st.u = sol.u;
     st.contact = std::move(sol.contact);
     st.pairs = std::move(sol.pairs);

@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include "hpcontact/driver/contact_compare.hpp"
+#include "hpcontact/driver/contact_history.hpp"
 #include "hpcontact/driver/contact_table.hpp"
 #include "hpcontact/driver/output_folder.hpp"
 #include "hpcontact/model/discretization.hpp"
@@ -39,6 +40,10 @@ struct RunResult {
   /// The reactions at the supports and pairs and the bodies' balance at every converged load
   /// step (a linear solve: its one), the last the result's (summary.json `reactions`).
   std::vector<model::Reactions> reaction_history;
+  /// The load path (path.csv's rows: a point per converged step; rp and hp: the final mesh's).
+  std::vector<model::NonlinearSolution::PathPoint> path;
+  /// contact_history.csv's rows: per converged step, per pair (none for rp and hp).
+  std::vector<ContactHistoryRow> contact_history;
 };
 
 /// The files a run writes into its output folder: summary.json (the marker), input.yaml,
