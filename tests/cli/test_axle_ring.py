@@ -67,6 +67,18 @@ def test_inverting_element_is_reported_and_last_step_kept(hpcontact, root, tmp_p
     assert os.path.exists(tmp_path / "last-good" / "solution.vtu")
 
 
+def test_a_failed_run_says_its_files_went_to_last_good(hpcontact, root, tmp_path):
+    """The same run with progress lines: the files written for the last converged state are
+    named with last-good/ in front, never as if they were the run's results."""
+    r = hpcontact("run", os.path.join(root, "tests", "cli", "data", "crushed-block.yaml"),
+                  "--out", tmp_path)
+    assert r.returncode == 1
+    wrote = [line.strip() for line in r.stdout.splitlines() if line.strip().startswith("wrote ")]
+    assert "wrote last-good/summary.json (the last converged state)" in wrote, r.stdout
+    assert "wrote last-good/solution.vtu (the last converged state)" in wrote, r.stdout
+    assert not any(line.startswith(("wrote summary.json", "wrote solution.vtu")) for line in wrote)
+
+
 @pytest.mark.parametrize("setting, message", [
     ("bodies[0].material.plane=stress", "neo-hooke is implemented in plane strain and axisymmetry only"),
     ("bodies[0].material.model=mooney", "mooney"),

@@ -180,6 +180,12 @@ void warn(const std::string& warning, const RunOptions& options, post::Summary& 
   if (options.warning) options.warning(warning);
 }
 
+/// A file of the output folder as a progress line names it: with last-good/ in front when it
+/// went there (a failed run's last converged state), so that it is not taken for a result.
+std::string shown_as(const std::filesystem::path& folder, const std::string& file) {
+  return folder.filename() == "last-good" ? "last-good/" + file + " (the last converged state)" : file;
+}
+
 void post_process(const model::ProblemSpec& spec, const SolvedState& st, const std::string& out_dir,
                   const RunOptions& options, const Comparisons& comparisons, RunResult& r) {
   namespace fs = std::filesystem;
@@ -228,7 +234,7 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
     post::write_text_file((out / "pressure.csv").string(), pressure_csv(*r.pressure_curve));
   if (spec.output.vtu) {
     post::write_vtu((out / "solution.vtu").string(), disc, st.u, spec.output.vtu_subdivisions);
-    say("wrote solution.vtu");
+    say("wrote " + shown_as(out, "solution.vtu"));
     if (!st.contact.empty()) post::write_contact_vtu((out / "contact.vtu").string(), st.pairs, st.contact);
   }
 }
@@ -429,7 +435,7 @@ RunResult run_problem(const model::ProblemSpec& input, const RunOptions& options
     s.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
     if (out_dir.empty()) return;
     post::write_summary((fs::path(out_dir) / "summary.json").string(), s);
-    say("wrote summary.json");
+    say("wrote " + shown_as(fs::path(out_dir), "summary.json"));
   };
 
   // The comparisons' preconditions are checked before anything is solved (on the input's mesh).
