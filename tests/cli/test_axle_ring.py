@@ -49,14 +49,14 @@ def test_refined_meshes_agree(hpcontact, root, tmp_path):
 def test_inverting_element_is_reported_and_last_step_kept(hpcontact, root, tmp_path):
     """A block pressed beyond its own height (tests/cli/data/crushed-block.yaml): the load step
     that moves the top below the bottom inverts the element. The run fails (exit 1) naming the
-    load step, the element, its body and det F; no summary.json in the output folder, the last
+    load step (the input's numbering), the element, its body and det F; no summary.json in the output folder, the last
     converged step in last-good/ marked converged: false with its load factor (0.75: the steps
     0.5 and 1 with one halving allowed reach 0.75, then the step of 0.25 to 1 inverts, and no
     shorter step is allowed: the load cannot be carried beyond 0.75)."""
     r = hpcontact("run", os.path.join(root, "tests", "cli", "data", "crushed-block.yaml"),
                   "--out", tmp_path, "-q")
     assert r.returncode == 1
-    assert "load step 3 (factor 1)" in r.stderr, r.stderr
+    assert "load step 2 (factor 1)" in r.stderr, r.stderr  # the input's step 2, after its part to 0.75
     assert "the load cannot be carried beyond the last converged step (factor 0.75)" in r.stderr
     assert "element 7 of body 'block' inverts: det F = -" in r.stderr, r.stderr
     assert not os.path.exists(tmp_path / "summary.json")
@@ -77,6 +77,19 @@ def test_a_failed_run_says_its_files_went_to_last_good(hpcontact, root, tmp_path
     assert "wrote last-good/summary.json (the last converged state)" in wrote, r.stdout
     assert "wrote last-good/solution.vtu (the last converged state)" in wrote, r.stdout
     assert not any(line.startswith(("wrote summary.json", "wrote solution.vtu")) for line in wrote)
+
+
+def test_a_cut_step_keeps_its_number(hpcontact, root, tmp_path):
+    """Load steps are the input's: the second of two, cut once, converges a part of itself
+    (to 0.75) and fails beyond it — both reported as load step 2, no load step 3 of 2."""
+    r = hpcontact("run", os.path.join(root, "tests", "cli", "data", "crushed-block.yaml"),
+                  "--out", tmp_path)
+    assert r.returncode == 1
+    lines = [line.strip() for line in r.stdout.splitlines()]
+    assert any(line.startswith("load step 1: factor 0.5") for line in lines), r.stdout
+    assert any(line.startswith("load step 2 (a part of it, cut): factor 0.75") for line in lines), r.stdout
+    assert "load step 3" not in r.stdout + r.stderr
+    assert "load step 2 (factor 1) failed after 1 cuts" in r.stderr
 
 
 @pytest.mark.parametrize("setting, message", [

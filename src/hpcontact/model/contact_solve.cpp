@@ -164,8 +164,9 @@ private:
   StepAttempt attempt_step(double s, const FactorsAt& factors, const ForceTarget& force,
                            const Eigen::VectorXd* start = nullptr);
   std::optional<StepAttempt> continue_to(double from, double next, const FactorsAt& factors,
-                                         const ForceTarget& force);
-  void accept_step(StepAttempt attempt);
+                                         const ForceTarget& force, const std::string& name);
+  int input_steps_before_ = 0;  ///< the input's load steps of the stages already solved
+  void accept_step(StepAttempt attempt, const std::string& name);
   bool arc_length_path();
   bool accept_arc_length_step(const Eigen::VectorXd& x, const solve::ArcLengthStep& st);
   double factor_for(double share) const;
@@ -350,13 +351,25 @@ bool LoadPath::advance(double from, double target, int steps, const FactorsAt& f
   double lambda = from, step = nominal;
   int cuts = 0, in_a_row = 0;
   std::vector<double> failed_before;  // the residuals of the last attempt that failed
+  // The input's numbering: a step keeps its number when it is cut (its parts say so), and the
+  // steps of later stages follow those of earlier ones.
+  auto input_step = [&](double next) {
+    return input_steps_before_ + std::max(1, static_cast<int>(std::ceil((next - from) / nominal - 1e-9)));
+  };
+  auto step_name = [&](double next) {
+    std::string name = "load step " + std::to_string(input_step(next));
+    const bool whole = std::abs(std::abs(next - lambda) - std::abs(nominal)) <= 1e-9 * std::abs(nominal);
+    if (!whole) name += " (a part of it, cut)";
+    return name;
+  };
   while (std::abs(target - lambda) > 1e-14 * std::max(1.0, std::abs(target))) {
     const double next = std::abs(target - lambda) < std::abs(step) * (1 + 1e-12) ? target : lambda + step;
     StepAttempt attempt = attempt_step(next, factors, force);
     const solve::SolveReport& rep = attempt.report;
     if (rep.ok()) {
+      const std::string name = step_name(next);
       lambda = next;
-      accept_step(std::move(attempt));
+      accept_step(std::move(attempt), name);
       if (++in_a_row >= 2 && cuts > 0) {
         --cuts;
         step *= 2;
@@ -367,14 +380,15 @@ bool LoadPath::advance(double from, double target, int steps, const FactorsAt& f
     in_a_row = 0;
     const std::string factors_now = attempt.factors.describe();
     if (rep.status == solve::SolveStatus::stopped) {  // asked to stop: no cuts, keep what converged
-      sol_.message = "load step " + std::to_string(sol_.load_steps + 1) + " (" + factors_now + "): " + rep.message;
+      sol_.message = step_name(next) + " (" + factors_now + "): " + rep.message;
       return false;
     }
     // With friction the load path is part of the problem: continuation first, cuts last.
     if (cuts == 0 && system_.has_friction())
-      if (auto reached = continue_to(lambda, next, factors, force)) {
+      if (auto reached = continue_to(lambda, next, factors, force, step_name(next))) {
+        const std::string name = step_name(next);
         lambda = next;
-        accept_step(std::move(*reached));
+        accept_step(std::move(*reached), name);
         continue;
       }
     const std::string why = newton_failure_reason(rep, d_, pairs_, system_);
@@ -393,7 +407,7 @@ bool LoadPath::advance(double from, double target, int steps, const FactorsAt& f
     if (cuts == ss_.max_cuts || unchanged ||
         (rep.status == solve::SolveStatus::singular && structural && !held_before)) {
       const bool at_capacity = cuts == ss_.max_cuts && cuts > 0 && lambda != from;
-      sol_.message = failed_step_message({sol_.load_steps + 1, factors_now, cuts, ss_.max_cuts, why,
+      sol_.message = failed_step_message({input_step(next), factors_now, cuts, ss_.max_cuts, why,
                                           unchanged, at_capacity, converged_.describe(),
                                           at_capacity ? system_.capacity_used() : std::string(),
                                           rep.residual_history});
@@ -403,6 +417,7 @@ bool LoadPath::advance(double from, double target, int steps, const FactorsAt& f
     step *= 0.5;
     say("load step did not converge (" + why + "): cutting the step to " + std::to_string(step));
   }
+  input_steps_before_ += std::max(1, steps);
   return true;
 }
 
@@ -419,7 +434,8 @@ constexpr int kContinuationParts[] = {2, 4};
 // nothing.
 std::optional<LoadPath::StepAttempt> LoadPath::continue_to(double from, double next,
                                                            const FactorsAt& factors,
-                                                           const ForceTarget& force) {
+                                                           const ForceTarget& force,
+                                                           const std::string& name) {
   for (const int parts : kContinuationParts) {
     // parts = 2^k count as k cuts: solver.max_cuts bounds how finely a step is divided either way
     if (parts > (1 << std::min(ss_.max_cuts, 20))) break;
@@ -435,7 +451,7 @@ std::optional<LoadPath::StepAttempt> LoadPath::continue_to(double from, double n
       last = std::move(a);
     }
     if (last) {
-      say("load step " + std::to_string(sol_.load_steps + 1) + " reached by continuation in " +
+      say(name + " reached by continuation in " +
           std::to_string(parts) + " parts from the last converged state (the friction's history "
           "kept: no shorter step committed)");
       return last;
@@ -469,15 +485,16 @@ LoadPath::StepAttempt LoadPath::attempt_step(double s, const FactorsAt& factors,
   return a;
 }
 
-/// A converged load step: its state committed (friction's history) and recorded.
-void LoadPath::accept_step(StepAttempt attempt) {
+/// A converged load step: its state committed (friction's history) and recorded; `name` is how
+/// the progress calls it (the input's numbering).
+void LoadPath::accept_step(StepAttempt attempt, const std::string& name) {
   x_ = std::move(attempt.x);
   converged_ = attempt.factors;
   system_.commit(x_);
   record(converged_, attempt.report.iterations, 0.0);
   ++sol_.load_steps;
   std::ostringstream os;
-  os << "load step " << sol_.load_steps << ": " << converged_.describe() << ", "
+  os << name << ": " << converged_.describe() << ", "
      << attempt.report.iterations << " Newton iterations, |R| "
      << attempt.report.residual_history.front() << " -> " << attempt.report.residual_history.back();
   say(os.str());
