@@ -459,8 +459,8 @@ MUTATIONS = [
              ["ContactTangent.SeedFiniteDifferenceTangentEqualsAnalyticWithMultipliers",
               "ContactTangent.FiniteDifferenceTangentGivesTheSameSolution"]),
     Mutation("cuts-counted-in-a-row", "model", S + "model/contact_solve.cpp",
-             "      accept_step(std::move(attempt));",
-             "      accept_step(std::move(attempt)), cuts = 0;",
+             "      accept_step(std::move(attempt), name);",
+             "      accept_step(std::move(attempt), name), cuts = 0;",
              "a converged step resets the count of halvings: a load beyond what can be carried is "
              "approached by ever shorter steps",
              ["cli:tests/cli/test_friction_driving.py::test_a_shear_at_the_friction_capacity_stops_at_the_shortest_step"]),
