@@ -131,7 +131,7 @@ ErrorEstimate estimate_error(const Solved& coarse, const Solved& enriched) {
   return est;
 }
 
-std::optional<ErrorPeak> traction_error_peak(const Solved& coarse, const Solved& enriched, bool shear) {
+std::optional<ErrorPeak> pressure_error_peak(const Solved& coarse, const Solved& enriched) {
   struct Edge {
     double diff2 = 0, length = 0, peak = -1;
     Vec2 X = Vec2::Zero();
@@ -139,9 +139,9 @@ std::optional<ErrorPeak> traction_error_peak(const Solved& coarse, const Solved&
   std::map<std::pair<size_t, size_t>, Edge> edges;
   double total = 0;
   for_each_traction_point(coarse, enriched, [&](size_t k, size_t e, const Vec2& X, double w, double ta,
-                                                double tb, double sa, double sb, bool) {
+                                                double tb, double, double, bool) {
     Edge& edge = edges[{k, e}];
-    const double d2 = shear ? (sa - sb) * (sa - sb) : (ta - tb) * (ta - tb);
+    const double d2 = (ta - tb) * (ta - tb);
     edge.diff2 += w * d2;
     edge.length += w;
     total += w * d2;

@@ -43,10 +43,9 @@ model::ProblemSpec with_degrees_raised(const model::ProblemSpec& spec);
 /// The estimate of `coarse` from `enriched`, a solve of the same mesh with higher degrees.
 ErrorEstimate estimate_error(const Solved& coarse, const Solved& enriched);
 
-/// Where the estimated error of the contact pressure (or, with `shear`, of the tangential
-/// traction) concentrates: the contact edge holding the largest share of ‖t − t⁺‖²
-/// (estimate_error's integral, away from singular points) and on it the point where (t − t⁺)² is
-/// largest, undeformed.
+/// Where the estimated error of the contact pressure concentrates: the contact edge holding the
+/// largest share of ‖t − t⁺‖² (estimate_error's integral, away from singular points) and on it
+/// the point where (t − t⁺)² is largest, undeformed.
 struct ErrorPeak {
   int body = -1;
   Vec2 X = Vec2::Zero();
@@ -54,7 +53,7 @@ struct ErrorPeak {
   double edge_length = 0;  ///< the edge's undeformed length
   std::array<Vec2, 2> edge_ends;  ///< the edge's vertices, undeformed
 };
-std::optional<ErrorPeak> traction_error_peak(const Solved& coarse, const Solved& enriched, bool shear = false);
+std::optional<ErrorPeak> pressure_error_peak(const Solved& coarse, const Solved& enriched);
 
 /// Per body, per element: the strain energy of the part of `field` (over `enriched`'s dofs) that
 /// the modes `coarse`'s element lacks carry — on one mesh whose degrees `enriched` raised, what

@@ -112,23 +112,21 @@ std::string limit_message(const HpOutcome& out, const HpOptions& options, const 
   return os.str();
 }
 
-/// A contact edge holding at least this share of the estimated error of the pressure (or of the
-/// shear) is where the next centre goes, when a zone end (a stick–slip point) on it has none.
+/// A contact edge holding at least this share of the estimated error of the pressure is where the
+/// next centre goes, when a zone end on it has none.
 constexpr double kErrorPeakShare = 0.5;
 
-/// With a tolerance: when one contact edge holds most of the estimated error of the pressure
-/// (`kind` contact; of the shear: `kind` stick_slip) and a zone end (a stick–slip point, a
-/// memory point) of the enriched solve lies within its length of the error's peak there with no
+/// With a tolerance: when one contact edge holds most of the estimated error of the pressure and
+/// a zone end of the enriched solve lies within its length of the error's peak there with no
 /// centre following it (two ends nearest to one node of a coarse input mesh: the node serves
 /// one), a centre for it: the nearest vertex of the mesh the steps are built from (`base`'s)
 /// that is no centre yet and can move onto it, followed from then on as the others. Whether one
 /// was added.
 bool add_unfollowed_zone_end(const Solved& base, const Solved& coarse, const Solved& enriched,
-                             const std::vector<ZoneEnd>& ends, ZoneEnd::Kind kind,
-                             std::vector<Centre>& centres) {
-  const auto peak = traction_error_peak(coarse, enriched, kind == ZoneEnd::Kind::stick_slip);
+                             const std::vector<ZoneEnd>& ends, std::vector<Centre>& centres) {
+  const auto peak = pressure_error_peak(coarse, enriched);
   if (!peak || peak->share < kErrorPeakShare) return false;
-  const ZoneEnd* end = nearest_end(ends, peak->body, kind, peak->X);
+  const ZoneEnd* end = nearest_end(ends, peak->body, ZoneEnd::Kind::contact, peak->X);
   if (!end || (end->X - peak->X).norm() > peak->edge_length) return false;
   for (const Centre& c : centres)  // followed already: a centre at it, or ending the edge
     if (c.body == peak->body &&
@@ -156,7 +154,7 @@ bool add_unfollowed_zone_end(const Solved& base, const Solved& coarse, const Sol
     } catch (const AdaptError&) {
       continue;  // an end of an edge set, a corner: it cannot move
     }
-    centres.push_back({peak->body, id, end->X, kind});
+    centres.push_back({peak->body, id, end->X, ZoneEnd::Kind::contact});
     return true;
   }
   return false;
@@ -250,8 +248,6 @@ std::vector<Vec2> follow_new_points(model::ProblemSpec& base, std::vector<Centre
   return followed;
 }
 
-}  // namespace
-
 /// What the steps after the first follow on a solve: its zone ends (not those at singular
 /// points) and, with stick_slip, its stick–slip points and memory points.
 std::vector<ZoneEnd> followed_points(const Solved& s, const HpOptions& options) {
@@ -260,6 +256,8 @@ std::vector<ZoneEnd> followed_points(const Solved& s, const HpOptions& options) 
     for (const ZoneEnd& m : memory_points_of(s)) ends.push_back(m);
   return ends;
 }
+
+}  // namespace
 
 HpOptions hp_options(const model::AdaptSpec& adapt) {
   HpOptions o;
@@ -421,17 +419,11 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       }
       // The next mesh is centred on the zone ends of the better solve.
       const auto ends_plus = followed_points(*enriched, options);
-      for (const auto kind : {ZoneEnd::Kind::contact, ZoneEnd::Kind::stick_slip}) {
-        const double error = kind == ZoneEnd::Kind::contact ? rec.estimate.pressure : rec.estimate.shear;
-        if (!(error > options.tolerance) || !base_solved ||
-            !add_unfollowed_zone_end(*base_solved, *s, *enriched, ends_plus, kind, centres))
-          continue;
+      if (base_solved && add_unfollowed_zone_end(*base_solved, *s, *enriched, ends_plus, centres)) {
         std::ostringstream os;
         os.precision(6);
-        os << "hp step " << step << ": the estimated error of the "
-           << (kind == ZoneEnd::Kind::contact ? "pressure" : "shear") << " concentrates at the "
-           << kind_name(kind) << " (" << centres.back().at.x() << ", " << centres.back().at.y()
-           << "), which no refinement follows: refining towards it too";
+        os << "hp step " << step << ": the estimated error concentrates at the zone end (" << centres.back().at.x()
+           << ", " << centres.back().at.y() << "), which no refinement follows: refining towards it too";
         say(os.str());
       }
       for (Centre& c : centres)

@@ -384,13 +384,14 @@ bool LoadPath::advance(double from, double target, int steps, const FactorsAt& f
       return false;
     }
     // With friction the load path is part of the problem: continuation first, cuts last.
-    if (cuts == 0 && system_.has_friction())
-      if (auto reached = continue_to(lambda, next, factors, force, step_name(next))) {
-        const std::string name = step_name(next);
+    if (cuts == 0 && system_.has_friction()) {
+      const std::string name = step_name(next);
+      if (auto reached = continue_to(lambda, next, factors, force, name)) {
         lambda = next;
         accept_step(std::move(*reached), name);
         continue;
       }
+    }
     const std::string why = newton_failure_reason(rep, d_, pairs_, system_);
     // A tangent made singular by a body that only contact holds (its constraints leave a
     // rigid motion free) stays singular on a shorter step when nothing has converged yet (no
@@ -425,10 +426,11 @@ bool LoadPath::advance(double from, double target, int steps, const FactorsAt& f
 constexpr int kContinuationParts[] = {2, 4};
 
 // With friction, a load step whose Newton fails from the last converged state is reached by
-// continuation before it is cut (within solver.max_cuts: 2^k parts count as k cuts): the path parameters between `from` and `next` in equal parts,
-// each solved from the same committed state (the friction's history does not advance: every
-// part is the same incremental problem at a smaller load) and each solution the next part's
-// first guess; only the solution at `next` is kept and committed. A cut commits its shorter
+// continuation before it is cut (within solver.max_cuts: 2^k parts count as k cuts): the path
+// parameters between `from` and `next` in equal parts, each solved from the same committed state
+// (the friction's history does not advance: every part is the same incremental problem at a
+// smaller load) and each solution the next part's first guess; only the solution at `next` is
+// kept and committed. A cut commits its shorter
 // steps — another load path, which friction remembers, so that two solves of one problem (an
 // adaptive loop's mesh and its estimate) would answer two problems. The attempt at `next`, or
 // nothing.
