@@ -28,7 +28,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 227 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
+--list prints them. A run of all 229 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp (but for its adjoint and its load-step cuts) and contact/penalty.cpp,
@@ -368,6 +368,16 @@ MUTATIONS = [
              "  auto ends = without_ends_at_singular_points(adapt_targets(s, options.stick_slip), singular_ends_of(s));",
              "an hp step whose coarse elements lose the stick-slip point ends the loop",
              ["cli:tests/cli/test_two_bars.py::test_coulomb_hp_step_that_loses_the_point_goes_on"]),
+    Mutation("hp-unbuilt-refinement-fails", "adapt", S + "adapt/zone_resolution.cpp",
+             "        r.left_out.push_back(os.str());",
+             "        throw;",
+             "a zone-resolution refinement that cannot be built ends the hp loop again",
+             ["cli:tests/cli/test_hp_left_out.py::test_a_refinement_that_cannot_be_built_is_left_out_and_the_loop_goes_on"]),
+    Mutation("hp-left-out-unsaid", "adapt", S + "adapt/hp.cpp",
+             "            rec.left_out = std::move(built.left_out);",
+             "            (void)built.left_out;",
+             "an hp step's refinements left out are not recorded in summary.json",
+             ["cli:tests/cli/test_hp_left_out.py::test_a_refinement_that_cannot_be_built_is_left_out_and_the_loop_goes_on"]),
     Mutation("other-rows-no-slip", "model", S + "model/contact_result_rows.cpp",
              "if (m.total_slips) ps.slip = c.nodes.interpolate(foot.edge, foot.t, *m.total_slips);",
              "(void)m.total_slips;",

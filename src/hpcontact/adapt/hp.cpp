@@ -56,20 +56,89 @@ void add_singular_centres(const Solved& s, const std::vector<ZoneEnd>& ends, std
   }
 }
 
+/// A step's mesh, and what of it could not be built: a centre that cannot move onto its point
+/// (stays where it is, refined around as it is) or whose next layer would make an invalid
+/// element (keeps the layers it has) — one rule for every centre, so that no such failure of the
+/// refinement ends the loop; what was left out is said (`left_out`, one entry per centre).
+struct StepMesh {
+  model::ProblemSpec spec;
+  std::vector<std::string> left_out;
+  std::vector<bool> complete;  ///< per centre: moved and refined `steps` times
+};
+
+std::string point_text(const Vec2& X) {
+  std::ostringstream os;
+  os.precision(6);
+  os << "(" << X.x() << ", " << X.y() << ")";
+  return os.str();
+}
+
+/// The node of `s`'s body `body` within `within` of X that cannot move (an end of an edge set, a
+/// corner, a node on a mirror), or -1.
+int fixed_node_at(const Solved& s, int body, const Vec2& X, double within) {
+  const auto& mesh = s.discretization.bodies[body].mesh;
+  for (int v = 0; v < mesh.n_nodes(); ++v) {
+    if ((mesh.node(v) - X).norm() > within) continue;
+    try {
+      (void)BoundaryTrack(s.spec, body, mesh.node_id(v));
+    } catch (const AdaptError&) {
+      return mesh.node_id(v);
+    }
+  }
+  return -1;
+}
+
+/// The centre for the point `n.end`: its nearest movable node, or — where the point lies on a
+/// node that cannot move (a stick–slip point at the mirror; within 1e-3 of the movable node's
+/// track) — that node, refined around where it is; none twice on one node.
+void add_centre(const Solved& s, const NodeForEnd& n, std::vector<Centre>& centres) {
+  Centre c{n.track.body(), n.track.node_id(), n.end.X, n.end.kind};
+  const double track = (n.track.point(n.track.upper()) - n.track.point(n.track.lower())).norm();
+  if (!n.track.reaches(n.end.X))
+    if (const int fixed = fixed_node_at(s, c.body, n.end.X, 1e-3 * track); fixed >= 0) {
+      c.node = fixed;
+      c.fixed = true;
+    }
+  const bool taken = std::any_of(centres.begin(), centres.end(), [&](const Centre& o) {
+    return o.body == c.body && o.node == c.node;
+  });
+  if (!c.fixed || !taken) centres.push_back(c);
+}
+
 /// The input mesh with the centres moved to their points and refined `steps` times around them,
 /// degrees set by layer (and corrected, with goal-oriented degrees), equal on facing contact
 /// edges of two bodies.
-model::ProblemSpec build_mesh(const model::ProblemSpec& input, const std::vector<Centre>& centres,
-                              int steps, const HpOptions& options,
-                              const DegreeCorrections& corrections) {
-  model::ProblemSpec spec = input;
-  for (const Centre& c : centres) {
+StepMesh build_mesh(const model::ProblemSpec& input, const std::vector<Centre>& centres, int steps,
+                    const HpOptions& options, const DegreeCorrections& corrections) {
+  StepMesh out{input, {}, std::vector<bool>(centres.size(), true)};
+  model::ProblemSpec& spec = out.spec;
+  std::vector<bool> refining(centres.size(), true);
+  for (size_t i = 0; i < centres.size(); ++i) {
+    const Centre& c = centres[i];
     if (c.fixed) continue;
-    const BoundaryTrack track(spec, c.body, c.node);
-    spec = with_node_moved(spec, track, track.parameter(c.at));
+    try {
+      const BoundaryTrack track(spec, c.body, c.node);
+      spec = with_node_moved(spec, track, track.parameter(c.at));
+    } catch (const Error& e) {
+      out.complete[i] = false;
+      out.left_out.push_back("the node nearest to " + point_text(c.at) +
+                             " cannot move onto it (" + without_file_name(e.what(), input.file) +
+                             "): refined around where it is");
+    }
   }
   for (int k = 0; k < steps; ++k)
-    for (const Centre& c : centres) spec = refine_towards_node(spec, c.body, c.node, options.factor);
+    for (size_t i = 0; i < centres.size(); ++i) {
+      if (!refining[i]) continue;
+      try {
+        spec = refine_towards_node(spec, centres[i].body, centres[i].node, options.factor);
+      } catch (const Error& e) {
+        refining[i] = false;
+        out.complete[i] = false;
+        out.left_out.push_back("the mesh around " + point_text(centres[i].at) + " cannot be refined " +
+                               "more than " + std::to_string(k) + " times (" + without_file_name(e.what(), input.file) +
+                               ")");
+      }
+    }
   if (options.degree != model::HpDegree::constant) {
     for (size_t b = 0; b < spec.bodies.size(); ++b) {
       std::vector<int> nodes;
@@ -86,7 +155,7 @@ model::ProblemSpec build_mesh(const model::ProblemSpec& input, const std::vector
   }
   if (options.degree == model::HpDegree::goal) corrections.apply(spec, options.min_degree);
   if (options.degree != model::HpDegree::constant) match_facing_degrees(spec);
-  return spec;
+  return out;
 }
 
 /// A mesh refined `step` times that cannot be built (its elements at Γ* have become too small
@@ -115,6 +184,18 @@ std::string limit_message(const HpOutcome& out, const HpOptions& options, const 
 /// A contact edge holding at least this share of the estimated error of the pressure is where the
 /// next centre goes, when a zone end on it has none.
 constexpr double kErrorPeakShare = 0.5;
+
+/// Whether centre c's node can move onto X in `base` (X between its two boundary neighbours):
+/// a centre follows the nearest point of its kind only there — a point that is gone (a
+/// stick–slip point at the mirror in one step, not in the next) would otherwise hand the centre
+/// a point beyond its reach, e.g. another centre's.
+bool can_follow(const model::ProblemSpec& base, const Centre& c, const Vec2& X) {
+  try {
+    return BoundaryTrack(base, c.body, c.node).reaches(X);
+  } catch (const AdaptError&) {
+    return false;
+  }
+}
 
 /// With a tolerance: when one contact edge holds most of the estimated error of the pressure and
 /// a zone end of the enriched solve lies within its length of the error's peak there with no
@@ -300,8 +381,14 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       std::vector<ZoneEnd> ends;
       for (;; ++rec.recentred) {
         try {
-          s = solve(step == 0 ? spec : build_mesh(base, centres, step, options, corrections), progress,
-                    s ? s.get() : out.last.get());
+          model::ProblemSpec mesh = spec;
+          if (step > 0) {
+            StepMesh built = build_mesh(base, centres, step, options, corrections);
+            for (const std::string& note : built.left_out) say(step_name + ": " + note);
+            rec.left_out = std::move(built.left_out);
+            mesh = std::move(built.spec);
+          }
+          s = solve(mesh, progress, s ? s.get() : out.last.get());
         } catch (const InputError& e) {
           // The input was good at step 0: what the refined mesh refuses is the refinement's.
           if (step == 0) throw;
@@ -316,6 +403,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
                 resolve_zones(s, options.resolve_rounds, options.stick_slip, progress);
             rec.resolve_rounds = r.rounds;
             rec.resolved_towards = r.towards;
+            rec.left_out = r.left_out;
             s = r.solved;
             base = s->spec;
           }
@@ -324,8 +412,7 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
           ends = step == 0 ? adapt_targets(*s, options.stick_slip, true) : followed_points(*s, options);
           if (step == 0) {
             base_solved = s;
-            for (const auto& n : nearest_movable_nodes(*s, ends))
-              centres.push_back({n.track.body(), n.track.node_id(), n.end.X, n.end.kind});
+            for (const auto& n : nearest_movable_nodes(*s, ends)) add_centre(*s, n, centres);
             add_singular_centres(*s, ends, centres);
           }
         } catch (const AdaptError& e) {
@@ -343,12 +430,13 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         rec.inside = true;
         std::vector<Centre> recentred = centres;
         for (Centre& c : recentred) {
-          if (c.kind == ZoneEnd::Kind::singular) continue;  // an end or corner stays where it is
+          if (c.kind == ZoneEnd::Kind::singular || c.fixed) continue;  // an end or corner stays
           const BoundaryTrack track(s->spec, c.body, c.node);
           const ZoneEnd* nearest = nearest_end(ends, c.body, c.kind, c.at);
           if (!nearest) continue;  // a stick–slip point gone: the centre stays
           const double t = track.parameter(nearest->X);
-          if (t <= track.lower() || t >= track.upper()) {
+          // (outside, and beyond the node's reach: the mesh cannot follow it, no new solve)
+          if ((t <= track.lower() || t >= track.upper()) && can_follow(base, c, nearest->X)) {
             rec.inside = false;
             c.at = nearest->X;
           }
@@ -427,12 +515,13 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
         say(os.str());
       }
       for (Centre& c : centres)
-        if (const ZoneEnd* nearest = nearest_end(ends_plus, c.body, c.kind, c.at)) c.at = nearest->X;
+        if (const ZoneEnd* nearest = nearest_end(ends_plus, c.body, c.kind, c.at);
+            nearest && !c.fixed && can_follow(base, c, nearest->X))
+          c.at = nearest->X;
       if (rec.estimate.shear > options.tolerance) {
         auto builds = [&](const model::ProblemSpec& b, const std::vector<Centre>& c) {
           try {
-            build_mesh(b, c, step + 1, options, corrections);
-            return true;
+            return static_cast<bool>(build_mesh(b, c, step + 1, options, corrections).complete.back());
           } catch (const Error&) {
             return false;
           }

@@ -50,6 +50,9 @@ struct HpIteration {
   int degrees_raised = 0, degrees_lowered = 0;
   /// Why this step's indicators had no goal-oriented weights (the energy surplus alone), if so.
   std::string weights_left_out;
+  /// What of this step's refinement could not be built and was left out (a centre that cannot
+  /// move onto its point, a layer that would make an invalid element), each with its cause.
+  std::vector<std::string> left_out;
 };
 
 using HpObserver = std::function<void(const HpIteration&, const Solved&)>;

@@ -10,6 +10,7 @@
 
 #include "hpcontact/adapt/geometric_refinement.hpp"
 #include "hpcontact/contact/penalty.hpp"
+#include "hpcontact/core/error.hpp"
 
 namespace hpcontact::adapt {
 
@@ -138,7 +139,18 @@ Resolution resolve_zones(const SolvedPtr& s0, int max_rounds, bool stick_slip,
       if (d <= 1e-3 * v.edge_length) continue;
       if (!refined.insert({end.body, v.node_id}).second) continue;
       const double factor = std::clamp(d / v.edge_length, 0.15, 0.5);
-      spec = refine_towards_node(spec, end.body, v.node_id, factor);
+      try {
+        spec = refine_towards_node(spec, end.body, v.node_id, factor);
+      } catch (const AdaptError& e) {
+        std::ostringstream os;
+        os.precision(6);
+        os << "no mesh refined towards the boundary point (" << v.X.x() << ", " << v.X.y()
+           << ") for the zone end (" << end.X.x() << ", " << end.X.y() << ") can be built ("
+           << without_file_name(e.what(), spec.file) << "); left to the later steps' refinement around the zone end";
+        r.left_out.push_back(os.str());
+        if (progress) progress("hp: " + os.str());
+        continue;
+      }
       r.towards.push_back(v.X);
     }
     if (r.towards.size() == before) break;

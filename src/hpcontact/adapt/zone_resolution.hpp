@@ -2,6 +2,7 @@
 // ends, each end gets a boundary node close enough to move onto it without crushing an element.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "hpcontact/adapt/solved.hpp"
@@ -14,6 +15,10 @@ struct Resolution {
   int rounds = 0;
   std::vector<Vec2> towards;
   SolvedPtr solved;
+  /// The refinements that could not be built (an element they would make is inverted or
+  /// degenerate: a vertex on a nearly straight corner of a distorted input element), each
+  /// left out with its cause; the later steps' refinements around the zone ends remain.
+  std::vector<std::string> left_out;
 };
 
 /// Whether the node chosen for a zone end (nearest_movable_nodes) can move onto it as it is:

@@ -59,6 +59,10 @@ public:
   using Error::Error;
 };
 
+/// An error's text with every "file: " removed: for a message that names the file once and
+/// quotes a cause that names it again (the refinement of an hp step quoting the mesh check).
+std::string without_file_name(std::string what, const std::string& file);
+
 namespace detail {
 template <class... Args>
 std::string concat(const Args&... args) {

@@ -376,6 +376,7 @@ nlohmann::json hp_iteration_json(const adapt::HpIteration& it) {
     j["degrees"] = {{"raised", it.degrees_raised}, {"lowered", it.degrees_lowered},
                     {"weights", it.weights_left_out.empty() ? "goal-oriented"
                                                            : "energy surplus alone: " + it.weights_left_out}};
+  if (!it.left_out.empty()) j["left_out"] = it.left_out;
   if (it.step == 0) {
     j["resolve_rounds"] = it.resolve_rounds;
     j["resolved_towards"] = points_json(it.resolved_towards);
