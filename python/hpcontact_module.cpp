@@ -20,6 +20,7 @@
 #include "hpcontact/post/fields.hpp"
 #include "hpcontact/post/point_location.hpp"
 #include "hpcontact/post/summary.hpp"
+#include "hpcontact/post/vtu.hpp"
 
 namespace py = pybind11;
 using namespace hpcontact;
@@ -358,6 +359,63 @@ py::dict reactions_of(const Result& res, bool history) {
   return out;
 }
 
+/// The solution sampled as solution.vtu samples it (post::sample_mesh), as numpy arrays.
+py::dict mesh_of(const Result& res, int subdivisions) {
+  if (res.run->summary.extra.contains("dimension"))
+    throw py::value_error("mesh() of a 3D result is not available yet: read solution.vtu with meshio");
+  if (subdivisions < 0 || subdivisions > 64)
+    throw py::value_error("subdivisions: expected 0 (the element's degree, 2..16) to 64, got " +
+                          std::to_string(subdivisions));
+  const post::SampledMesh m = post::sample_mesh(res.run->discretization, res.run->u, subdivisions);
+  const auto n = static_cast<py::ssize_t>(m.points.size());
+  py::array_t<double> X({n, py::ssize_t(2)}), u({n, py::ssize_t(2)}), strain({n, py::ssize_t(3)}),
+      stress({n, py::ssize_t(4)});
+  py::array_t<double> von_mises(n), principal_1(n), principal_2(n);
+  auto x = X.mutable_unchecked<2>();
+  auto d = u.mutable_unchecked<2>();
+  auto e = strain.mutable_unchecked<2>();
+  auto t = stress.mutable_unchecked<2>();
+  auto vm = von_mises.mutable_unchecked<1>();
+  auto p1 = principal_1.mutable_unchecked<1>();
+  auto p2 = principal_2.mutable_unchecked<1>();
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const auto& p = m.points[i];
+    x(i, 0) = p.x.x();
+    x(i, 1) = p.x.y();
+    d(i, 0) = p.u.x();
+    d(i, 1) = p.u.y();
+    for (int k = 0; k < 3; ++k) e(i, k) = p.strain(k);
+    t(i, 0) = p.stress(0);
+    t(i, 1) = p.stress(1);
+    t(i, 2) = p.stress(2);
+    t(i, 3) = p.stress_zz;
+    vm(i) = p.von_mises;
+    p1(i) = p.principal_1;
+    p2(i) = p.principal_2;
+  }
+  const auto n_cells = static_cast<py::ssize_t>(m.cells.size());
+  py::array_t<int> cells({n_cells, py::ssize_t(4)});
+  auto c = cells.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < n_cells; ++i)
+    for (int k = 0; k < 4; ++k) c(i, k) = m.cells[i][k];
+  py::dict out;
+  out["points"] = X;
+  out["cells"] = cells;
+  out["displacement"] = u;
+  out["strain"] = strain;
+  out["stress"] = stress;
+  out["von_mises"] = von_mises;
+  out["principal_1"] = principal_1;
+  out["principal_2"] = principal_2;
+  out["cell_body"] = to_numpy(m.cell_body);
+  out["cell_element"] = to_numpy(m.cell_element);
+  out["cell_degree"] = to_numpy(m.cell_degree);
+  py::list names;
+  for (const auto& b : res.run->discretization.bodies) names.append(b.name);
+  out["body_names"] = names;
+  return out;
+}
+
 py::object pressure_curve(const Result& res) {
   const auto& c = res.run->pressure_curve;
   if (!c) return py::none();
@@ -552,6 +610,21 @@ tangential_traction, slip (zero without friction) and state (str array: "open", 
 "stick", "slip"), body, s, traction, minus_sigma_nn, tangent_x, tangent_y (the tangent the
 friction columns are signed along) and shear_from_stress. Arrays of length 0 when the problem
 has no contact.)")
+      .def("mesh", &mesh_of, py::arg("subdivisions") = 0,
+           R"(The solution on the mesh, as solution.vtu holds it, as numpy arrays: each element
+sampled on an (s+1) x (s+1) grid of its reference square (s = subdivisions; 0: the element's
+degree, at least 2 and at most 16, as solution.vtu without output.vtu_subdivisions) and drawn as
+linear quads. points (n, 2) undeformed positions, cells (m, 4) point indices counter-clockwise,
+displacement (n, 2), strain (n, 3) xx, yy, gamma_xy (Green-Lagrange under finite strain),
+stress (n, 4) xx, yy, xy, zz (Cauchy under finite strain; zz: out of plane, the hoop stress of an
+axisymmetric body), von_mises, principal_1, principal_2 (n,), cell_body (index into body_names),
+cell_element (the element's id in the input), cell_degree (m,). A point on an edge between two
+elements appears once per element. The deformed mesh is points + displacement; e.g. with
+matplotlib: tripcolor or PolyCollection(points[cells] + displacement[cells]).
+
+solution.vtu itself (and steps/step-NNNN.vtu) is an ASCII VTK unstructured grid that ParaView
+opens and meshio reads (Debian's python3-meshio): mesh = meshio.read("out/solution.vtu");
+mesh.points (n, 3), mesh.cells_dict["quad"], mesh.point_data["von_mises"], the same arrays.)")
       .def("pressure_curve", &pressure_curve,
            R"(pressure.csv's columns as numpy arrays, when the first contact pair has a compare
 section (None otherwise): x (along the obstacle, on 1001 points of [0, 1.5 b] and the zone ends),

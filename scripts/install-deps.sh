@@ -16,6 +16,7 @@ packages=(
   libeigen3-dev libsuitesparse-dev libblis4-serial libyaml-cpp-dev libcli11-dev libmuparser-dev
   nlohmann-json3-dev libgtest-dev libbenchmark-dev
   python3 python3-dev python3-numpy python3-matplotlib python3-pytest python3-yaml pybind11-dev
+  python3-meshio
   gmsh
   slurmctld slurmd slurm-client
 )

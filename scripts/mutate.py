@@ -28,7 +28,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 229 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
+--list prints them. A run of all 231 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp (but for its adjoint and its load-step cuts) and contact/penalty.cpp,
@@ -378,6 +378,16 @@ MUTATIONS = [
              "            (void)built.left_out;",
              "an hp step's refinements left out are not recorded in summary.json",
              ["cli:tests/cli/test_hp_left_out.py::test_a_refinement_that_cannot_be_built_is_left_out_and_the_loop_goes_on"]),
+    Mutation("python-mesh-zz-is-xy", "python", "python/hpcontact_module.cpp",
+             "    t(i, 3) = p.stress_zz;",
+             "    t(i, 3) = p.stress(2);",
+             "Result.mesh() gives the shear stress as the out-of-plane stress",
+             ["python:tests/python/test_mesh_arrays.py::test_lame_fields_at_every_sampled_point"]),
+    Mutation("sampled-cells-clockwise", "post", S + "post/vtu.cpp",
+             "          m.cells.push_back({a, a + 1, a + s + 2, a + s + 1});",
+             "          m.cells.push_back({a, a + s + 1, a + s + 2, a + 1});",
+             "the sampled mesh's cells (solution.vtu, Result.mesh()) run clockwise",
+             ["python:tests/python/test_mesh_arrays.py::test_lame_fields_at_every_sampled_point"]),
     Mutation("other-rows-no-slip", "model", S + "model/contact_result_rows.cpp",
              "if (m.total_slips) ps.slip = c.nodes.interpolate(foot.edge, foot.t, *m.total_slips);",
              "(void)m.total_slips;",

@@ -9,30 +9,36 @@
 
 namespace hpcontact::post {
 
-void write_vtu(const std::string& path, const model::Discretization& d, const Eigen::VectorXd& u,
-               int subdivisions) {
-  std::vector<PointResult> points;
-  std::vector<std::vector<int>> cells;
-  std::vector<int> cell_body, cell_element, cell_degree;
+SampledMesh sample_mesh(const model::Discretization& d, const Eigen::VectorXd& u, int subdivisions) {
+  SampledMesh m;
   for (int b = 0; b < static_cast<int>(d.bodies.size()); ++b) {
     const auto& body = d.bodies[b];
     for (int q = 0; q < body.mesh.n_quads(); ++q) {
       const int p = body.dofs.element(q).max_degree();
       const int s = subdivisions > 0 ? subdivisions : std::clamp(p, 2, 16);
-      const int base = static_cast<int>(points.size());
+      const int base = static_cast<int>(m.points.size());
       for (int j = 0; j <= s; ++j)
         for (int i = 0; i <= s; ++i)
-          points.push_back(evaluate(body, q, -1 + 2.0 * i / s, -1 + 2.0 * j / s, u));
+          m.points.push_back(evaluate(body, q, -1 + 2.0 * i / s, -1 + 2.0 * j / s, u));
       for (int j = 0; j < s; ++j)
         for (int i = 0; i < s; ++i) {
           const int a = base + j * (s + 1) + i;
-          cells.push_back({a, a + 1, a + s + 2, a + s + 1});
-          cell_body.push_back(b);
-          cell_element.push_back(body.mesh.quad_id(q));
-          cell_degree.push_back(p);
+          m.cells.push_back({a, a + 1, a + s + 2, a + s + 1});
+          m.cell_body.push_back(b);
+          m.cell_element.push_back(body.mesh.quad_id(q));
+          m.cell_degree.push_back(p);
         }
     }
   }
+  return m;
+}
+
+void write_vtu(const std::string& path, const model::Discretization& d, const Eigen::VectorXd& u,
+               int subdivisions) {
+  const SampledMesh m = sample_mesh(d, u, subdivisions);
+  const auto& points = m.points;
+  const auto& cells = m.cells;
+  const auto &cell_body = m.cell_body, &cell_element = m.cell_element, &cell_degree = m.cell_degree;
   std::vector<Vec2> xs;
   for (const auto& p : points) xs.push_back(p.x);
   VtkGrid grid(path, xs, cells, 9 /* VTK_QUAD */, 10);
