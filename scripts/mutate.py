@@ -28,7 +28,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 232 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
+--list prints them. A run of all 234 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp (but for its adjoint and its load-step cuts) and contact/penalty.cpp,
@@ -393,6 +393,16 @@ MUTATIONS = [
              "    return abs(number - value) <= 5 * 10.0 ** (-decimals)",
              "a README figure off in its last digit passes the docs check",
              ["docs:tests/docs/test_example_figures.py::test_a_stale_figure_fails_the_check_and_is_rewritten"]),
+    Mutation("path-guess-ignored", "model", S + "model/contact_solve.cpp",
+             "  if (guess && residual_norm(x_guess) < residual_norm(a.x)) a.x = std::move(x_guess);",
+             "  if (guess && residual_norm(x_guess) < 0) a.x = std::move(x_guess);",
+             "a frictional solve on another discretisation ignores the previous solve's path",
+             ["PathStart.TheSameDiscretisationRetracesItsPath"]),
+    Mutation("path-multipliers-not-carried", "adapt", S + "adapt/transfer.cpp",
+             "      carried.multipliers = carried_multipliers(from.pairs, st.multipliers, to_pairs, in);",
+             "      carried.multipliers = std::vector<Eigen::VectorXd>(to_pairs.size());",
+             "one degree more starts each frictional step with zero multipliers",
+             ["PathStart.OneDegreeMoreReachesTheColdStartsSolutionInFewerIterations"]),
     Mutation("other-rows-no-slip", "model", S + "model/contact_result_rows.cpp",
              "if (m.total_slips) ps.slip = c.nodes.interpolate(foot.edge, foot.t, *m.total_slips);",
              "(void)m.total_slips;",

@@ -174,13 +174,14 @@ def test_pressed_only_the_tolerance_holds_the_pressure(hpcontact, root, tmp_path
 
 def test_a_solve_that_fails_inside_the_loop_is_named_and_the_best_step_kept(hpcontact, root,
                                                                               tmp_path):
-    """Newton held to 14 iterations without cuts: a later step's solve (here step 3's estimate,
-    one degree more) does not converge. The message names the step and which of its solves
+    """Newton held to 10 iterations without cuts: a later step's solve (here step 4's; at 14
+    iterations step 3's estimate failed until each step of a finer solve started from the
+    coarser solve's state at that step) does not converge. The message names the step and which of its solves
     failed, after the problem file, and the step whose result last-good/ holds (hp calls them
     steps, not iterations); last-good's summary says the same step."""
     out = tmp_path / "r"
     r = hpcontact("run", os.path.join(root, CASE), "--out", out, "-q", "--set",
-                  "solver.max_iterations=14", "--set", "solver.max_cuts=0")
+                  "solver.max_iterations=10", "--set", "solver.max_cuts=0")
     assert r.returncode == 1
     m = re.search(r"hp-tolerance\.yaml: hp step (\d+)(, its estimate \(one degree more\))?: the "
                   r"solver stopped: .*; the last good result \(step (\d+)\) is in", r.stderr)

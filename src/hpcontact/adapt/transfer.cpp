@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
 
 #include "hpcontact/post/point_location.hpp"
 
@@ -84,9 +85,11 @@ Vec2 displacement_at(const model::Discretization& d, const post::PointLocator& l
   return v;
 }
 
-/// The pressure of the old pair at X, interpolated linearly between its two nodes nearest to X
-/// along the boundary (the nearest node and the nearer of its neighbours).
-double pressure_at(const model::ContactResult& old, const Vec2& X) {
+/// The value of an old pair's nodal field at X (one block of its multipliers: the normal
+/// pressures or the tangential tractions), interpolated linearly between its two nodes nearest
+/// to X along the boundary (the nearest node and the nearer of its neighbours).
+double nodal_value_at(const contact::MultiplierNodes& old, const Eigen::Ref<const Eigen::VectorXd>& values,
+                      const Vec2& X) {
   const auto& nodes = old.nodes;
   if (nodes.empty()) return 0;
   size_t best = 0;
@@ -99,10 +102,92 @@ double pressure_at(const model::ContactResult& old, const Vec2& X) {
       other = j;
       d_other = (nodes[j].X - X).norm();
     }
-  if (other == best) return nodes[best].pressure;
+  if (other == best) return values(best);
   const Vec2 a = nodes[best].X, b = nodes[other].X;
   const double s = std::clamp((X - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
-  return (1 - s) * nodes[best].pressure + s * nodes[other].pressure;
+  return (1 - s) * values(best) + s * values(other);
+}
+
+/// The pressure of the old pair's result at X, interpolated as nodal_value_at does.
+double pressure_at(const model::ContactResult& old, const Vec2& X) {
+  const auto& nodes = old.nodes;
+  if (nodes.empty()) return 0;
+  contact::MultiplierNodes at;
+  Eigen::VectorXd p(nodes.size());
+  for (size_t j = 0; j < nodes.size(); ++j) {
+    contact::MultiplierNode n;
+    n.X = nodes[j].X;
+    at.nodes.push_back(n);
+    p(j) = nodes[j].pressure;
+  }
+  return nodal_value_at(at, p, X);
+}
+
+/// Each exact pair's multipliers of `from` (normal, then with friction tangential, per node) at
+/// the nodes of `to_pairs`: on the same edges' polynomials when the meshes are the same
+/// (`nested`), else interpolated along the old nodes. A pair whose layout differs is left empty.
+std::vector<Eigen::VectorXd> carried_multipliers(const std::vector<model::ContactPair>& from_pairs,
+                                                 const std::vector<Eigen::VectorXd>& from,
+                                                 const std::vector<model::ContactPair>& to_pairs,
+                                                 bool nested_meshes) {
+  std::vector<Eigen::VectorXd> out(to_pairs.size());
+  for (size_t k = 0; k < to_pairs.size() && k < from_pairs.size() && k < from.size(); ++k) {
+    const auto& c = to_pairs[k].constraints;
+    const auto& old = from_pairs[k].constraints;
+    if (!c || !old || c->has_friction() != old->has_friction()) continue;
+    const int blocks = c->has_friction() ? 2 : 1, n_old = old->size(), n = c->size();
+    if (from[k].size() != blocks * n_old) continue;
+    Eigen::VectorXd l(blocks * n);
+    for (int b = 0; b < blocks; ++b) {
+      const auto values = from[k].segment(b * n_old, n_old);
+      for (int j = 0; j < n; ++j)
+        l(b * n + j) = nested_meshes ? old->nodes.interpolate(c->nodes.nodes[j].edge, c->nodes.nodes[j].t, values)
+                                     : nodal_value_at(old->nodes, values, c->nodes.nodes[j].X);
+    }
+    out[k] = l;
+  }
+  return out;
+}
+
+/// u of `from_d` on the vertices of `to` (vertex modes; edge and internal modes zero).
+Eigen::VectorXd vertex_displacements(const model::Discretization& from_d, const post::PointLocator& locate,
+                                     const Eigen::VectorXd& u, const model::Discretization& to) {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(to.n_dofs);
+  for (size_t k = 0; k < to.bodies.size() && k < from_d.bodies.size(); ++k) {
+    const model::Body& b = to.bodies[k];
+    for (int v = 0; v < b.mesh.n_nodes(); ++v) {
+      const int mode = b.dofs.vertex_mode(v);
+      if (mode < 0) continue;
+      const Vec2 uv = displacement_at(from_d, locate, u, static_cast<int>(k), b.mesh.node(v));
+      out(b.dof_offset + 2 * mode) = uv.x();
+      out(b.dof_offset + 2 * mode + 1) = uv.y();
+    }
+  }
+  return out;
+}
+
+/// The load steps' states of a frictional solve carried onto `to` (StartState::path).
+std::vector<model::NonlinearSolution::StepState> carried_path(const model::Discretization& from_d,
+                                                              const model::NonlinearSolution& from,
+                                                              const model::Discretization& to,
+                                                              const std::vector<model::ContactPair>& to_pairs) {
+  std::vector<model::NonlinearSolution::StepState> path;
+  if (from.step_states.empty()) return path;
+  const bool same = same_numbering(from_d, to), in = !same && nested(from_d, to);
+  std::unique_ptr<post::PointLocator> locate;
+  if (!same && !in) locate = std::make_unique<post::PointLocator>(from_d);
+  for (const auto& st : from.step_states) {
+    model::NonlinearSolution::StepState carried{st.segment, st.s, st.factor, {}, {}};
+    if (same) {
+      carried.u = st.u;
+      carried.multipliers = st.multipliers;
+    } else {
+      carried.u = in ? embed(from_d, st.u, to) : vertex_displacements(from_d, *locate, st.u, to);
+      carried.multipliers = carried_multipliers(from.pairs, st.multipliers, to_pairs, in);
+    }
+    path.push_back(std::move(carried));
+  }
+  return path;
 }
 
 }  // namespace
@@ -112,48 +197,32 @@ model::StartState carry_over(const model::Discretization& from_d,
                              const std::vector<model::ContactPair>& to_pairs) {
   model::StartState start;
   start.factor = from.load_factor;
+  start.path = carried_path(from_d, from, to, to_pairs);
   if (same_numbering(from_d, to)) {
     start.u = from.u;
     start.multipliers = from.multipliers;
     return start;
   }
+  // The final state without friction (a frictional solve follows its path: StartState::path).
   if (nested(from_d, to)) {
     // The same meshes with higher degrees: the same field, and each exact pair's multiplier
     // (a polynomial on each contact edge) at the new nodes of the same edges.
     start.u = embed(from_d, from.u, to);
+    start.multipliers = carried_multipliers(from.pairs, from.multipliers, to_pairs, true);
+  } else {
+    const post::PointLocator locate(from_d);
+    start.u = vertex_displacements(from_d, locate, from.u, to);
     start.multipliers.resize(to_pairs.size());
-    for (size_t k = 0; k < to_pairs.size() && k < from.pairs.size(); ++k) {
+    for (size_t k = 0; k < to_pairs.size() && k < from.contact.size(); ++k) {
       const auto& c = to_pairs[k].constraints;
-      const auto* lambda = from.multipliers_of(k);
-      if (!c || c->has_friction() || !lambda || !from.pairs[k].constraints) continue;
-      const auto& old_nodes = from.pairs[k].constraints->nodes;
-      Eigen::VectorXd l(c->size());
-      for (int j = 0; j < c->size(); ++j)
-        l(j) = old_nodes.interpolate(c->nodes.nodes[j].edge, c->nodes.nodes[j].t, *lambda);
-      start.multipliers[k] = l;
-    }
-    return start;
-  }
-  const post::PointLocator locate(from_d);
-  start.u = Eigen::VectorXd::Zero(to.n_dofs);
-  for (size_t k = 0; k < to.bodies.size() && k < from_d.bodies.size(); ++k) {
-    const model::Body& b = to.bodies[k];
-    for (int v = 0; v < b.mesh.n_nodes(); ++v) {
-      const int mode = b.dofs.vertex_mode(v);
-      if (mode < 0) continue;
-      const Vec2 uv = displacement_at(from_d, locate, from.u, static_cast<int>(k), b.mesh.node(v));
-      start.u(b.dof_offset + 2 * mode) = uv.x();
-      start.u(b.dof_offset + 2 * mode + 1) = uv.y();
+      if (!c) continue;
+      Eigen::VectorXd lambda(c->size());
+      for (int j = 0; j < c->size(); ++j) lambda(j) = pressure_at(from.contact[k], c->nodes.nodes[j].X);
+      start.multipliers[k] = lambda;
     }
   }
-  start.multipliers.resize(to_pairs.size());
-  for (size_t k = 0; k < to_pairs.size() && k < from.contact.size(); ++k) {
-    const auto& c = to_pairs[k].constraints;
-    if (!c || c->has_friction()) continue;
-    Eigen::VectorXd lambda(c->size());
-    for (int j = 0; j < c->size(); ++j) lambda(j) = pressure_at(from.contact[k], c->nodes.nodes[j].X);
-    start.multipliers[k] = lambda;
-  }
+  for (size_t k = 0; k < to_pairs.size() && k < start.multipliers.size(); ++k)
+    if (to_pairs[k].constraints && to_pairs[k].constraints->has_friction()) start.multipliers[k] = {};
   return start;
 }
 

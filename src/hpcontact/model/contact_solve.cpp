@@ -160,7 +160,13 @@ private:
     Eigen::VectorXd x;
     Factors factors;
     solve::SolveReport report;
+    double s = 0;  ///< the path parameter it ended at
   };
+  /// The start state's guess for the step ending at s of the current segment, or null.
+  const NonlinearSolution::StepState* path_guess(double s) const;
+  /// |R(x)| at the current factors.
+  double residual_norm(const Eigen::VectorXd& x);
+  int segment_ = -1;  ///< the path's segment under way (advance() calls so far, less one)
   StepAttempt attempt_step(double s, const FactorsAt& factors, const ForceTarget& force,
                            const Eigen::VectorXd* start = nullptr);
   std::optional<StepAttempt> continue_to(double from, double next, const FactorsAt& factors,
@@ -347,6 +353,7 @@ void LoadPath::set_out() {
 // `force`, force-controlled steps (attempt_step).
 bool LoadPath::advance(double from, double target, int steps, const FactorsAt& factors,
                        const ForceTarget& force) {
+  ++segment_;
   const double nominal = (target - from) / std::max(1, steps);
   double lambda = from, step = nominal;
   int cuts = 0, in_a_row = 0;
@@ -468,11 +475,21 @@ std::optional<LoadPath::StepAttempt> LoadPath::continue_to(double from, double n
 // the loads' factor unless they follow the unknown); the factors it reached are the attempt's.
 LoadPath::StepAttempt LoadPath::attempt_step(double s, const FactorsAt& factors,
                                              const ForceTarget& force, const Eigen::VectorXd* start) {
-  StepAttempt a{start ? *start : x_, factors(s), {}};
+  StepAttempt a{start ? *start : x_, factors(s), {}, s};
   system_.set_factors(a.factors.displacements, a.factors.loads);
-  if (force)
+  const NonlinearSolution::StepState* guess = start ? nullptr : path_guess(s);
+  Eigen::VectorXd x_guess;
+  if (guess) x_guess = system_.unknowns(guess->u, guess->multipliers);
+  if (force) {
     add_force_target(force->component, force->share(s) * force->value, force->scales_loads, a.x,
                      a.factors.displacements.y());
+    if (guess) add_force_target(force->component, force->share(s) * force->value, force->scales_loads,
+                                x_guess, guess->factor);
+  }
+  // Newton starts from the other discretisation's state at this step where its residual is the
+  // smaller: it is the better start for a step the last converged state is far from (a press),
+  // not always for the next of several small steps, which that state is close to.
+  if (guess && residual_norm(x_guess) < residual_norm(a.x)) a.x = std::move(x_guess);
   newton_options_.reference_norm = system_.force_scale(a.x);
   if (force)
     newton_options_.reference_norm =
@@ -487,11 +504,29 @@ LoadPath::StepAttempt LoadPath::attempt_step(double s, const FactorsAt& factors,
   return a;
 }
 
+double LoadPath::residual_norm(const Eigen::VectorXd& x) {
+  Eigen::VectorXd r;
+  system_.evaluate(x, r, nullptr);
+  return r.norm();
+}
+
+const NonlinearSolution::StepState* LoadPath::path_guess(double s) const {
+  for (const auto& g : start_.path)
+    if (g.segment == segment_ && std::abs(g.s - s) <= 1e-12 * std::max(1.0, std::abs(s)) &&
+        g.u.size() == d_.n_dofs && g.multipliers.size() == pairs_.size())
+      return &g;
+  return nullptr;
+}
+
 /// A converged load step: its state committed (friction's history) and recorded; `name` is how
-/// the progress calls it (the input's numbering).
+/// the progress calls it (the input's numbering). With friction its state is kept for a solve
+/// of the same problem on another discretisation (StartState::path).
 void LoadPath::accept_step(StepAttempt attempt, const std::string& name) {
   x_ = std::move(attempt.x);
   converged_ = attempt.factors;
+  if (system_.has_friction())
+    sol_.step_states.push_back({segment_, attempt.s, converged_.displacements.y(), system_.solution(x_),
+                                system_.multipliers(x_)});
   system_.commit(x_);
   record(converged_, attempt.report.iterations, 0.0);
   ++sol_.load_steps;

@@ -57,6 +57,16 @@ struct NonlinearSolution {
     std::vector<std::vector<double>> stuck, slipped;
   };
   std::vector<StepStickSlip> stick_slip_history;
+  /// With friction, per converged load step: where on the path it ended and its state — what a
+  /// solve of the same problem on another discretisation starts that step from (StartState::path).
+  struct StepState {
+    int segment = 0;     ///< which part of the path (a stage, force control's steps): 0, 1, ...
+    double s = 0;        ///< the path parameter the step ended at within its segment
+    double factor = 0;   ///< the factor on the prescribed displacements reached (y's)
+    Eigen::VectorXd u;   ///< all dofs
+    std::vector<Eigen::VectorXd> multipliers;  ///< per pair, as `multipliers` below
+  };
+  std::vector<StepState> step_states;
   /// Per pair: the pressures at its multiplier nodes (exact enforcement), empty for the penalty.
   std::vector<Eigen::VectorXd> multipliers;
   /// The pair's multipliers, or null (for evaluate_contact and BoundaryPressureProbe).
@@ -82,6 +92,11 @@ struct StartState {
   /// holds them); empty: zero.
   Eigen::VectorXd u;
   std::vector<Eigen::VectorXd> multipliers;
+  /// With friction, where the path is part of the problem and no state skips it: the states
+  /// of another discretisation's load steps carried onto this one, each the first guess of
+  /// Newton at the step that ends where it ended (same segment and path parameter); a step
+  /// with none (a cut, a continuation's part) starts from the last converged state as usual.
+  std::vector<NonlinearSolution::StepState> path;
 };
 
 /// Solves the (nonlinear) contact problem with load steps and Newton's method; with
