@@ -1,6 +1,7 @@
 // The hpcontact command line: parse -> read problem -> run (discretise, solve, post, write).
 #include <CLI/CLI.hpp>
 
+#include <sys/ioctl.h>
 #include <sys/prctl.h>
 #include <unistd.h>
 #ifdef __GLIBC__
@@ -20,6 +21,7 @@
 #include <iomanip>
 #include <iostream>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -32,6 +34,7 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/core/stop.hpp"
 #include "hpcontact/driver/contact_compare.hpp"
+#include "hpcontact/driver/progress_display.hpp"
 #include "hpcontact/driver/run.hpp"
 #include "hpcontact/driver/slurm_study.hpp"
 #include "hpcontact/driver/study.hpp"
@@ -47,30 +50,6 @@
 using namespace hpcontact;
 
 namespace {
-
-/// --log-json: one JSON object per line on stdout, {"time_s", "kind", ...}: kind "start", then
-/// "iteration" (a Newton iteration), "load_step" or "message" (with "message": the text line
-/// the plain log would print), then "done" or "error".
-class JsonLog {
- public:
-  void event(const std::string& kind, nlohmann::json fields = nlohmann::json::object()) const {
-    fields["kind"] = kind;
-    fields["time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
-    // A path or text that is not UTF-8 (a file name of bytes) has its bad bytes as U+FFFD: the
-    // line stays JSON.
-    std::cout << fields.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
-  }
-  void progress(const std::string& line) const {
-    const auto text = line.substr(line.find_first_not_of(' '));
-    const char* kind = text.rfind("iteration ", 0) == 0   ? "iteration"
-                       : text.rfind("load step ", 0) == 0 ? "load_step"
-                                                          : "message";
-    event(kind, {{"message", text}});
-  }
-
- private:
-  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
-};
 
 /// Text for the terminal: control characters (an escape sequence in a case name or a value) as
 /// \xNN and the Unicode controls of writing direction (U+202E turns the rest of a line around)
@@ -183,8 +162,32 @@ void end_by_stop_signal() {
   std::raise(signal);
 }
 
+/// The adaptive loop of a problem, for the progress's status line; none without one.
+std::optional<driver::AdaptivePlan> adaptive_plan(const model::ProblemSpec& spec) {
+  const auto& a = spec.adapt;
+  if (a.method == model::AdaptMethod::hp)
+    return driver::AdaptivePlan{"hp", a.steps, a.tolerance_given ? a.tolerance : 0};
+  if (a.method == model::AdaptMethod::rp) return driver::AdaptivePlan{"rp", a.max_iterations, a.tolerance};
+  return std::nullopt;
+}
+
+/// `run`'s progress on stdout: JSON lines (--log-json), else a status line on a terminal or
+/// plain lines; none with -q.
+std::optional<driver::ProgressDisplayOptions> display_options(bool quiet, bool verbose, bool log_json) {
+  if (quiet && !log_json) return std::nullopt;
+  driver::ProgressDisplayOptions o;
+  o.style = log_json                   ? driver::ProgressStyle::json
+            : isatty(STDOUT_FILENO) != 0 ? driver::ProgressStyle::terminal
+                                         : driver::ProgressStyle::lines;
+  o.verbose = verbose;
+  winsize size{};
+  if (::ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 0) o.width = size.ws_col;
+  o.printable = [](std::string_view text) { return printable(text); };
+  return o;
+}
+
 int run_command(const std::string& file, std::string out_dir, const std::vector<std::string>& sets,
-                bool quiet, const JsonLog* log) {
+                driver::ProgressDisplay* display, bool log_json) {
   out_dir = output_folder(out_dir, file);
   // Opened (locked, checked) before the problem is read: a folder that holds the problem file
   // is refused before anything else. The earlier results stay until this run succeeds.
@@ -194,25 +197,26 @@ int run_command(const std::string& file, std::string out_dir, const std::vector<
   options.folder = &folder;
   options.effective_input = read.effective_yaml;
   // Warnings reach stderr whatever -q says: they are about the user's input or result.
-  options.warning = [log](const std::string& warning) {
-    if (log) log->event("warning", {{"message", warning}});
-    std::cerr << "hpcontact: warning: " << printable(warning) << std::endl;
+  options.warning = [display](const std::string& warning) {
+    auto write = [&] { std::cerr << "hpcontact: warning: " << printable(warning) << std::endl; };
+    if (!display) return write();
+    display->json_event("warning", {{"message", warning}});
+    display->aside(write);
   };
-  if (log) {
-    options.progress = [log](const std::string& line) { log->progress(line); };
-    log->event("start", {{"case", read.spec.case_name}, {"file", file}, {"out", out_dir}});
-  } else if (!quiet) {
-    // each line flushed: a log followed while the run goes on (tail -f, a scheduler's file)
-    options.progress = [](const std::string& line) { std::cout << "  " << printable(line) << std::endl; };
-    std::cout << "hpcontact: " << printable(file) << " (" << printable(read.spec.case_name) << ")\n";
+  if (display) {
+    options.progress = [display](const ProgressEvent& e) { (*display)(e); };
+    if (const auto plan = adaptive_plan(read.spec)) display->set_plan(*plan);
+    display->json_event("start", {{"case", read.spec.case_name}, {"file", file}, {"out", out_dir}});
+    display->line("hpcontact: " + printable(file) + " (" + printable(read.spec.case_name) + ")");
   }
   const auto result = driver::run_problem(read.spec, options);
   const auto& s = result.summary;
-  if (log) {
-    log->event("done", {{"converged", true}, {"dofs", s.dofs}, {"strain_energy", s.strain_energy},
-                        {"wall_time_s", s.wall_time_s},
-                        {"summary", (std::filesystem::path(out_dir) / "summary.json").string()}});
-  } else if (!quiet) {
+  if (display) display->finish();
+  if (log_json) {
+    display->json_event("done", {{"converged", true}, {"dofs", s.dofs}, {"strain_energy", s.strain_energy},
+                                 {"wall_time_s", s.wall_time_s},
+                                 {"summary", (std::filesystem::path(out_dir) / "summary.json").string()}});
+  } else if (display) {
     std::cout << "  dofs " << s.dofs << ", strain energy " << s.strain_energy;
     if (s.error) {
       std::cout << ", energy error " << s.error->energy_rel_percent << " %";
@@ -465,10 +469,11 @@ int main(int argc, char** argv) {
   run->add_option("--parent-pid", parent_pid,
                   "(hpcontact study's runs) stop as on SIGTERM when process PID, the parent, ends")
       ->group("");  // not for users: hidden from --help
-  bool log_json = false;
+  bool log_json = false, verbose = false;
   run->add_flag("--log-json", log_json,
-                "progress as JSON lines on stdout (kind: start, iteration, load_step, message, "
-                "done, error)");
+                "progress as JSON lines on stdout (kind: start, iteration, load_step, adapt_step, "
+                "file_written, message, warning, done, error; docs/output.md)");
+  run->add_flag("--verbose,-v", verbose, "a line per Newton iteration too");
 
   auto* check = app.add_subcommand("check", "validate a problem file and describe it, without solving");
   check->add_option("case", file, "problem file (YAML)")->required()->check(CLI::ExistingFile);
@@ -516,18 +521,22 @@ int main(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_IGN);
   try {
     if (*run) {
-      const JsonLog log;
+      std::optional<driver::ProgressDisplay> display;
+      if (auto o = display_options(quiet, verbose, log_json)) display.emplace(std::cout, std::move(*o));
       stop_runs_on_signals();
       stop_with_parent(parent_pid);
       try {
-        const int code = run_command(file, out_dir, sets, quiet, log_json ? &log : nullptr);
+        const int code = run_command(file, out_dir, sets, display ? &*display : nullptr, log_json);
         if (!std::cout)
           std::cerr << "hpcontact: the standard output was closed during the run; the run went "
                        "on, and its results are in "
                     << printable(output_folder(out_dir, file)) << "/\n";
         return code;
       } catch (const std::exception& e) {
-        if (log_json) log.event("error", {{"message", e.what()}});
+        if (display) {
+          display->finish();
+          display->json_event("error", {{"message", e.what()}});
+        }
         if (stop_signal() > 0) {
           std::cerr << "hpcontact: error: " << printable_lines(e.what()) << '\n';
           end_by_stop_signal();

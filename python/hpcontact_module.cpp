@@ -154,10 +154,10 @@ Result run(const Problem& p, const py::object& out_arg, bool quiet) {
     options.effective_input = p.read.effective_yaml;
   }
   // Progress lines go to sys.stdout; the callback also lets Ctrl-C stop a long run.
-  options.progress = [quiet](const std::string& line) {
+  options.progress = [quiet](const ProgressEvent& e) {
     py::gil_scoped_acquire gil;
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-    if (!quiet) py::print("  " + line, py::arg("flush") = true);
+    if (!quiet) py::print("  " + e.text, py::arg("flush") = true);
   };
   std::shared_ptr<driver::RunResult> r;
   {

@@ -47,7 +47,8 @@ CASE = "examples/tutorial/punch.yaml"
 BLOCK = re.compile(r"(<!-- generated: (?P<name>[\w-]+) -->\n)(?P<body>.*?)(<!-- end: (?P=name) -->)", re.S)
 VALUE = re.compile(r"(<!--v:(?P<name>[\w.-]+)-->)(?P<value>.*?)(<!--/v-->)")
 # Wall-clock times: a number of seconds, or summary.json's wall_time_s.
-TIME = [re.compile(r"\b\d+(\.\d+)?(e[-+]?\d+)? s\b"), re.compile(r'("wall_time_s": )[0-9.e+-]+')]
+TIME = [re.compile(r"\b\d+(\.\d+)?(e[-+]?\d+)? s\b"), re.compile(r'("wall_time_s": )[0-9.e+-]+'),
+        re.compile(r"((?:elapsed |remaining ~|solve ~))\d+:\d\d(?::\d\d)?")]  # progress lines
 
 
 class TutorialError(Exception):
@@ -237,8 +238,8 @@ def generate(ws, documents, update_reference):
     log = ws.run("pressure-load-error", "build/hpcontact run punch-pressure.yaml --out results/err "
                  "--set contact[0].enforcement=penalty", expect=1)
     blocks["pressure-load-error"] = fenced(log.splitlines()[-1])
-    log = ws.run("run", run_cmd)
-    blocks["run"] = fenced(f"$ {run_cmd}\n" + "\n".join(first_step_iterations(log.split("\n"))))
+    log = ws.run("run", run_cmd + " -v")  # -v: the Newton iterations too
+    blocks["run"] = fenced(f"$ {run_cmd} -v\n" + "\n".join(first_step_iterations(log.split("\n"))))
     summary = ws.json("results", "punch", "summary.json")
     c = summary["contact"]
     path = read_columns(ws.path("results", "punch", "path.csv"))
@@ -429,7 +430,7 @@ def render(text, blocks, values, where):
 
 def masked(text):
     """The text with wall-clock times replaced by <time>."""
-    return TIME[1].sub(r"\1<time>", TIME[0].sub("<time> s", text))
+    return TIME[2].sub(r"\1<time>", TIME[1].sub(r"\1<time>", TIME[0].sub("<time> s", text)))
 
 
 NUMBER = re.compile(r"[-+]?(?:\d+\.\d*|\.\d+|\d+)(?:[eE][-+]?\d+)?")

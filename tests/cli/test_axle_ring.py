@@ -86,8 +86,8 @@ def test_a_cut_step_keeps_its_number(hpcontact, root, tmp_path):
                   "--out", tmp_path)
     assert r.returncode == 1
     lines = [line.strip() for line in r.stdout.splitlines()]
-    assert any(line.startswith("load step 1: factor 0.5") for line in lines), r.stdout
-    assert any(line.startswith("load step 2 (a part of it, cut): factor 0.75") for line in lines), r.stdout
+    assert any(line.startswith("load step 1 of 2: factor 0.5") for line in lines), r.stdout
+    assert any(line.startswith("load step 2 of 2 (a part of it, cut): factor 0.75") for line in lines), r.stdout
     assert "load step 3" not in r.stdout + r.stderr
     assert "load step 2 (factor 1) failed after 1 cuts" in r.stderr
 

@@ -64,11 +64,11 @@ def user_folder(tmp_path):
 
 
 def start(exe, *args):
-    """Starts hpcontact and returns the process once it is solving (its first Newton line)."""
-    p = subprocess.Popen([exe, *map(str, args)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                         text=True)
+    """Starts hpcontact and returns the process once it is solving (its first Newton line: -v)."""
+    p = subprocess.Popen([exe, *map(str, args), "-v"], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True)
     for line in p.stdout:
-        if "iteration" in line:
+        if line.lstrip().startswith("iteration "):
             return p
     p.wait()
     pytest.fail(f"the run ended before it solved: {p.returncode} {p.stderr.read()}")

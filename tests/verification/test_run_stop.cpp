@@ -55,8 +55,8 @@ TEST(RunStop, ALinearRunAskedToStopWritesNoResults) {
 
   // asked once the linear solve is done: no Newton iteration or stop point left to end at
   options.out_dir = stopped.string();
-  options.progress = [](const std::string& line) {
-    if (line.rfind("solved:", 0) == 0) request_stop(SIGTERM);
+  options.progress = [](const ProgressEvent& e) {
+    if (e.text.rfind("solved:", 0) == 0) request_stop(SIGTERM);
   };
   expect_stopped<NumericalError>(spec, options, "stopped by SIGTERM before the results were written");
   EXPECT_FALSE(fs::exists(stopped / "summary.json"));
@@ -97,7 +97,8 @@ TEST(RunStop, AnAdaptiveRunAskedToStopAfterItsLastSolveKeepsItAsLastGood) {
   driver::RunOptions options;
   options.out_dir = stopped.string();
   bool asked = false;
-  options.progress = [&](const std::string& line) {
+  options.progress = [&](const ProgressEvent& e) {
+    const std::string& line = e.text;
     if (line.find("hp step 2:") != std::string::npos && line.find("dofs") != std::string::npos) {
       request_stop(SIGTERM);
       asked = true;

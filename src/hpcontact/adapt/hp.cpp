@@ -355,8 +355,13 @@ HpOptions hp_options(const model::AdaptSpec& adapt) {
 HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptions& options,
                                    const model::ProgressFn& progress, const HpObserver& observe) {
   using Clock = std::chrono::steady_clock;
-  auto say = [&](const std::string& s) {
-    if (progress) progress(s);
+  auto say = [&](const ProgressEvent& e) {
+    if (progress) progress(e);
+  };
+  // A step's line with its figures (once they are known: after the estimate, with a tolerance).
+  auto say_step = [&](int step, long dofs, double estimate, const std::string& detail) {
+    AdaptStepProgress p{"hp", step, options.steps, dofs, estimate, options.tolerance, detail};
+    say({"hp step " + std::to_string(step) + ": " + detail, p});
   };
   HpOutcome out;
   // The solve `s` of the history's last entry becomes the result.
@@ -454,10 +459,13 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       {
         std::ostringstream os;
         os.precision(10);
-        os << "hp step " << step << ": " << rec.solve.elements << " elements, " << rec.solve.dofs
-           << " dofs, U = " << rec.solve.strain_energy << ", Γ* at";
+        os << rec.solve.elements << " elements, " << rec.solve.dofs << " dofs, U = "
+           << rec.solve.strain_energy << ", Γ* at";
         for (const auto& g : rec.solve.gamma_star) os << " (" << g.x() << ", " << g.y() << ")";
-        say(os.str());
+        if (options.tolerance > 0)
+          say("hp step " + std::to_string(step) + ": " + os.str());
+        else
+          say_step(step, rec.solve.dofs, ErrorEstimate::none, os.str());
       }
       if (options.tolerance <= 0) {
         out.history.push_back(rec);
@@ -478,11 +486,10 @@ HpOutcome refine_towards_zone_ends(const model::ProblemSpec& spec, const HpOptio
       {
         std::ostringstream os;
         os.precision(3);
-        os << "hp step " << step << ": estimated error " << rec.estimate.pressure
-           << " (pressure, relative L2), ";
+        os << "estimated error " << rec.estimate.pressure << " (pressure, relative L2), ";
         if (!std::isnan(rec.estimate.shear)) os << rec.estimate.shear << " (shear), ";
         os << rec.estimate.energy << " (energy)";
-        say(os.str());
+        say_step(step, rec.solve.dofs, rec.estimate.traction(), os.str());
       }
       // Goal-oriented degrees learn from the steps on the refined meshes (the input mesh's
       // degrees are not the rule's).

@@ -41,8 +41,8 @@ const ZoneEnd* reachable_end(const std::vector<ZoneEnd>& ends, const BoundaryTra
 RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& options,
                          const model::ProgressFn& progress, const IterationObserver& observe) {
   using Clock = std::chrono::steady_clock;
-  auto say = [&](const std::string& s) {
-    if (progress) progress(s);
+  auto say = [&](const ProgressEvent& e) {
+    if (progress) progress(e);
   };
   RpOutcome out;
   model::ProblemSpec current = spec;
@@ -87,7 +87,6 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
       {
         std::ostringstream os;
         os.precision(10);
-        os << "rp iteration " << it << ":";
         for (const auto& n : rec.nodes) {
           os << " node " << n.node_id << " at (" << n.position.x() << ", " << n.position.y()
              << "), " << kind_name(n.kind);
@@ -98,7 +97,10 @@ RpOutcome relocate_nodes(const model::ProblemSpec& spec, const RpOptions& option
         }
         os.precision(3);
         os << " distance " << rec.distance << " of the body size";
-        say(os.str());
+        const std::string detail = os.str().substr(os.str().empty() || os.str()[0] != ' ' ? 0 : 1);
+        AdaptStepProgress p{"rp", it, options.max_iterations, rec.solve.dofs, rec.distance,
+                            options.tolerance, detail};
+        say({"rp iteration " + std::to_string(it) + ": " + detail, p});
       }
       out.history.push_back(rec);
       out.last = s;

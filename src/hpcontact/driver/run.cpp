@@ -186,11 +186,18 @@ std::string shown_as(const std::filesystem::path& folder, const std::string& fil
   return folder.filename() == "last-good" ? "last-good/" + file + " (the last converged state)" : file;
 }
 
+/// The progress event "wrote <file>" of a file written into `folder` (the staging folder or
+/// last-good/): its path relative to the output folder.
+ProgressEvent wrote(const std::filesystem::path& folder, const std::string& file) {
+  const std::string path = folder.filename() == "last-good" ? "last-good/" + file : file;
+  return {"wrote " + shown_as(folder, file), FileWrittenProgress{path}};
+}
+
 void post_process(const model::ProblemSpec& spec, const SolvedState& st, const std::string& out_dir,
                   const RunOptions& options, const Comparisons& comparisons, RunResult& r) {
   namespace fs = std::filesystem;
-  auto say = [&](const std::string& line) {
-    if (options.progress) options.progress(line);
+  auto say = [&](const ProgressEvent& e) {
+    if (options.progress) options.progress(e);
   };
   const auto& disc = *st.d;
   post::Summary& s = r.summary;
@@ -234,7 +241,7 @@ void post_process(const model::ProblemSpec& spec, const SolvedState& st, const s
     post::write_text_file((out / "pressure.csv").string(), pressure_csv(*r.pressure_curve));
   if (spec.output.vtu) {
     post::write_vtu((out / "solution.vtu").string(), disc, st.u, spec.output.vtu_subdivisions);
-    say("wrote " + shown_as(out, "solution.vtu"));
+    say(wrote(out, "solution.vtu"));
     if (!st.contact.empty()) post::write_contact_vtu((out / "contact.vtu").string(), st.pairs, st.contact);
   }
 }
@@ -403,8 +410,8 @@ RunResult run_problem(const model::ProblemSpec& input, const RunOptions& options
   using Clock = std::chrono::steady_clock;
   namespace fs = std::filesystem;
   const auto t0 = Clock::now();
-  auto say = [&](const std::string& s) {
-    if (options.progress) options.progress(s);
+  auto say = [&](const ProgressEvent& e) {
+    if (options.progress) options.progress(e);
   };
   // contact[].carrier: auto, chosen once on the input's mesh (an adaptive step keeps the choice)
   const model::ProblemSpec spec = model::with_chosen_carriers(input);
@@ -436,7 +443,7 @@ RunResult run_problem(const model::ProblemSpec& input, const RunOptions& options
     s.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
     if (out_dir.empty()) return;
     post::write_summary((fs::path(out_dir) / "summary.json").string(), s);
-    say("wrote " + shown_as(fs::path(out_dir), "summary.json"));
+    say(wrote(fs::path(out_dir), "summary.json"));
   };
 
   // The comparisons' preconditions are checked before anything is solved (on the input's mesh).
@@ -659,7 +666,8 @@ RunResult run_problem(const model::ProblemSpec& input, const RunOptions& options
       post::write_pvd((fs::path(stage) / "solution.pvd").string(), step_files, step_times);
       if (!contact_files.empty())
         post::write_pvd((fs::path(stage) / "contact.pvd").string(), contact_files, step_times);
-      say("wrote " + std::to_string(step_files.size()) + " load steps: solution.pvd");
+      say({"wrote " + std::to_string(step_files.size()) + " load steps: solution.pvd",
+           FileWrittenProgress{"solution.pvd"}});
     }
     s.newton_iterations = sol.newton_iterations;
     s.extra["newton_iterations_total"] = sol.newton_iterations;

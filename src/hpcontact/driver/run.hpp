@@ -11,6 +11,7 @@
 #include "hpcontact/driver/contact_history.hpp"
 #include "hpcontact/driver/contact_table.hpp"
 #include "hpcontact/driver/output_folder.hpp"
+#include "hpcontact/model/contact_solve.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "hpcontact/model/problem_spec.hpp"
 #include "hpcontact/model/reactions.hpp"
@@ -24,7 +25,9 @@ struct RunOptions {
   /// problem file, to refuse a folder that holds it); when set, out_dir is not used.
   OutputFolder* folder = nullptr;
   std::string effective_input;   ///< YAML text written as input.yaml (if not empty)
-  std::function<void(const std::string&)> progress;  ///< one line per stage; may be empty
+  /// Progress events (core/progress.hpp): load steps, Newton iterations, adaptive steps, files
+  /// written, messages; may be empty.
+  model::ProgressFn progress;
   /// Each warning as it arises (it names the file, the place and the cause; summary.json's
   /// `warnings` lists them too); may be empty.
   std::function<void(const std::string&)> warning;

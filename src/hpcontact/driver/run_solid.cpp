@@ -24,8 +24,8 @@ RunResult run_solid(const model::ProblemSpec& spec, const RunOptions& options,
                     OutputFolder* folder, const std::string& stage) {
   namespace fs = std::filesystem;
   const auto t0 = std::chrono::steady_clock::now();
-  auto say = [&](const std::string& s) {
-    if (options.progress) options.progress(s);
+  auto say = [&](const ProgressEvent& e) {
+    if (options.progress) options.progress(e);
   };
   const model::SolidSpec& solid = *spec.solid;
   const model::SolidDiscretization d = model::discretize_solid(solid, spec.file);
@@ -84,13 +84,13 @@ RunResult run_solid(const model::ProblemSpec& spec, const RunOptions& options,
     if (spec.output.vtu) {
       post::write_solid_vtu((fs::path(stage) / "solution.vtu").string(), d, sol.u,
                             spec.output.vtu_subdivisions);
-      say("wrote solution.vtu");
+      say({"wrote solution.vtu", FileWrittenProgress{"solution.vtu"}});
     }
     if (!options.effective_input.empty())
       post::write_text_file((fs::path(stage) / "input.yaml").string(), options.effective_input);
     s.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     post::write_summary((fs::path(stage) / "summary.json").string(), s);
-    say("wrote summary.json");
+    say({"wrote summary.json", FileWrittenProgress{"summary.json"}});
   }
   s.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   HPC_REQUIRE(!stop_requested(), NumericalError, spec.file, ": ", stop_reason(),

@@ -123,6 +123,17 @@ double secant_factor(double l0, double f0, double l1, double f1, double target) 
              : l1 - f1 * (l1 - l0) / (f1 - f0);
 }
 
+/// How the progress names a load step: the input's number (a cut step keeps it, its parts say
+/// so), and the input's load steps of the path (0: not known beforehand).
+struct StepLabel {
+  int number = 0;
+  bool part = false;
+  int of = 0;
+  std::string name() const {
+    return "load step " + std::to_string(number) + (part ? " (a part of it, cut)" : "");
+  }
+};
+
 /// The contact problem along its load path: the contact system, its unknowns and the solution
 /// built step by step, which the path's steps share. A failed path keeps the last converged
 /// state, marked not converged.
@@ -139,9 +150,11 @@ public:
 private:
   // The path's parts, each documented at its definition. Those returning bool: whether they
   // got to their end (if not, sol_.message says why).
-  void say(const std::string& s) const {
-    if (progress_) progress_(s);
+  void say(const ProgressEvent& e) const {
+    if (progress_) progress_(e);
   }
+  void say_step(const StepLabel& label, const std::string& detail, const solve::SolveReport& rep) const;
+  int planned_steps() const;
   solve::IterationCallback newton_progress() const;
   solve::SolveReport newton(Eigen::VectorXd& x);
   void add_force_target(int component, double value, bool scales_loads, Eigen::VectorXd& x,
@@ -172,7 +185,7 @@ private:
   std::optional<StepAttempt> continue_to(double from, double next, const FactorsAt& factors,
                                          const ForceTarget& force, const std::string& name);
   int input_steps_before_ = 0;  ///< the input's load steps of the stages already solved
-  void accept_step(StepAttempt attempt, const std::string& name);
+  void accept_step(StepAttempt attempt, const StepLabel& name);
   bool arc_length_path();
   bool accept_arc_length_step(const Eigen::VectorXd& x, const solve::ArcLengthStep& st);
   double factor_for(double share) const;
@@ -198,6 +211,8 @@ private:
   /// the caller expects to be close (the previous mesh's, in an adaptive loop).
   double first_ = 1;
   std::string first_attempt_;  ///< why force control as one system gave way, if it did
+  /// When the path set out, for the progress (a solve's elapsed time).
+  std::chrono::steady_clock::time_point began_ = std::chrono::steady_clock::now();
 };
 
 LoadPath::LoadPath(const ProblemSpec& spec, const Discretization& d, const ProgressFn& progress,
@@ -253,13 +268,40 @@ solve::IterationCallback LoadPath::newton_progress() const {
   if (!progress_) return {};
   const auto began = std::chrono::steady_clock::now();
   return [this, began](int it, double rn, double dxn) {
+    IterationProgress p{it, rn, dxn, pairs_.empty() ? -1 : system_.points_in_contact(),
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count()};
     std::ostringstream os;
     os << "  iteration " << it << ": |R| " << rn << ", |dx| " << dxn;
-    if (!pairs_.empty()) os << ", " << system_.points_in_contact() << " points in contact";
-    os << ", " << std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count()
-       << " s";
-    say(os.str());
+    if (p.points_in_contact >= 0) os << ", " << p.points_in_contact << " points in contact";
+    os << ", " << p.seconds << " s";
+    say({os.str(), p});
   };
+}
+
+/// The input's load steps of the path as planned: the stages' or solver.load_steps (the
+/// prescribed displacements' steps before an arc-length path); force control as one system
+/// takes one.
+int LoadPath::planned_steps() const {
+  if (ss_.control == "arc-length") return 0;
+  if (ss_.stages.empty()) return std::max(1, ss_.load_steps);
+  int n = 0;
+  for (const auto& stage : ss_.stages) n += std::max(1, stage.steps > 0 ? stage.steps : ss_.load_steps);
+  return n;
+}
+
+/// A converged load step's progress line "<name>: <detail>" and its figures.
+void LoadPath::say_step(const StepLabel& label, const std::string& detail,
+                        const solve::SolveReport& rep) const {
+  if (!progress_) return;
+  LoadStepProgress p;
+  p.step = label.number;
+  p.of = label.of;
+  p.part = label.part;
+  p.detail = detail;
+  p.newton_iterations = rep.iterations;
+  p.residual = rep.residual_history.empty() ? 0.0 : rep.residual_history.back();
+  p.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
+  say({label.name() + ": " + detail, p});
 }
 
 /// Newton's method on the system from x, counted in the solution.
@@ -363,18 +405,19 @@ bool LoadPath::advance(double from, double target, int steps, const FactorsAt& f
   auto input_step = [&](double next) {
     return input_steps_before_ + std::max(1, static_cast<int>(std::ceil((next - from) / nominal - 1e-9)));
   };
-  auto step_name = [&](double next) {
-    std::string name = "load step " + std::to_string(input_step(next));
+  // (force control by the secant adds paths beyond the planned steps: these count too)
+  const int of = std::max(planned_steps(), input_steps_before_ + std::max(1, steps));
+  auto step_label = [&](double next) {
     const bool whole = std::abs(std::abs(next - lambda) - std::abs(nominal)) <= 1e-9 * std::abs(nominal);
-    if (!whole) name += " (a part of it, cut)";
-    return name;
+    return StepLabel{input_step(next), !whole, of};
   };
+  auto step_name = [&](double next) { return step_label(next).name(); };
   while (std::abs(target - lambda) > 1e-14 * std::max(1.0, std::abs(target))) {
     const double next = std::abs(target - lambda) < std::abs(step) * (1 + 1e-12) ? target : lambda + step;
     StepAttempt attempt = attempt_step(next, factors, force);
     const solve::SolveReport& rep = attempt.report;
     if (rep.ok()) {
-      const std::string name = step_name(next);
+      const StepLabel name = step_label(next);
       lambda = next;
       accept_step(std::move(attempt), name);
       if (++in_a_row >= 2 && cuts > 0) {
@@ -392,8 +435,8 @@ bool LoadPath::advance(double from, double target, int steps, const FactorsAt& f
     }
     // With friction the load path is part of the problem: continuation first, cuts last.
     if (cuts == 0 && system_.has_friction()) {
-      const std::string name = step_name(next);
-      if (auto reached = continue_to(lambda, next, factors, force, name)) {
+      const StepLabel name = step_label(next);
+      if (auto reached = continue_to(lambda, next, factors, force, name.name())) {
         lambda = next;
         accept_step(std::move(*reached), name);
         continue;
@@ -521,7 +564,7 @@ const NonlinearSolution::StepState* LoadPath::path_guess(double s) const {
 /// A converged load step: its state committed (friction's history) and recorded; `name` is how
 /// the progress calls it (the input's numbering). With friction its state is kept for a solve
 /// of the same problem on another discretisation (StartState::path).
-void LoadPath::accept_step(StepAttempt attempt, const std::string& name) {
+void LoadPath::accept_step(StepAttempt attempt, const StepLabel& name) {
   x_ = std::move(attempt.x);
   converged_ = attempt.factors;
   if (system_.has_friction())
@@ -531,10 +574,9 @@ void LoadPath::accept_step(StepAttempt attempt, const std::string& name) {
   record(converged_, attempt.report.iterations, 0.0);
   ++sol_.load_steps;
   std::ostringstream os;
-  os << name << ": " << converged_.describe() << ", "
-     << attempt.report.iterations << " Newton iterations, |R| "
+  os << converged_.describe() << ", " << attempt.report.iterations << " Newton iterations, |R| "
      << attempt.report.residual_history.front() << " -> " << attempt.report.residual_history.back();
-  say(os.str());
+  say_step(name, os.str(), attempt.report);
 }
 
 /// Prescribed displacements first (loads at 0), then the arc-length path of the loads.
@@ -573,9 +615,14 @@ bool LoadPath::accept_arc_length_step(const Eigen::VectorXd& x, const solve::Arc
   ++sol_.load_steps;
   record(converged_, st.iterations, st.length);
   std::ostringstream os;
-  os << "arc-length step " << sol_.load_steps << ": load factor " << st.lambda << ", "
-     << st.iterations << " iterations, length " << st.length;
-  say(os.str());
+  os << "load factor " << st.lambda << ", " << st.iterations << " iterations, length " << st.length;
+  LoadStepProgress p;
+  p.step = sol_.load_steps;  // the arc-length method's steps are not known beforehand: of = 0
+  p.arc_length = true;
+  p.detail = os.str();
+  p.newton_iterations = st.iterations;
+  p.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
+  say({"arc-length step " + std::to_string(sol_.load_steps) + ": " + p.detail, p});
   return true;
 }
 
@@ -621,10 +668,9 @@ bool LoadPath::force_control_at_once() {
   record(converged_, rep.iterations, 0.0);
   ++sol_.load_steps;
   std::ostringstream os;
-  os << "load step " << sol_.load_steps << ": factor " << alpha << " (force control), "
-     << rep.iterations << " Newton iterations, |R| " << rep.residual_history.front() << " -> "
-     << rep.residual_history.back();
-  say(os.str());
+  os << "factor " << alpha << " (force control), " << rep.iterations << " Newton iterations, |R| "
+     << rep.residual_history.front() << " -> " << rep.residual_history.back();
+  say_step({sol_.load_steps, false, 1}, os.str(), rep);
   return true;
 }
 

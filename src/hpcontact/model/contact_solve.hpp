@@ -9,6 +9,7 @@
 
 #include <Eigen/Dense>
 
+#include "hpcontact/core/progress.hpp"
 #include "hpcontact/model/contact_pairs.hpp"
 #include "hpcontact/model/contact_results.hpp"
 #include "hpcontact/model/discretization.hpp"
@@ -75,7 +76,8 @@ struct NonlinearSolution {
   }
 };
 
-using ProgressFn = std::function<void(const std::string&)>;
+/// Progress events (core/progress.hpp): a line per load step and Newton iteration, with figures.
+using ProgressFn = hpcontact::ProgressFn;
 /// Called after every converged load step with all dofs u, the path point just recorded, the
 /// contact pairs and their multipliers (for evaluate_contact).
 using StepFn = std::function<void(const Eigen::VectorXd& u, const NonlinearSolution::PathPoint&,
