@@ -417,8 +417,21 @@ std::string contact_section(const RunReport& r, const Units& units) {
   return os.str();
 }
 
-/// The window of the contact zones, three times their size around their centre; none where
-/// nothing touches or that window is not smaller than the model.
+/// The bounding box {x_min, x_max, y_min, y_max} of the cells' corners.
+std::array<double, 4> cells_box(const post::FieldCells& cells) {
+  std::array<double, 4> box{INFINITY, -INFINITY, INFINITY, -INFINITY};
+  for (const auto& cell : cells.corners)
+    for (const Vec2& p : cell) {
+      box[0] = std::min(box[0], p.x());
+      box[1] = std::max(box[1], p.x());
+      box[2] = std::min(box[2], p.y());
+      box[3] = std::max(box[3], p.y());
+    }
+  return box;
+}
+
+/// The window of the contact zones: a square three times their size around their centre, cut
+/// to the model; none where nothing touches or that square is not smaller than the model.
 std::optional<std::array<double, 4>> contact_window(const ContactTable& t, const post::FieldCells& cells) {
   double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   for (size_t i = 0; i < t.size(); ++i) {
@@ -429,26 +442,18 @@ std::optional<std::array<double, 4>> contact_window(const ContactTable& t, const
     y1 = std::max(y1, t.y[i]);
   }
   const double size = std::max(x1 - x0, y1 - y0);
-  if (!(size > 0)) return std::nullopt;
-  double model_size = 0;
-  {
-    double a = INFINITY, b = -INFINITY, c = INFINITY, d = -INFINITY;
-    for (const auto& cell : cells.corners)
-      for (const Vec2& p : cell) {
-        a = std::min(a, p.x());
-        b = std::max(b, p.x());
-        c = std::min(c, p.y());
-        d = std::max(d, p.y());
-      }
-    model_size = std::max(b - a, d - c);
-  }
-  if (3 * size > 0.8 * model_size) return std::nullopt;
+  const auto model = cells_box(cells);
+  if (!(size > 0) || 3 * size > 0.8 * std::max(model[1] - model[0], model[3] - model[2]))
+    return std::nullopt;
   const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1), half = 1.5 * size;
-  return std::array<double, 4>{cx - half, cx + half, cy - half, cy + half};
+  const std::array<double, 4> window{std::max(cx - half, model[0]), std::min(cx + half, model[1]),
+                                     std::max(cy - half, model[2]), std::min(cy + half, model[3])};
+  if (!(window[1] > window[0] && window[3] > window[2])) return std::nullopt;
+  return window;
 }
 
 std::string field_section(const RunReport& r, const Units& units) {
-  const post::FieldCells cells = post::von_mises_cells(r.discretization, r.u);
+  const post::FieldCells cells = post::von_mises_cells(r.discretization, r.u, 12000);
   std::vector<double> finite;
   for (const double v : cells.values)
     if (std::isfinite(v)) finite.push_back(v);

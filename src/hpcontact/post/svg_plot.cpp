@@ -22,6 +22,13 @@ std::string px(double v) {
   return buffer;
 }
 
+/// A pixel coordinate of a field's cell or outline: a tenth of a pixel (the page stays small).
+std::string px1(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.1f", v + 0.0);
+  return buffer;
+}
+
 /// An axis: the data interval [lo, hi] (log10 of it on a logarithmic axis) onto [p0, p1] px.
 struct Axis {
   double lo = 0, hi = 1;
@@ -278,11 +285,10 @@ std::string field_plot_svg(const FieldPlot& plot) {
     ++n_drawn;
     const double t = range > 0 ? (plot.values[c] - plot.value_min) / range : 0.5;
     const std::string colour = field_colour(t);
-    cells << "<polygon class=\"cell\" fill=\"" << colour << "\" stroke=\"" << colour
-          << "\" stroke-width=\"0.4\" points=\"";
+    cells << "<polygon class=\"cell\" fill=\"" << colour << "\" stroke=\"" << colour << "\" points=\"";
     for (int k = 0; k < 4; ++k)
-      cells << (k ? " " : "") << px(x.to_px(plot.cells[c][k].x())) << ','
-            << px(y.to_px(plot.cells[c][k].y()));
+      cells << (k ? " " : "") << px1(x.to_px(plot.cells[c][k].x())) << ','
+            << px1(y.to_px(plot.cells[c][k].y()));
     cells << "\"/>\n";
   }
   svg << svg_open(plot.figure, plot.width, height, " data-cells=\"" + std::to_string(n_drawn) + "\"");
@@ -291,12 +297,12 @@ std::string field_plot_svg(const FieldPlot& plot) {
   const std::string clip = "clip-" + escape_html(plot.figure);
   svg << "<defs><clipPath id=\"" << clip << "\"><rect x=\"" << px(x.p0) << "\" y=\"" << px(y.p1)
       << "\" width=\"" << px(x.p1 - x.p0) << "\" height=\"" << px(y.p0 - y.p1)
-      << "\"/></clipPath></defs>\n<g clip-path=\"url(#" << clip << ")\">\n"
+      << "\"/></clipPath></defs>\n<g clip-path=\"url(#" << clip << ")\" stroke-width=\"0.4\">\n"
       << cells.str();
   for (const auto& outline : plot.outlines) {
     svg << "<polygon class=\"outline\" fill=\"none\" stroke=\"#222\" stroke-width=\"0.6\" points=\"";
     for (size_t i = 0; i < outline.size(); ++i)
-      svg << (i ? " " : "") << px(x.to_px(outline[i].x())) << ',' << px(y.to_px(outline[i].y()));
+      svg << (i ? " " : "") << px1(x.to_px(outline[i].x())) << ',' << px1(y.to_px(outline[i].y()));
     svg << "\"/>\n";
   }
   svg << "</g>\n";
