@@ -149,18 +149,18 @@ def test_hp_run_report_shows_summary_numbers_and_figures(hpcontact, root, tmp_pa
         assert key in keys, key
     assert [a["data-status"] for a, _ in page.with_attribute("data-status")] == ["converged"]
 
-    # the pressure: a point per row of contact.csv, in order along s, y affine in the pressure
-    rows = sorted((r for r in csv_rows(out / "contact.csv") if r["pair"] == "0"),
-                  key=lambda r: float(r["s"]))
+    # the pressure: a point per row of contact.csv, in its order, x affine in s and y in the
+    # pressure
+    rows = [r for r in csv_rows(out / "contact.csv") if r["pair"] == "0"]
     drawn = series_points(page.figures["pressure-0"], "pressure")
     assert len(drawn) == len(rows) > 50
-    assert all(b[0] >= a[0] for a, b in zip(drawn, drawn[1:]))
-    p = [float(r["pressure"]) for r in rows]
-    top, bottom = max(range(len(p)), key=p.__getitem__), min(range(len(p)), key=p.__getitem__)
-    slope = (drawn[top][1] - drawn[bottom][1]) / (p[top] - p[bottom])
-    assert slope < 0  # larger pressures higher up the page
-    for (_, y), value in zip(drawn, p):
-        assert y == pytest.approx(drawn[bottom][1] + slope * (value - p[bottom]), abs=0.02)
+    for axis, column, sign in ((0, "s", 1), (1, "pressure", -1)):  # larger pressures higher up
+        v = [float(r[column]) for r in rows]
+        hi, lo = max(range(len(v)), key=v.__getitem__), min(range(len(v)), key=v.__getitem__)
+        slope = (drawn[hi][axis] - drawn[lo][axis]) / (v[hi] - v[lo])
+        assert slope * sign > 0
+        for point, value in zip(drawn, v):
+            assert point[axis] == pytest.approx(drawn[lo][axis] + slope * (value - v[lo]), abs=0.02)
     assert len(series_points(page.figures["pressure-0"], "pressure_from_stress")) == len(rows)
 
     # von Mises: n x n cells on each of the result's elements

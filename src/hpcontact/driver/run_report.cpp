@@ -362,19 +362,21 @@ post::LinePlot plot_of(const std::string& figure, const std::string& title, cons
   return p;
 }
 
-/// The rows of pair k on one body, ordered along the obstacle.
+/// The rows of pair k on one body, in the order of its boundary (not sorted by s: a boundary
+/// may run back along the obstacle's frame, the inside of a ring around a disc).
 std::vector<size_t> side_rows(const ContactTable& t, int k, const std::string& body) {
   std::vector<size_t> rows;
   for (size_t i = 0; i < t.size(); ++i)
     if (t.pair[i] == k && t.body[i] == body) rows.push_back(i);
-  std::stable_sort(rows.begin(), rows.end(), [&](size_t a, size_t b) { return t.s[a] < t.s[b]; });
   return rows;
 }
 
+/// A column of the rows against s; the one from the stresses (dashed) is clipped at the axes the
+/// method's own values set (the stresses' spike at a singular point would flatten them).
 post::PlotSeries column_series(const ContactTable& t, const std::vector<size_t>& rows,
                                const std::vector<double>& column, const std::string& name,
-                               const std::string& role, bool dashed) {
-  post::PlotSeries s{name, role, {}, {}, false, dashed};
+                               const std::string& role, bool from_stress) {
+  post::PlotSeries s{name, role, {}, {}, false, from_stress, !from_stress};
   for (const size_t i : rows) {
     s.x.push_back(t.s[i]);
     s.y.push_back(column[i]);
@@ -388,7 +390,8 @@ std::string contact_section(const RunReport& r, const Units& units) {
   std::ostringstream os;
   os << "<h2>Along the contact pairs</h2>\n<p class=\"note\">s: the position along the obstacle "
         "(the pair's surface frame, contact.csv's s). The pressure is the contact force per unit "
-        "length along the obstacle; \"from the stresses\" the same taken from the body's stresses.</p>\n";
+        "length along the obstacle; \"from the stresses\" the same taken from the body's stresses "
+        "(dashed, cut off where it leaves the frame).</p>\n";
   int n_pairs = 0;
   for (const int k : t.pair) n_pairs = std::max(n_pairs, k + 1);
   for (int k = 0; k < n_pairs; ++k) {
@@ -548,7 +551,7 @@ std::string history_section(const json& summary) {
     const bool distance = std::string(c->key) == "distance";
     if (c->to_percent <= 0 && !distance) continue;
     post::PlotSeries s{c->to_percent == 100 ? std::string(c->label) + " × 100 (%)" : c->label, c->key,
-                       {}, {}, true, false};
+                       {}, {}, true, false, true};
     for (size_t i = 0; i < history->size(); ++i) {
       const json* x = at_key((*history)[i], hp ? "dofs" : "iteration");
       const json* y = at_key((*history)[i], c->key);

@@ -68,7 +68,7 @@ std::string convergence_plot(const std::vector<StudyRowResult>& rows, const std:
   plot.log_x = plot.log_y = true;
   for (const auto& c : columns) {
     if (!error_column(c)) continue;
-    post::PlotSeries s{c, c, {}, {}, true, false};
+    post::PlotSeries s{c, c, {}, {}, true, false, true};
     bool any = false;
     for (const size_t i : order) {
       const auto v = number_of(study_cell(rows[i], c));

@@ -152,7 +152,10 @@ std::vector<double> axis_ticks(double lo, double hi, bool logarithmic) {
 std::string line_plot_svg(const LinePlot& plot) {
   const double left = 84, right = 20, top = 30, bottom = 52;
   std::vector<double> xs, ys;
-  for (const auto& s : plot.series)
+  const bool any_sets = std::any_of(plot.series.begin(), plot.series.end(),
+                                    [](const PlotSeries& s) { return s.sets_range; });
+  for (const auto& s : plot.series) {
+    if (any_sets && !s.sets_range) continue;
     for (size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
       const bool x_ok = std::isfinite(s.x[i]) && (!plot.log_x || s.x[i] > 0);
       const bool y_ok = std::isfinite(s.y[i]) && (!plot.log_y || s.y[i] > 0);
@@ -161,6 +164,7 @@ std::string line_plot_svg(const LinePlot& plot) {
         ys.push_back(s.y[i]);
       }
     }
+  }
   const auto xr = axis_range(xs, plot.log_x), yr = axis_range(ys, plot.log_y);
   const Axis x{xr[0], xr[1], plot.log_x, left, plot.width - right};
   const Axis y{yr[0], yr[1], plot.log_y, plot.height - bottom, top};
@@ -171,6 +175,10 @@ std::string line_plot_svg(const LinePlot& plot) {
   svg << "<text x=\"" << px(0.5 * (x.p0 + x.p1)) << "\" y=\"18\" text-anchor=\"middle\" "
       << "font-weight=\"bold\">" << escape_html(plot.title) << "</text>\n";
   draw_axes(svg, x, y, plot.x_label, plot.y_label);
+  const std::string clip = "clip-" + escape_html(plot.figure);
+  svg << "<defs><clipPath id=\"" << clip << "\"><rect x=\"" << px(x.p0) << "\" y=\"" << px(y.p1)
+      << "\" width=\"" << px(x.p1 - x.p0) << "\" height=\"" << px(y.p0 - y.p1)
+      << "\"/></clipPath></defs>\n";
   if (xs.empty())
     svg << "<text x=\"" << px(0.5 * (x.p0 + x.p1)) << "\" y=\"" << px(0.5 * (y.p0 + y.p1))
         << "\" text-anchor=\"middle\">no values to plot</text>\n";
@@ -179,7 +187,7 @@ std::string line_plot_svg(const LinePlot& plot) {
     const std::string colour = kSeriesColours[k % std::size(kSeriesColours)];
     const std::string dash = s.dashed ? " stroke-dasharray=\"6 3\"" : "";
     for (const auto& piece : pieces(s, x, y)) {
-      svg << "<polyline class=\"series\" data-series=\"" << escape_html(s.role)
+      svg << "<polyline clip-path=\"url(#" << clip << ")\" class=\"series\" data-series=\"" << escape_html(s.role)
           << "\" fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"1.6\"" << dash
           << " points=\"";
       for (size_t i = 0; i < piece.size(); ++i)
@@ -187,7 +195,7 @@ std::string line_plot_svg(const LinePlot& plot) {
       svg << "\"/>\n";
       if (s.markers)
         for (const auto& p : piece)
-          svg << "<circle cx=\"" << px(p[0]) << "\" cy=\"" << px(p[1]) << "\" r=\"2.5\" fill=\""
+          svg << "<circle clip-path=\"url(#" << clip << ")\" cx=\"" << px(p[0]) << "\" cy=\"" << px(p[1]) << "\" r=\"2.5\" fill=\""
               << colour << "\"/>\n";
     }
     const double row = plot.height + 18.0 * k + 10;
@@ -274,6 +282,7 @@ std::string field_plot_svg(const FieldPlot& plot) {
   const double area_h = scale * (w[3] - w[2]);
   const int height = static_cast<int>(std::ceil(top + area_h + bottom));
   const double drawn_w = scale * (w[1] - w[0]);
+  const int width = static_cast<int>(std::ceil(left + drawn_w + right));
   const Axis x{w[0], w[1], false, left, left + drawn_w};
   const Axis y{w[2], w[3], false, top + area_h, top};
   std::ostringstream svg;
@@ -291,8 +300,8 @@ std::string field_plot_svg(const FieldPlot& plot) {
             << px1(y.to_px(plot.cells[c][k].y()));
     cells << "\"/>\n";
   }
-  svg << svg_open(plot.figure, plot.width, height, " data-cells=\"" + std::to_string(n_drawn) + "\"");
-  svg << "<text x=\"" << px(0.5 * plot.width) << "\" y=\"18\" text-anchor=\"middle\" "
+  svg << svg_open(plot.figure, width, height, " data-cells=\"" + std::to_string(n_drawn) + "\"");
+  svg << "<text x=\"" << px(0.5 * (x.p0 + x.p1)) << "\" y=\"18\" text-anchor=\"middle\" "
       << "font-weight=\"bold\">" << escape_html(plot.title) << "</text>\n";
   const std::string clip = "clip-" + escape_html(plot.figure);
   svg << "<defs><clipPath id=\"" << clip << "\"><rect x=\"" << px(x.p0) << "\" y=\"" << px(y.p1)
@@ -308,7 +317,7 @@ std::string field_plot_svg(const FieldPlot& plot) {
   svg << "</g>\n";
   draw_axes(svg, x, y, "x", "y");
   draw_colour_bar(svg, plot, left + drawn_w + 18, top, top + area_h);
-  svg << "<text transform=\"translate(" << px(plot.width - 8) << ',' << px(top + 0.5 * area_h)
+  svg << "<text transform=\"translate(" << px(width - 8) << ',' << px(top + 0.5 * area_h)
       << ") rotate(-90)\" text-anchor=\"middle\" class=\"label\">" << escape_html(plot.value_label)
       << "</text>\n</svg>\n";
   return svg.str();

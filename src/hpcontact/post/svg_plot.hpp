@@ -19,6 +19,9 @@ struct PlotSeries {
   std::vector<double> x, y;   ///< the same length
   bool markers = false;       ///< a dot at every point
   bool dashed = false;
+  /// Whether the axes' ranges take in this series; a series that does not is clipped at the
+  /// frame (a curve with a spike that would flatten the others).
+  bool sets_range = true;
 };
 
 struct LinePlot {
@@ -31,7 +34,8 @@ struct LinePlot {
 
 /// The plot as an <svg> element: a frame with ticks and their values, the axis labels, the
 /// title above, a polyline per series (class "series", data-series = role, one point per
-/// drawn point) and the legend below the axes, a line per series.
+/// drawn point; clipped at the frame) and the legend below the axes, a line per series. The
+/// axes span the series that set the range (all if none does).
 std::string line_plot_svg(const LinePlot& plot);
 
 /// A scalar field on quadrilateral cells of the deformed mesh.
@@ -49,7 +53,8 @@ struct FieldPlot {
 
 /// The field as an <svg> element: cells filled by a perceptually uniform colour map (dark blue
 /// at value_min to yellow at value_max; polygons of class "cell", only those that reach into
-/// the window; the count in data-cells), the outlines, axes with ticks and a colour bar.
+/// the window; the count in data-cells), the outlines, axes with ticks and a colour bar. The
+/// figure is `width` wide at most (narrower for a tall window).
 std::string field_plot_svg(const FieldPlot& plot);
 
 /// The colour of t ∈ [0, 1] (clamped) on the field plot's map, as "#rrggbb".
