@@ -269,17 +269,18 @@ const std::vector<Quantity> kPairQuantities = {
 
 std::string numbers_section(const json& summary, const Units& units) {
   std::ostringstream os;
-  os << "<h2>Key numbers</h2>\n<table data-table=\"numbers\"><tr><th>quantity</th><th>value</th>"
-        "<th>unit</th></tr>\n"
-     << quantity_rows(summary, "", kRunQuantities, units) << "</table>\n";
+  os << "<h2>Key numbers</h2>\n<div class=\"row\">\n<div><h3>The run</h3>\n<table data-table=\"numbers\">"
+        "<tr><th>quantity</th><th>value</th><th>unit</th></tr>\n"
+     << quantity_rows(summary, "", kRunQuantities, units) << "</table></div>\n";
   const json* pairs = at_key(summary, "contact_pairs");
   if (pairs && pairs->is_array())
     for (size_t k = 0; k < pairs->size(); ++k) {
-      os << "<h3>Pair " << k << " (body " << value_text((*pairs)[k].value("body", json(""))) << ")</h3>\n"
+      os << "<div><h3>Pair " << k << " (body " << value_text((*pairs)[k].value("body", json(""))) << ")</h3>\n"
          << "<table data-table=\"pair-numbers\"><tr><th>quantity</th><th>value</th><th>unit</th></tr>\n"
          << quantity_rows(summary, "contact_pairs." + std::to_string(k) + ".", kPairQuantities, units)
-         << "</table>\n";
+         << "</table></div>\n";
     }
+  os << "</div>\n";
   return os.str();
 }
 
@@ -413,9 +414,10 @@ std::string contact_section(const RunReport& r, const Units& units) {
       shear.series.push_back(column_series(t, rows, t.shear_from_stress,
                                            "shear from the stresses, " + body, "shear_from_stress", true));
     }
-    os << "<h3>Pair " << k << "</h3>\n" << post::line_plot_svg(pressure);
+    os << "<h3>Pair " << k << "</h3>\n<div class=\"row\">\n" << post::line_plot_svg(pressure);
     const bool friction = static_cast<size_t>(k) < r.spec.contact.size() && r.spec.contact[k].friction.law != "none";
     if (friction) os << post::line_plot_svg(shear);
+    os << "</div>\n";
   }
   return os.str();
 }
@@ -482,13 +484,14 @@ std::string field_section(const RunReport& r, const Units& units) {
   if (clipped)
     os << "; colours clipped at " << post::short_number(p995) << " (99.5 % of the cells lie below: "
        << "the largest values are a few cells' near a singular point)";
-  os << ".</p>\n" << post::field_plot_svg(plot);
+  os << ".</p>\n<div class=\"row\">\n" << post::field_plot_svg(plot);
   if (const auto window = contact_window(r.contact, cells)) {
     plot.figure = "von-mises-contact";
     plot.title = "von Mises stress near the contact zone";
     plot.window = window;
     os << post::field_plot_svg(plot);
   }
+  os << "</div>\n";
   return os.str();
 }
 

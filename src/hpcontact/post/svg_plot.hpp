@@ -29,7 +29,7 @@ struct LinePlot {
   std::string title, x_label, y_label;
   bool log_x = false, log_y = false;
   std::vector<PlotSeries> series;
-  int width = 640, height = 340;  ///< of the plot without its legend [px]
+  int width = 540, height = 320;  ///< of the plot without its legend [px]
 };
 
 /// The plot as an <svg> element: a frame with ticks and their values, the axis labels, the
@@ -48,7 +48,7 @@ struct FieldPlot {
   double value_min = 0, value_max = 1;     ///< the colour bar's range (values outside it clipped)
   /// The part of the plane shown {x_min, x_max, y_min, y_max}; none: every cell.
   std::optional<std::array<double, 4>> window;
-  int width = 640, max_height = 520;  ///< [px]; lengths are drawn to one scale in x and y
+  int width = 540, max_height = 480;  ///< [px]; lengths are drawn to one scale in x and y
 };
 
 /// The field as an <svg> element: cells filled by a perceptually uniform colour map (dark blue
