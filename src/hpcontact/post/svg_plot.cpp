@@ -136,15 +136,17 @@ std::vector<double> axis_ticks(double lo, double hi, bool logarithmic) {
     }
     return ticks;
   }
-  const double raw = (hi - lo) / 6;
-  const double power = std::pow(10.0, std::floor(std::log10(raw)));
-  double step = power;
+  // the finest of 1, 2, 5 times a power of ten that gives at most 10 ticks: the one before gave
+  // more than 10 with a step at most 2.5 times finer, so this one gives at least 4
+  const double power = std::pow(10.0, std::floor(std::log10((hi - lo) / 10)));
+  auto count = [&](double step) { return std::floor(hi / step + 1e-9) - std::ceil(lo / step - 1e-9) + 1; };
+  double step = 10 * power;
   for (const double m : {1.0, 2.0, 5.0, 10.0})
-    if (m * power >= raw) {
+    if (count(m * power) <= 10) {
       step = m * power;
       break;
     }
-  for (double k = std::ceil(lo / step); k * step <= hi + 1e-9 * step; k += 1)
+  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + 1e-9 * step; k += 1)
     ticks.push_back(std::abs(k * step) < 1e-9 * step ? 0.0 : k * step);
   return ticks;
 }
