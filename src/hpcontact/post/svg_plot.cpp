@@ -118,6 +118,7 @@ std::string svg_open(const std::string& figure, int width, int height,
 std::vector<double> axis_ticks(double lo, double hi, bool logarithmic) {
   std::vector<double> ticks;
   if (!(lo < hi) || !std::isfinite(lo) || !std::isfinite(hi)) return ticks;
+  if (hi - lo <= 1e-12 * std::max(std::abs(lo), std::abs(hi))) return {0.5 * (lo + hi)};
   if (logarithmic) {
     if (!(lo > 0)) return ticks;
     const int k0 = static_cast<int>(std::floor(std::log10(lo))), k1 = static_cast<int>(std::ceil(std::log10(hi)));
@@ -140,14 +141,19 @@ std::vector<double> axis_ticks(double lo, double hi, bool logarithmic) {
   // more than 10 with a step at most 2.5 times finer, so this one gives at least 4
   const double power = std::pow(10.0, std::floor(std::log10((hi - lo) / 10)));
   auto count = [&](double step) { return std::floor(hi / step + 1e-9) - std::ceil(lo / step - 1e-9) + 1; };
-  double step = 10 * power;
-  for (const double m : {1.0, 2.0, 5.0, 10.0})
+  double step = 20 * power;  // (hi - lo) / power is below 100: 20 gives at most 6
+  for (const double m : {1.0, 2.0, 5.0, 10.0, 20.0})
     if (count(m * power) <= 10) {
       step = m * power;
       break;
     }
-  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + 1e-9 * step; k += 1)
-    ticks.push_back(std::abs(k * step) < 1e-9 * step ? 0.0 : k * step);
+  // k counted in integers: for a range of a few ulps (a uniform field's round-off) k * step
+  // would be beyond 2^53, where k + 1 == k
+  const double k0 = std::ceil(lo / step - 1e-9);
+  for (int i = 0; i < 10 && (k0 + i) * step <= hi + 1e-9 * step; ++i) {
+    const double v = (k0 + i) * step;
+    ticks.push_back(std::abs(v) < 1e-9 * step ? 0.0 : v);
+  }
   return ticks;
 }
 

@@ -61,7 +61,8 @@ std::string field_plot_svg(const FieldPlot& plot);
 std::string field_colour(double t);
 
 /// Tick positions for an axis over [lo, hi]: steps of 1, 2 or 5 times a power of ten, 4 to 10
-/// of them, within [lo, hi] (to 1e-9 of a step); logarithmic (lo > 0): the powers of ten inside, with 2 and 5 times
+/// of them, within [lo, hi] (to 1e-9 of a step); a range of round-off (1e-12 relative, a uniform
+/// field's): its middle alone; logarithmic (lo > 0): the powers of ten inside, with 2 and 5 times
 /// them when fewer than three powers fall inside.
 std::vector<double> axis_ticks(double lo, double hi, bool logarithmic);
 
