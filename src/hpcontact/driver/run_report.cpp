@@ -519,6 +519,39 @@ const std::vector<HistoryColumn> kHistoryColumns = {
     {"estimated_error.shear_rel_L2", "estimated shear error", 100},
     {"estimated_error.energy_rel", "estimated energy error", 100}};
 
+/// A column of the loop's history against DOF (hp) or the iteration (rp), times `factor`.
+post::PlotSeries history_series(const json& history, const std::string& key, const std::string& name,
+                                bool hp, double factor) {
+  post::PlotSeries s{name, key, {}, {}, true, false, true};
+  for (const auto& entry : history) {
+    const json* x = at_key(entry, hp ? "dofs" : "iteration");
+    const json* y = at_key(entry, key);
+    s.x.push_back(x && x->is_number() ? x->get<double>() : NAN);
+    s.y.push_back(y && y->is_number() ? y->get<double>() * factor : NAN);
+  }
+  return s;
+}
+
+/// hp: the errors against DOF, log-log; rp: against the iteration (the DOF do not change), with
+/// the nodes' distance to Γ*; without an error measure, the strain energy.
+std::string history_plot(const json& history, const std::vector<const HistoryColumn*>& columns, bool hp) {
+  auto plot = plot_of("history", hp ? "Errors against DOF" : "Errors and distance by iteration",
+                      hp ? "DOF" : "iteration", hp ? "error (%)" : "error (%), distance (length)", hp, true);
+  for (const auto* c : columns) {
+    const bool distance = std::string(c->key) == "distance";
+    if (c->to_percent <= 0 && !distance) continue;
+    const std::string name = c->to_percent == 100 ? std::string(c->label) + " × 100 (%)" : c->label;
+    plot.series.push_back(history_series(history, c->key, name, hp, distance ? 1 : c->to_percent));
+  }
+  if (plot.series.empty()) {
+    plot.title = hp ? "Strain energy against DOF" : "Strain energy by iteration";
+    plot.y_label = "strain energy";
+    plot.log_y = false;
+    plot.series.push_back(history_series(history, "strain_energy", "strain energy", hp, 1));
+  }
+  return post::line_plot_svg(plot);
+}
+
 std::string history_section(const json& summary) {
   const json* history = at_key(summary, "adapt.history");
   if (!history || !history->is_array() || history->empty()) return "";
@@ -545,25 +578,8 @@ std::string history_section(const json& summary) {
   os << "</table></div>\n";
   if (result_step >= 0) os << "<p class=\"note\">In bold: the step kept as the result.</p>\n";
   os << "<p class=\"note\">The lines join the " << (method == "hp" ? "steps" : "iterations")
-     << " in their order (the first on the input's mesh).</p>\n";
-  // hp: errors against DOF, log-log; rp: against the iteration (the DOF do not change)
-  const bool hp = method == "hp";
-  auto plot = plot_of("history", hp ? "Errors against DOF" : "Errors and distance by iteration",
-                      hp ? "DOF" : "iteration", hp ? "error (%)" : "error (%), distance (length)", hp, true);
-  for (const auto* c : columns) {
-    const bool distance = std::string(c->key) == "distance";
-    if (c->to_percent <= 0 && !distance) continue;
-    post::PlotSeries s{c->to_percent == 100 ? std::string(c->label) + " × 100 (%)" : c->label, c->key,
-                       {}, {}, true, false, true};
-    for (size_t i = 0; i < history->size(); ++i) {
-      const json* x = at_key((*history)[i], hp ? "dofs" : "iteration");
-      const json* y = at_key((*history)[i], c->key);
-      s.x.push_back(x && x->is_number() ? x->get<double>() : NAN);
-      s.y.push_back(y && y->is_number() ? y->get<double>() * (distance ? 1 : c->to_percent) : NAN);
-    }
-    plot.series.push_back(s);
-  }
-  if (!plot.series.empty()) os << post::line_plot_svg(plot);
+     << " in their order (the first on the input's mesh).</p>\n"
+     << history_plot(*history, columns, method == "hp");
   return os.str();
 }
 

@@ -122,7 +122,7 @@ std::vector<double> axis_ticks(double lo, double hi, bool logarithmic) {
   if (logarithmic) {
     if (!(lo > 0)) return ticks;
     const int k0 = static_cast<int>(std::floor(std::log10(lo))), k1 = static_cast<int>(std::ceil(std::log10(hi)));
-    const int every = std::max(1, (k1 - k0) / 8);  // at most about 8 decades labelled
+    const int every = std::max(1, (k1 - k0 + 7) / 8);  // at most 9 decades labelled
     for (int k = k0; k <= k1; ++k) {
       const double v = std::pow(10.0, k);
       if (v >= lo * (1 - 1e-12) && v <= hi * (1 + 1e-12) && (k - k0) % every == 0) ticks.push_back(v);
