@@ -120,6 +120,7 @@ TEST(AxisTicks, NiceStepsInsideTheRange) {
   const double one = 1.0, ulps = std::nextafter(std::nextafter(one, 2.0), 2.0);
   EXPECT_EQ(post::axis_ticks(one, ulps, false).size(), 1u);
   EXPECT_EQ(post::axis_ticks(0.02, 3000, true), (std::vector<double>{0.1, 1, 10, 100, 1000}));
+  EXPECT_LE(post::axis_ticks(1e-12, 50, true).size(), 10u);  // 14 decades: every second
   const auto few = post::axis_ticks(0.3, 40, true);
   EXPECT_EQ(few, (std::vector<double>{0.5, 1, 2, 5, 10, 20}));
 }
