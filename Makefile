@@ -25,7 +25,7 @@ run: program
 	@$(PYTHON) scripts/plot_field.py results/hertz-p8/solution.vtu --xlim 0 4 --ylim -0.5 3 --out results/hertz-p8/von_mises.png
 	@$(PYTHON) scripts/study_table.py examples/hertz/table-5-1.yaml --hpcontact $(BUILD_DIR)/hpcontact --out results/table-5-1 --jobs $(JOBS)
 	@$(BUILD_DIR)/hpcontact run examples/lame/thick-cylinder.yaml --out results/lame
-	@echo "results: results/hertz-p8/ (summary.json, pressure.png, von_mises.png, pressure.csv, contact.csv, solution.vtu, contact.vtu), results/table-5-1/ (table.md, study.csv, pressure.png: the dissertation's Table 5.1 rows), results/lame/ (summary.json, solution.vtu); open the .vtu files in ParaView"
+	@echo "results: results/hertz-p8/ (report.html, summary.json, pressure.png, von_mises.png, pressure.csv, contact.csv, solution.vtu, contact.vtu), results/table-5-1/ (report.html, table.md, study.csv, pressure.png: the dissertation's Table 5.1 rows), results/lame/ (report.html, summary.json, solution.vtu); open report.html in a browser, the .vtu files in ParaView"
 
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -LE slow

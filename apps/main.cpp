@@ -355,7 +355,8 @@ int study_result(const std::vector<driver::StudyRowResult>& rows, const std::str
   if (!quiet)
     std::cout << "  " << converged << " of " << rows.size() << " runs converged; table in "
               << printable(out_dir) << "/study.csv, summaries in " << printable(out_dir)
-              << "/study.json, runs in " << printable(out_dir) << "/runs/\n";
+              << "/study.json, the page to read in " << printable(out_dir) << "/report.html, runs in "
+              << printable(out_dir) << "/runs/\n";
   return converged == static_cast<long>(rows.size()) ? 0 : kFailed;
 }
 

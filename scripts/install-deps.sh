@@ -7,7 +7,8 @@
 #                           which loops for ever when its 128 MB buffer cannot be mapped under an
 #                           address-space limit; Slurm's daemons and
 #                           client for the test of `hpcontact study --executor slurm`, which
-#                           starts its own private cluster: the packages' services stay unused)
+#                           starts its own private cluster: the packages' services stay unused;
+#                           Chromium, which the test of report.html renders it with, headless)
 #   install-deps.sh fuzz    and clang's libFuzzer for `make fuzz`
 set -euo pipefail
 
@@ -19,6 +20,7 @@ packages=(
   python3-meshio
   gmsh
   slurmctld slurmd slurm-client
+  chromium
 )
 
 if [ "${1:-}" = fuzz ]; then

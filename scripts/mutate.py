@@ -28,7 +28,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 238 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
+--list prints them. A run of all 244 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp (but for its adjoint and its load-step cuts) and contact/penalty.cpp,
@@ -1357,6 +1357,37 @@ MUTATIONS = [
              "    if (false && taken[dof - body.dof_offset]) return;",
              "a dof two constraint entries prescribe counts in both reactions",
              ["cli:tests/cli/test_reactions.py::test_a_dof_two_entries_hold_belongs_to_the_first"]),
+    Mutation("report-numbers-six-digits", "driver", S + "driver/run_report.cpp",
+             "  if (v.is_number()) return post::number_text(v.get<double>());",
+             "  if (v.is_number()) return post::short_number(v.get<double>());",
+             "report.html prints summary.json's numbers to 6 digits (%g), not 10",
+             ["cli:tests/cli/test_report.py::test_hp_run_report_shows_summary_numbers_and_figures"]),
+    Mutation("report-less-than-unescaped", "post", S + "post/html_text.cpp",
+             "      case '<': out += \"&lt;\"; break;",
+             "      case '<': out += \"<\"; break;",
+             "a user's '<' goes into report.html as markup",
+             ["cli:tests/cli/test_report.py::test_user_strings_are_escaped",
+              "HtmlText.EscapedAndTenDigits"]),
+    Mutation("report-failure-looks-converged", "driver", S + "driver/run_report.cpp",
+             "  if (summary.value(\"converged\", false))",
+             "  if (summary.contains(\"converged\"))",
+             "a failed run's report says it converged (the key's presence read, not its value)",
+             ["cli:tests/cli/test_report.py::test_failed_run_report_says_so"]),
+    Mutation("report-field-undeformed", "post", S + "post/field_cells.cpp",
+             "      grid[at(i, j)] = r.x + r.u;",
+             "      grid[at(i, j)] = r.x;",
+             "von Mises drawn on the undeformed mesh",
+             ["FieldCells.UniformStrainOnTheDeformedBlock"]),
+    Mutation("report-pressure-plots-traction", "driver", S + "driver/run_report.cpp",
+             "      pressure.series.push_back(column_series(t, rows, t.pressure, ",
+             "      pressure.series.push_back(column_series(t, rows, t.traction, ",
+             "the pressure plot draws the multiplier per undeformed length, not the pressure along the obstacle",
+             ["cli:tests/cli/test_report.py::test_hp_run_report_shows_summary_numbers_and_figures"]),
+    Mutation("study-report-rows-one-based", "driver", S + "driver/study_report.cpp",
+             "      os << \"<td\" << (number_of(text) ? \" class=\\\"num\\\"\" : \"\") << \" data-row=\\\"\" << i",
+             "      os << \"<td\" << (number_of(text) ? \" class=\\\"num\\\"\" : \"\") << \" data-row=\\\"\" << i + 1",
+             "the study report's cells name their rows from 1, one off study.csv's",
+             ["cli:tests/cli/test_report.py::test_study_report_table_equals_study_csv"]),
 ]
 
 

@@ -185,8 +185,8 @@ def test_a_later_run_replaces_only_its_own_files(hpcontact, root, tmp_path):
     (out / "last-good" / "notes.txt").write_text("mine too")
     r = hpcontact("run", os.path.join(root, LAME), "--out", out, "-q")
     assert r.returncode == 0, r.stderr
-    assert sorted(results(out)) == ["input.yaml", "last-good/notes.txt", "solution.vtu",
-                                    "summary.json"]
+    assert sorted(results(out)) == ["input.yaml", "last-good/notes.txt", "report.html",
+                                    "solution.vtu", "summary.json"]
 
 
 def test_planted_links_are_never_followed(hpcontact, root, tmp_path):

@@ -18,6 +18,7 @@
 #include "hpcontact/driver/contact_history.hpp"
 #include "hpcontact/driver/contact_json.hpp"
 #include "hpcontact/driver/reaction_report.hpp"
+#include "hpcontact/driver/run_report.hpp"
 #include "hpcontact/driver/solution_warnings.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/core/stop.hpp"
@@ -91,7 +92,7 @@ bool run_output(const std::string& relative, bool folder) {
   const auto slash = r.find('/');
   if (slash == std::string::npos) {
     if (folder) return r == "rp" || r == "hp" || r == "steps";
-    for (const char* name : {"summary.json", "input.yaml", "contact.csv", "pressure.csv", "path.csv",
+    for (const char* name : {"summary.json", "report.html", "input.yaml", "contact.csv", "pressure.csv", "path.csv",
                              "contact_history.csv", "mesh.yaml", "solution.vtu", "contact.vtu", "solution.pvd",
                              "contact.pvd"})
       if (r == name) return true;
@@ -439,11 +440,14 @@ RunResult run_problem(const model::ProblemSpec& input, const RunOptions& options
 
   RunResult result;
   post::Summary& s = result.summary;
-  auto write_summary = [&](const std::string& out_dir) {
+  // summary.json and report.html of the state `st` of `solved` (the input, or hp's last mesh)
+  auto write_summary = [&](const std::string& out_dir, const model::ProblemSpec& solved,
+                           const SolvedState& st) {
     s.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
     if (out_dir.empty()) return;
     post::write_summary((fs::path(out_dir) / "summary.json").string(), s);
     say(wrote(fs::path(out_dir), "summary.json"));
+    write_run_report(out_dir, {solved, post::to_json(s), result.contact, *st.d, st.u});
   };
 
   // The comparisons' preconditions are checked before anything is solved (on the input's mesh).
@@ -565,7 +569,7 @@ RunResult run_problem(const model::ProblemSpec& input, const RunOptions& options
     if (!out_dir.empty())
       post::write_text_file((fs::path(out_dir) / "mesh.yaml").string(), mesh_yaml(last->spec));
     s.converged = converged;
-    write_summary(out_dir);
+    write_summary(out_dir, last->spec, st);
     if (folder) {
       if (converged)
         folder->commit();
@@ -690,7 +694,7 @@ RunResult run_problem(const model::ProblemSpec& input, const RunOptions& options
         write_path(spec, sol, history, result.reaction_history, good);
         s.converged = false;
         s.extra["message"] = sol.message;
-        write_summary(good);
+        write_summary(good, spec, last);
         std::ostringstream os;
         os << "; the last converged load step (";
         if (sol.displacement_factors.x() != sol.displacement_factors.y())
@@ -719,7 +723,7 @@ RunResult run_problem(const model::ProblemSpec& input, const RunOptions& options
   post_process(spec, st, stage, options, comparisons, result);
   s.converged = true;
   result.u = st.u;
-  write_summary(stage);
+  write_summary(stage, spec, st);
   // Asked to stop while solving a step that has no Newton iteration left to end at (a linear
   // solve, the last iteration): the run still ends as stopped, as its scheduler reports it, and
   // the folder keeps what it held (the adaptive loops' result above goes to last-good/).

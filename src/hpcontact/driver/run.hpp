@@ -49,7 +49,7 @@ struct RunResult {
   std::vector<ContactHistoryRow> contact_history;
 };
 
-/// The files a run writes into its output folder: summary.json (the marker), input.yaml,
+/// The files a run writes into its output folder: summary.json (the marker), report.html, input.yaml,
 /// contact.csv, pressure.csv, path.csv, mesh.yaml, solution.vtu/.pvd, contact.vtu/.pvd, rp/ and hp/
 /// (pressure-N.csv), steps/ (step-NNNN.vtu, contact-NNNN.vtu), and all of these in last-good/.
 FolderLayout run_layout();

@@ -146,7 +146,7 @@ bool study_output(const std::string& relative, bool folder) {
     const std::string rest = relative.substr(8);
     return rest.rfind("runs", 0) == 0 && study_output(rest, folder);
   }
-  if (relative == "study.csv" || relative == "study.json") return !folder;
+  if (relative == "study.csv" || relative == "study.json" || relative == "report.html") return !folder;
   if (relative == "slurm/submission.json" || relative == "slurm/array.sh") return !folder;
   if (relative == "runs" || relative == "slurm") return folder;
   if (relative.rfind("runs/", 0) != 0) return false;

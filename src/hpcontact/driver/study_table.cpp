@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "hpcontact/driver/study_report.hpp"
 #include "hpcontact/post/output_file.hpp"
 
 namespace hpcontact::driver {
@@ -89,6 +90,24 @@ nlohmann::json read_summary(const std::string& run_dir) {
   return summary.is_discarded() ? nlohmann::json() : summary;
 }
 
+std::string study_cell(const StudyRowResult& row, const std::string& column) {
+  if (column == "label") return row.run.label;
+  if (column == "case") return row.run.case_file;
+  if (column == "converged") return row.converged() ? "true" : "false";
+  if (column == "message") return row.converged() ? "" : row.message;
+  if (column == "run_dir") return row.run_dir;
+  if (column.rfind("seed_", 0) == 0) {
+    for (const auto& [k, v] : row.run.seed)
+      if ("seed_" + k == column) {
+        std::ostringstream os;
+        os << std::setprecision(12) << v;
+        return os.str();
+      }
+    return "";
+  }
+  return row.summary.is_object() ? json_cell(at_path(row.summary, column)) : "";
+}
+
 std::vector<std::string> study_columns(const io::StudySpec& study,
                                        const std::vector<StudyRowResult>& rows) {
   std::vector<std::string> cols = {"label", "case", "converged", "dofs", "wall_time_s",
@@ -128,29 +147,12 @@ void write_study_tables(const io::StudySpec& study, const std::vector<StudyRowRe
     if (row.summary.is_object()) j["summary"] = row.summary;
     for (const auto& [k, v] : row.run.seed) j["seed"][k] = v;
     all.push_back(j);
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      const std::string& col = columns[c];
-      std::string cell;
-      if (col == "label") cell = row.run.label;
-      else if (col == "case") cell = row.run.case_file;
-      else if (col == "converged") cell = row.converged() ? "true" : "false";
-      else if (col == "message") cell = row.converged() ? "" : row.message;
-      else if (col == "run_dir") cell = row.run_dir;
-      else if (col.rfind("seed_", 0) == 0) {
-        for (const auto& [k, v] : row.run.seed)
-          if ("seed_" + k == col) {
-            std::ostringstream os;
-            os << std::setprecision(12) << v;
-            cell = os.str();
-          }
-      } else if (row.summary.is_object()) {
-        cell = json_cell(at_path(row.summary, col));
-      }
-      csv << (c ? "," : "") << csv_field(cell);
-    }
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      csv << (c ? "," : "") << csv_field(study_cell(row, columns[c]));
     csv << '\n';
   }
   post::write_text_file((fs::path(out_dir) / "study.csv").string(), csv.str());
+  write_study_report(out_dir, study, rows, columns);
   nlohmann::json doc = {{"study", study.name}, {"file", study.file}, {"runs", all}};
   if (!study.title.empty()) doc["title"] = study.title;
   // a path of bytes that are not UTF-8 (a file name) has them as U+FFFD: the file stays JSON

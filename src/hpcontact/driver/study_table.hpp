@@ -37,8 +37,13 @@ nlohmann::json read_summary(const std::string& run_dir);
 std::vector<std::string> study_columns(const io::StudySpec& study,
                                        const std::vector<StudyRowResult>& rows);
 
+/// The text of a row's cell in a column of study.csv (numbers to 12 digits; "" where the row has
+/// no value).
+std::string study_cell(const StudyRowResult& row, const std::string& column);
+
 /// Writes DIR/study.csv (a line per row, study_columns()) and DIR/study.json (every row with its
-/// summary); docs/study.md describes both. IoError if a file cannot be written.
+/// summary) and DIR/report.html (the table and a log-log plot of its error measures against DOF);
+/// docs/study.md describes them. IoError if a file cannot be written.
 void write_study_tables(const io::StudySpec& study, const std::vector<StudyRowResult>& rows,
                         const std::string& dir);
 
