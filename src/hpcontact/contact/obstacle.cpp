@@ -116,12 +116,6 @@ double RigidProfile::gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const {
   return g;
 }
 
-Vec2 RigidProfile::tangent(const Vec2& x) const {
-  Vec2 n;
-  gap(x, &n, nullptr);
-  return Vec2(n.y(), -n.x());
-}
-
 std::string RigidProfile::describe() const {
   const auto& p = profile_.spec().points;
   std::ostringstream os;

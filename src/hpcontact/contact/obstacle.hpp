@@ -98,8 +98,6 @@ public:
   double gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const override;
   std::string describe() const override;
   const geometry::Profile& profile() const { return profile_; }
-  /// The profile's unit tangent at the closest point to x (along the chain's direction).
-  Vec2 tangent(const Vec2& x) const;
 
 private:
   geometry::Profile profile_;

@@ -145,7 +145,7 @@ std::optional<ProfileFault> fillet_misfit(const ProfileSpec& spec, const Chain& 
                number(c.tangent_length[other]);
     cause += ": a fillet's arc must fit between its corner's neighbours (r tan(θ/2) from the "
              "corner, θ its turn)";
-    return ProfileFault{"fillet", spec.fillets.size() == 1 ? -1 : c.corner(at), cause};
+    return ProfileFault{"fillet", c.corner(at), cause};
   }
   return std::nullopt;
 }
@@ -244,6 +244,16 @@ Profile::Profile(ProfileSpec spec) : spec_(std::move(spec)) {
     p.end_normals = q.start_normals = a + b;
     p.sharp_end = q.sharp_start = std::abs(cross(a, b)) > 1e-12 || a.dot(b) < 0;
   }
+  starts_.assign(1, 0.0);
+  for (const Piece& p : pieces_)
+    starts_.push_back(starts_.back() + (p.arc ? p.radius * std::abs(p.turn) : p.length));
+}
+
+double Profile::arc_length(const Foot& foot) const {
+  const Piece& p = pieces_[foot.piece];
+  if (!p.arc) return starts_[foot.piece] + (foot.point - p.start).dot(p.direction);
+  const Vec2 a0 = p.start - p.centre, v = foot.point - p.centre;
+  return starts_[foot.piece] + p.radius * std::abs(std::atan2(cross(a0, v), a0.dot(v)));
 }
 
 Profile::Foot Profile::closest(const Vec2& x) const {

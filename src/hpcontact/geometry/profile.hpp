@@ -77,12 +77,19 @@ public:
   /// near ones the first along the chain.
   Foot closest(const Vec2& x) const;
 
+  /// The arc length along the chain from the first piece's start to a foot (negative on an open
+  /// profile's continuation before its start).
+  double arc_length(const Foot& foot) const;
+  /// The chain's length (a closed one's perimeter), continuations left out.
+  double length() const { return starts_.back(); }
+
   const std::vector<Piece>& pieces() const { return pieces_; }
   const ProfileSpec& spec() const { return spec_; }
 
 private:
   ProfileSpec spec_;
   std::vector<Piece> pieces_;
+  std::vector<double> starts_;  ///< arc length at each piece's start, then the total
 };
 
 }  // namespace hpcontact::geometry
