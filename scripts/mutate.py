@@ -224,7 +224,7 @@ MUTATIONS = [
              "const double s = v.dot(normals) >= 0 ? 1.0 : -1.0;",
              "const double s = 1.0;",
              "a profile's point beyond a concave corner taken as outside it",
-             ["RigidProfile.SharpConcaveCorner", "RigidProfile.DerivativesAgreeWithCentralDifferences"]),
+             ["RigidProfile.SharpConcaveCorner"]),
     Mutation("profile-corner-curvature", "contact", S + "contact/obstacle.cpp",
              "dn = s * (Mat2::Identity() - n * n.transpose()) / d;",
              "dn = s * (Mat2::Identity() - n * n.transpose()) / (2 * d);",
