@@ -521,10 +521,12 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "contact[].obstacle.point", .type = T::point, .default_yaml = "[0, 0]",
        .unit = "length",
        .doc = "plane: a point of the line, [x, y]; curve, profile: the origin of positions along "
-              "it (half width, pressure curves), which are measured along its tangent at the "
-              "point of the curve nearest to this one (the common tangent of the linear theory; "
-              "not the chord, which an asymmetric point list tilts), and the normal force along "
-              "its normal there."},
+              "it (half width, pressure curves). curve: they are measured along its tangent at "
+              "the point of the curve nearest to this one (the common tangent of the linear "
+              "theory; not the chord, which an asymmetric point list tilts); profile: as the arc "
+              "length along the profile from the point of it nearest to this one (one segment: "
+              "along it, as a plane's), and the normal force is measured along the profile's "
+              "normal there."},
       {.path = "contact[].obstacle.normal", .type = T::point, .default_yaml = "[0, 1]",
        .doc = "plane: normal pointing away from the obstacle towards the body, [nx, ny], non-zero "
               "(normalised when read)."},
