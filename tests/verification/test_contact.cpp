@@ -132,6 +132,37 @@ TEST(ContactTangent, AnalyticEqualsFiniteDifference) {
   const double curve = tangent_mismatch(d, curve_pairs[0], result.u, 1e-6);
   RecordProperty("mismatch_curve", std::to_string(curve));
   EXPECT_LT(curve, 1e-8);
+
+  // A profile whose concave corner 0.1 above the cylinder's bottom (a V of slopes ±0.06, about as
+  // deep as the undeformed body may start inside an obstacle) is rounded by a fillet of radius 10:
+  // penetrating points on the arc, whose normal turns with them (dn/dx = −(I − e eᵀ)/|x − c|).
+  // (A sharp corner's fan beyond it is too narrow here to hold a point: its dn/dx is checked in
+  // tests/unit/contact/test_rigid_profile.cpp.)
+  {
+    const double fillet = 10;
+    auto profile_spec = spec;
+    auto& o = profile_spec.contact[0].obstacle;
+    o.kind = model::ObstacleKind::profile;
+    o.points = {{-10.0, 0.1 + 0.06 * 10.3}, {0.3, 0.1}, {10.0, 0.1 + 0.06 * 9.7}};
+    o.fillets = {fillet};
+    auto profile_pairs = model::make_contact_pairs(profile_spec, d);
+    // Penetrating points whose foot is on the arc: what this case checks.
+    const auto& profile = dynamic_cast<const contact::RigidProfile&>(*profile_pairs[0].obstacle).profile();
+    const Eigen::VectorXd u = result.u.segment(d.bodies[0].dof_offset, d.bodies[0].dofs.n_dofs());
+    int turning = 0;
+    for (const auto& cp : profile_pairs[0].points) {
+      Vec2 x = cp.X;
+      for (size_t k = 0; k < cp.modes.size(); ++k)
+        x += cp.N(k) * Vec2(u(2 * cp.modes[k]), u(2 * cp.modes[k] + 1));
+      const auto foot = profile.closest(x);
+      if (profile.pieces()[foot.piece].arc && profile_pairs[0].obstacle->gap(x, nullptr, nullptr) < -1e-5) ++turning;
+    }
+    EXPECT_GE(turning, 3);
+    const double mismatch = tangent_mismatch(d, profile_pairs[0], result.u, 1e-6);
+    std::printf("profile's fillet: %d penetrating points on it, tangent mismatch %.3g\n", turning, mismatch);
+    RecordProperty("mismatch_profile_arc", std::to_string(mismatch));
+    EXPECT_LT(mismatch, 1e-8);
+  }
 }
 
 // A rigid curve through points of the plane y = 0 (a straight spline) is that plane: the Hertz

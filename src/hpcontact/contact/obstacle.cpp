@@ -1,4 +1,4 @@
-// Gap functions of the rigid plane, circle and curve.
+// Gap functions of the rigid plane, circle, curve and profile.
 #include "hpcontact/contact/obstacle.hpp"
 
 #include <sstream>
@@ -72,6 +72,56 @@ std::string RigidCurve::describe() const {
   std::ostringstream os;
   os << "curve(" << p.size() << " points from (" << p.front().x() << "," << p.front().y()
      << ") to (" << p.back().x() << "," << p.back().y() << "))";
+  return os.str();
+}
+
+RigidProfile::RigidProfile(geometry::ProfileSpec spec) : profile_(std::move(spec)) {}
+
+double RigidProfile::gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const {
+  const auto foot = profile_.closest(x);
+  const auto& piece = profile_.pieces()[foot.piece];
+  Vec2 n;
+  Mat2 dn = Mat2::Zero();
+  double g;
+  if (foot.end < 0 && !piece.arc) {
+    n = Vec2(-piece.direction.y(), piece.direction.x());
+    g = (x - piece.start).dot(n);
+  } else if (foot.end < 0) {
+    // The arc's circle: the body inside it where the chain turns left (towards the centre).
+    // (At the centre itself every point of the arc is as near: its start is taken.)
+    const Vec2 v = x - piece.centre;
+    const double rho = v.norm();
+    const Vec2 e = rho > 0 ? Vec2(v / rho) : Vec2((piece.start - piece.centre) / piece.radius);
+    const double s = piece.turn > 0 ? -1.0 : 1.0;
+    n = s * e;
+    g = s * (rho - piece.radius);
+    if (rho > 0) dn = s * (Mat2::Identity() - e * e.transpose()) / rho;
+  } else {
+    // A sharp corner: the body's side is the one the sum of the two pieces' normals points to.
+    const Vec2 normals = foot.end == 0 ? piece.start_normals : piece.end_normals;
+    const Vec2 v = x - foot.point;
+    const double d = v.norm();
+    const double s = v.dot(normals) >= 0 ? 1.0 : -1.0;
+    if (d > 0) {
+      n = s * v / d;
+      g = s * d;
+      dn = s * (Mat2::Identity() - n * n.transpose()) / d;
+    } else {
+      n = normals.normalized();
+      g = 0;
+    }
+  }
+  if (normal) *normal = n;
+  if (dnormal_dx) *dnormal_dx = dn;
+  return g;
+}
+
+std::string RigidProfile::describe() const {
+  const auto& p = profile_.spec().points;
+  std::ostringstream os;
+  os << "profile(" << (profile_.spec().closed ? "closed, " : "") << p.size() << " points from ("
+     << p.front().x() << "," << p.front().y() << ") to (" << p.back().x() << "," << p.back().y()
+     << "))";
   return os.str();
 }
 

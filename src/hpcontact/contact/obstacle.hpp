@@ -5,6 +5,7 @@
 #include <string>
 
 #include "hpcontact/geometry/cubic_spline.hpp"
+#include "hpcontact/geometry/profile.hpp"
 #include "hpcontact/geometry/vec2.hpp"
 
 namespace hpcontact::contact {
@@ -82,6 +83,24 @@ public:
 
 private:
   geometry::CubicSpline spline_;
+};
+
+/// A rigid obstacle bounded by a profile with corners (geometry::Profile: segments and fillet
+/// arcs, open or closed), the body on its left walking along it. The gap is the signed distance
+/// to the closest point of the chain: on a segment (x − a)·n with n its normal; on an arc that of
+/// its circle; at a corner v that x sees from its fan of normals, s |x − v| with
+/// n = s (x − v)/|x − v|, which turns with x: dn/dx = s (I − n nᵀ)/|x − v| (s = +1 outside the
+/// obstacle, at a convex corner of it; −1 inside, at a concave one). Where two segments of a
+/// concave corner are equally near (on its bisector) the first along the chain is taken.
+class RigidProfile final : public Obstacle {
+public:
+  explicit RigidProfile(geometry::ProfileSpec spec);
+  double gap(const Vec2& x, Vec2* normal, Mat2* dnormal_dx) const override;
+  std::string describe() const override;
+  const geometry::Profile& profile() const { return profile_; }
+
+private:
+  geometry::Profile profile_;
 };
 
 }  // namespace hpcontact::contact

@@ -75,6 +75,45 @@ private:
   double phi0_;
 };
 
+class ProfileFrame final : public SurfaceFrame {
+public:
+  ProfileFrame(std::shared_ptr<const RigidProfile> profile, const Vec2& origin)
+      : profile_(std::move(profile)), s0_(arc_length(origin)) {}
+  double coordinate(const Vec2& X) const override {
+    const double s = arc_length(X) - s0_;
+    if (!profile_->profile().spec().closed) return s;
+    const double perimeter = profile_->profile().length();
+    return s - perimeter * std::ceil(s / perimeter - 0.5);  // into (−L/2, L/2]
+  }
+  double rate(const Vec2& X, const Vec2& dX) const override {
+    const auto& chain = profile_->profile();
+    const auto foot = chain.closest(X);
+    const auto& piece = chain.pieces()[foot.piece];
+    if (foot.end >= 0) {  // a sharp corner: along the parallel curve through X
+      const Vec2 n = normal(X);
+      return Vec2(n.y(), -n.x()).dot(dX);
+    }
+    if (!piece.arc) return piece.direction.dot(dX);
+    // s = r |φ − φ_start| grows with φ where the arc turns left: ds = ±r (e_φ·dX)/|X − c|.
+    const Vec2 d = X - piece.centre;
+    const double sign = piece.turn > 0 ? 1.0 : -1.0;
+    return sign * piece.radius * Vec2(-d.y(), d.x()).dot(dX) / d.squaredNorm();
+  }
+  Vec2 normal(const Vec2& X) const override {
+    Vec2 n;
+    profile_->gap(X, &n, nullptr);
+    return n;
+  }
+  std::string describe() const override { return profile_->describe(); }
+
+private:
+  double arc_length(const Vec2& X) const {
+    return profile_->profile().arc_length(profile_->profile().closest(X));
+  }
+  std::shared_ptr<const RigidProfile> profile_;
+  double s0_;
+};
+
 class BoundaryFrame final : public SurfaceFrame {
 public:
   explicit BoundaryFrame(std::shared_ptr<const DeformableBoundary> b) : b_(std::move(b)) {
@@ -168,6 +207,10 @@ SurfaceFramePtr line_frame(const Vec2& origin, const Vec2& tangent, const Vec2& 
 
 SurfaceFramePtr arc_frame(const Vec2& centre, double radius, const Vec2& origin, bool concave) {
   return std::make_shared<ArcFrame>(centre, radius, origin, concave);
+}
+
+SurfaceFramePtr profile_frame(std::shared_ptr<const RigidProfile> profile, const Vec2& origin) {
+  return std::make_shared<ProfileFrame>(std::move(profile), origin);
 }
 
 SurfaceFramePtr boundary_frame(std::shared_ptr<const DeformableBoundary> boundary) {

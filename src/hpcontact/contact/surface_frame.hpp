@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hpcontact/contact/deformable_boundary.hpp"
+#include "hpcontact/contact/obstacle.hpp"
 #include "hpcontact/geometry/vec2.hpp"
 
 namespace hpcontact::contact {
@@ -49,6 +50,13 @@ SurfaceFramePtr line_frame(const Vec2& origin, const Vec2& tangent, const Vec2& 
 /// `concave` is false (the body outside the circle: a pin's surface seen by a plate, a rigid
 /// cylinder), inwards when true (the body inside it: a hole, a pin's seat).
 SurfaceFramePtr arc_frame(const Vec2& centre, double radius, const Vec2& origin, bool concave);
+
+/// A rigid profile (segments, fillet arcs, corners): the arc length along it from the foot of
+/// `origin` to the foot of X (a closed profile's wrapped into (−L/2, L/2], L its perimeter),
+/// normal the obstacle's at X. A sharp corner has no length: points whose foot it is (in its fan
+/// of normals) change their coordinate along the curve parallel to the profile through them,
+/// rate = τ·dX with τ the normal turned right.
+SurfaceFramePtr profile_frame(std::shared_ptr<const RigidProfile> profile, const Vec2& origin);
 
 /// Another body's undeformed contact boundary (its chained edges): the arc length from the
 /// boundary's start along its edges to the foot of X, normal the boundary's outward one. The

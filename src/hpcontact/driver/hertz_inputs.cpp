@@ -109,7 +109,8 @@ HertzInputs hertz_inputs(const model::ProblemSpec& spec, const model::Discretiza
       derived = cs.obstacle.inside ? -cs.obstacle.radius : cs.obstacle.radius;
       fixed = true;
       break;
-    case model::ObstacleKind::curve: derived = kInfinity; break;
+    case model::ObstacleKind::curve:
+    case model::ObstacleKind::profile: derived = kInfinity; break;
     case model::ObstacleKind::body: derived = edges_radius(d.bodies[pair.other], pair.other_edges); break;
   }
   if (cmp.other_radius) {

@@ -505,12 +505,14 @@ const std::vector<KeySpec>& input_schema() {
 
       {.path = "contact[].obstacle.type", .type = T::choice, .required = true,
        .doc = "plane: a straight line; circle: a disc (or a hole with inside); curve: a smooth "
-              "curve through points; body: another deformable body (bilateral contact; exact: "
+              "curve through points; profile: straight segments through points with sharp or "
+              "filleted corners (grooves, chamfers, housings); body: another deformable body "
+              "(bilateral contact; exact: "
               "the pair's own body carries the multiplier nodes and its gap is measured against "
               "the other's deformed boundary, one-sided; penalty: the points of both sides are "
               "evaluated, each with half weight, and the penalty acts on the gap between the "
               "bodies).",
-       .choices = {"plane", "circle", "curve", "body"}},
+       .choices = {"plane", "circle", "curve", "profile", "body"}},
       {.path = "contact[].obstacle.body", .type = T::string,
        .doc = "body: name of the other body; required if and only if type is body."},
       {.path = "contact[].obstacle.edges", .type = T::string_list,
@@ -518,10 +520,13 @@ const std::vector<KeySpec>& input_schema() {
        .min_items = 1},
       {.path = "contact[].obstacle.point", .type = T::point, .default_yaml = "[0, 0]",
        .unit = "length",
-       .doc = "plane: a point of the line, [x, y]; curve: the origin of positions along it (half "
-              "width, pressure curves), which are measured along its tangent at the point of "
-              "the curve nearest to this one (the common tangent of the linear theory; not the "
-              "chord, which an asymmetric point list tilts)."},
+       .doc = "plane: a point of the line, [x, y]; curve, profile: the origin of positions along "
+              "it (half width, pressure curves). curve: they are measured along its tangent at "
+              "the point of the curve nearest to this one (the common tangent of the linear "
+              "theory; not the chord, which an asymmetric point list tilts); profile: as the arc "
+              "length along the profile from the point of it nearest to this one (one segment: "
+              "along it, as a plane's), and the normal force is measured along the profile's "
+              "normal there."},
       {.path = "contact[].obstacle.normal", .type = T::point, .default_yaml = "[0, 1]",
        .doc = "plane: normal pointing away from the obstacle towards the body, [nx, ny], non-zero "
               "(normalised when read)."},
@@ -530,17 +535,32 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "contact[].obstacle.radius", .type = T::number, .unit = "length",
        .doc = "circle: radius; required if and only if type is circle.", .lower = greater_than(0)},
       {.path = "contact[].obstacle.points", .type = T::point_list, .unit = "length",
-       .doc = "curve: the points the obstacle's boundary passes through, in order, [[x, y], ...]; "
-              "required if and only if type is curve. The boundary is the natural cubic spline "
-              "through them (chord-length parameter; two points: a straight line), continued "
-              "straight along its end tangents; the body lies to its left walking from the first "
-              "point to the last. The gap is the signed distance to the closest point of the "
-              "curve.", .min_items = 2},
+       .doc = "curve, profile: the points the obstacle's boundary passes through, in order, [[x, "
+              "y], ...]; required if and only if type is curve or profile. The body lies to the "
+              "boundary's left walking from the first point to the last. curve: the natural cubic "
+              "spline through them (chord-length parameter; two points: a straight line), "
+              "continued straight along its end tangents. profile: the straight segments between "
+              "them, continued straight beyond the first and last point (closed: the last joined "
+              "to the first instead); a point must not repeat the one before it (nor, closed, the "
+              "last the first), and the chain must not turn back on itself, cross or touch "
+              "itself. The gap is the signed distance to the closest point of the boundary; at a "
+              "sharp corner the closest point of a point in its fan of normals is the corner, "
+              "and the normal the direction from the corner to the point.", .min_items = 2},
+      {.path = "contact[].obstacle.fillet", .type = T::numbers, .default_yaml = "0",
+       .unit = "length",
+       .doc = "profile: the radii of circular fillets rounding its corners (the interior points of "
+              "an open profile, every point of a closed one): one number for all corners, or a "
+              "list with one per corner in order; 0: sharp. A fillet is the arc tangent to both "
+              "segments, r tan(θ/2) from the corner (θ the turn there); the fillets at the two "
+              "ends of a segment must fit on it.", .lower = at_least(0)},
+      {.path = "contact[].obstacle.closed", .type = T::boolean, .default_yaml = "false",
+       .doc = "profile: true joins the last point to the first (a closed profile: the body "
+              "outside it when the points run clockwise, inside when counter-clockwise)."},
       {.path = "contact[].obstacle.inside", .type = T::boolean, .default_yaml = "false",
        .doc = "circle: false: the body stays outside the circle; true: inside it."},
       {.path = "contact[].obstacle.displacement", .type = T::point, .default_yaml = "[0, 0]",
        .unit = "length",
-       .doc = "plane, circle, curve: rigid displacement of the obstacle, [dx, dy], applied with the load "
+       .doc = "plane, circle, curve, profile: rigid displacement of the obstacle, [dx, dy], applied with the load "
               "factor like the prescribed displacements (a displacement-driven indenter)."},
 
       {.path = "exact", .type = T::section,
@@ -770,6 +790,7 @@ std::string describe_type(const KeySpec& key) {
     case T::scalar_text: return "number or formula";
     case T::string_list: return "list of names";
     case T::point_list: return "list of [x, y], at least " + std::to_string(key.min_items);
+    case T::numbers: return with_bounds("number or list of numbers, each", key);
     case T::integer_list: return "list of integers";
     case T::node_table: return "map: node id -> [x, y]";
     case T::element_table: return "map: element id -> [n1, n2, n3, n4]";

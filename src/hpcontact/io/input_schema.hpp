@@ -27,6 +27,7 @@ enum class ValueType {
   scalar_text,     ///< a number or an expression, kept verbatim as text
   string_list,     ///< a list of scalars
   point_list,      ///< a list of [x, y]
+  numbers,         ///< a number or a list of numbers; bounds apply to each
   integer_list,    ///< a list of whole numbers
   node_table,      ///< a map node id -> [x, y]
   element_table,   ///< a map element id -> [n1, n2, n3, n4]

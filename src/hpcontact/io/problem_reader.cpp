@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/geometry/profile.hpp"
 #include "hpcontact/io/gmsh_import.hpp"
 #include "hpcontact/io/overrides.hpp"
 #include "hpcontact/io/schema_check.hpp"
@@ -773,7 +774,8 @@ class SpecBuilder {
 
   /// Keys with a default that mean nothing for an obstacle of this type, refused when given a
   /// value other than the default (the effective input lists every default): obstacle.point but
-  /// for a plane or a curve, normal but for a plane, center and inside but for a circle.
+  /// for a plane, a curve or a profile, normal but for a plane, center and inside but for a
+  /// circle, fillet and closed but for a profile.
   void refuse_inapplicable(const YAML::Node& node, const std::string& path, ObstacleKind kind,
                            const std::string& type) {
     struct Key {
@@ -782,7 +784,7 @@ class SpecBuilder {
       bool applies;
     };
     const Key keys[] = {
-        {"point", {0, 0}, kind == ObstacleKind::plane || kind == ObstacleKind::curve},
+        {"point", {0, 0}, kind == ObstacleKind::plane || kind == ObstacleKind::curve || kind == ObstacleKind::profile},
         {"normal", {0, 1}, kind == ObstacleKind::plane},
         {"center", {0, 0}, kind == ObstacleKind::circle},
     };
@@ -790,11 +792,44 @@ class SpecBuilder {
       if (!k.applies && point(node[k.name]) != k.standard)
         source_.fail(node[k.name], path + "." + k.name,
                      "does nothing for type: " + type + " (it applies to " +
-                         (std::string(k.name) == "point" ? "plane and curve" : std::string(k.name) == "normal" ? "plane" : "circle") +
+                         (std::string(k.name) == "point" ? "plane, curve and profile" : std::string(k.name) == "normal" ? "plane" : "circle") +
                          " obstacles); leave it out (got " + shown_value(node[k.name]) + ")");
     if (kind != ObstacleKind::circle && boolean(node["inside"]))
       source_.fail(node["inside"], path + ".inside",
                    "does nothing for type: " + type + " (it applies to circle obstacles); leave it out");
+    if (kind != ObstacleKind::profile && boolean(node["closed"]))
+      source_.fail(node["closed"], path + ".closed",
+                   "does nothing for type: " + type + " (it applies to profile obstacles); leave it out");
+    const YAML::Node& fillet = node["fillet"];
+    if (kind != ObstacleKind::profile && (fillet.IsSequence() || number(fillet) != 0))
+      source_.fail(fillet, path + ".fillet",
+                   "does nothing for type: " + type + " (it applies to profile obstacles); leave it out (got " +
+                       shown_value(fillet) + ")");
+  }
+
+  /// A profile's fillets (one number for every corner, or one per corner) and closure, checked
+  /// with its points by geometry::profile_fault: a fault names the point or fillet at fault.
+  void read_profile(const YAML::Node& node, const std::string& path, ObstacleSpec& o) {
+    o.closed = boolean(node["closed"]);
+    const YAML::Node& fillet = node["fillet"];
+    const int n = static_cast<int>(o.points.size());
+    const int corners = o.closed ? n : std::max(n - 2, 0);
+    if (fillet.IsSequence()) {
+      for (std::size_t j = 0; j < fillet.size(); ++j) o.fillets.push_back(number(fillet[j]));
+    } else if (const double r = number(fillet); r > 0) {
+      o.fillets.assign(corners, r);
+    }
+    geometry::ProfileSpec spec;
+    for (const auto& p : o.points) spec.points.emplace_back(p[0], p[1]);
+    spec.fillets = o.fillets;
+    spec.closed = o.closed;
+    const auto fault = geometry::profile_fault(spec);
+    if (!fault) return;
+    const YAML::Node& list = node[fault->key];
+    const bool entry = fault->index >= 0 && list.IsSequence();
+    source_.fail(entry ? list[fault->index] : list,
+                 path + "." + fault->key + (entry ? "[" + std::to_string(fault->index) + "]" : ""),
+                 fault->cause);
   }
 
   ObstacleSpec obstacle(const YAML::Node& node, const std::string& path,
@@ -803,6 +838,7 @@ class SpecBuilder {
     const std::string type = node["type"].Scalar();
     o.kind = type == "circle" ? ObstacleKind::circle
              : type == "curve" ? ObstacleKind::curve
+             : type == "profile" ? ObstacleKind::profile
              : type == "body"  ? ObstacleKind::body
                                : ObstacleKind::plane;
     for (const char* key : {"body", "edges"}) {
@@ -836,7 +872,7 @@ class SpecBuilder {
     if (o.kind == ObstacleKind::body && (o.displacement[0] != 0 || o.displacement[1] != 0))
       source_.fail(node["displacement"], path + ".displacement",
                    "a body obstacle moves with its own constraints; displacement is for rigid "
-                   "obstacles (type: plane, circle or curve)");
+                   "obstacles (type: plane, circle, curve or profile)");
     const bool is_circle = o.kind == ObstacleKind::circle;
     if (is_circle && !node["radius"])
       source_.fail(node, path, "missing key 'radius' (required by type: circle)");
@@ -845,13 +881,17 @@ class SpecBuilder {
                    "only allowed with type: circle (got type: " + node["type"].Scalar() + ")");
     if (is_circle) o.radius = number(node["radius"]);
     o.inside = boolean(node["inside"]);
-    const bool is_curve = o.kind == ObstacleKind::curve;
-    if (is_curve && !node["points"])
-      source_.fail(node, path, "missing key 'points' (required by type: curve)");
-    if (!is_curve && node["points"])
+    const bool has_points = o.kind == ObstacleKind::curve || o.kind == ObstacleKind::profile;
+    if (has_points && !node["points"])
+      source_.fail(node, path, "missing key 'points' (required by type: " + type + ")");
+    if (!has_points && node["points"])
       source_.fail(node["points"], path + ".points",
-                   "only allowed with type: curve (got type: " + type + ")");
-    if (is_curve) {
+                   "only allowed with type: curve or profile (got type: " + type + ")");
+    if (o.kind == ObstacleKind::profile) {
+      for (const YAML::Node& p : node["points"]) o.points.push_back(point(p));
+      read_profile(node, path, o);
+    }
+    if (o.kind == ObstacleKind::curve) {
       const YAML::Node& points = node["points"];
       for (std::size_t i = 0; i < points.size(); ++i) o.points.push_back(point(points[i]));
       for (std::size_t i = 1; i < o.points.size(); ++i)

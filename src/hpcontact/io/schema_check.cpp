@@ -106,6 +106,12 @@ class SchemaChecker {
         for (std::size_t i = 0; i < node.size(); ++i)
           check_pair(node[i], join_index(path, i), false, "[x, y]");
         return;
+      case T::numbers:
+        if (node.IsSequence())
+          for (std::size_t i = 0; i < node.size(); ++i) check_number(node[i], key, join_index(path, i));
+        else
+          check_number(node, key, path);
+        return;
       case T::integer_list:
         require_list(node, key, path, "a list of integers");
         for (std::size_t i = 0; i < node.size(); ++i)

@@ -217,6 +217,24 @@ std::vector<ContactPair> make_contact_pairs(const ProblemSpec& spec, const Discr
       pair.obstacle = curve;
       pair.frame = contact::line_frame(pair.reference_point, pair.tangent);
       pair.force_direction = pair.normal();
+    } else if (o.kind == ObstacleKind::profile) {
+      geometry::ProfileSpec outline;
+      for (const auto& p : o.points) outline.points.emplace_back(p[0], p[1]);
+      outline.fillets = o.fillets;
+      outline.closed = o.closed;
+      auto profile = std::make_shared<contact::RigidProfile>(std::move(outline));
+      // The normal force along the profile's normal at the point nearest `point`, and positions
+      // measured along the profile from there: a line's if it is one segment (a plane), the arc
+      // length along the profile else (a groove's bottom and walls).
+      pair.reference_point = Vec2(o.point[0], o.point[1]);
+      Vec2 nrm;
+      profile->gap(pair.reference_point, &nrm, nullptr);
+      pair.tangent = Vec2(nrm.y(), -nrm.x());
+      pair.obstacle = profile;
+      pair.frame = profile->profile().pieces().size() == 1
+                       ? contact::line_frame(pair.reference_point, pair.tangent, nrm)
+                       : contact::profile_frame(profile, pair.reference_point);
+      pair.force_direction = nrm;
     } else if (o.kind == ObstacleKind::circle) {
       pair.obstacle = std::make_shared<contact::RigidCircle>(Vec2(o.center[0], o.center[1]),
                                                              o.radius, o.inside);

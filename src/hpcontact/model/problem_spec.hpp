@@ -180,19 +180,22 @@ struct SolverSpec {
   SourceRef where;
 };
 
-enum class ObstacleKind { plane, circle, curve, body };
+enum class ObstacleKind { plane, circle, curve, profile, body };
 
 /// A rigid obstacle: a plane through `point` with outward `normal` (towards the body), a
 /// circle (the body outside it, or inside it with `inside`), a curve through `points` (the body
-/// on its left), or another body.
+/// on its left), a profile (segments through `points`, corners sharp or filleted, the body on
+/// its left), or another body.
 struct ObstacleSpec {
   ObstacleKind kind = ObstacleKind::plane;
   std::array<double, 2> point{0, 0}, normal{0, 1};
   std::array<double, 2> center{0, 0};
   double radius = 0;
   bool inside = false;
-  std::vector<std::array<double, 2>> points;  ///< curve: the points it passes through
-  std::array<double, 2> displacement{0, 0};  ///< plane, circle: moved by λ × this
+  std::vector<std::array<double, 2>> points;  ///< curve, profile: the points it passes through
+  std::vector<double> fillets;  ///< profile: a fillet radius per corner (empty: all sharp)
+  bool closed = false;          ///< profile: the last point joined to the first
+  std::array<double, 2> displacement{0, 0};  ///< rigid ones: moved by λ × this
   std::string body;                    ///< body: the other deformable body
   std::vector<std::string> edge_sets;  ///< body: its contact edge sets
 };

@@ -562,7 +562,7 @@ TEST(ProblemReader, ReadsAndChecksCurveObstacle) {
   input_error(with(text, "type: plane", "type: curve, points: [[0, -1], [1, -1], [1, -1]]"),
               {"contact[0].obstacle.points[2]: repeats the point before it ([1, -1])"});
   input_error(with(text, "type: plane", "type: plane, points: [[0, -1], [1, -1]]"),
-              {"contact[0].obstacle.points: only allowed with type: curve (got type: plane)"});
+              {"contact[0].obstacle.points: only allowed with type: curve or profile (got type: plane)"});
 }
 
 // The solver's Newton settings and load control by force shall be read, component y as 1.
