@@ -14,6 +14,7 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/fem/elasticity.hpp"
+#include "hpcontact/fem/mixed_finite_strain.hpp"
 #include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/mesh/element_shape.hpp"
 #include "hpcontact/model/axis.hpp"
@@ -117,13 +118,16 @@ Body make_body(const ProblemSpec& spec, int b) {
   mat.poisson_ratio = bs.material.poisson_ratio;
   mat.plane = plane;
   if (material::is_rubber(law)) {
-    rubber = {bs.material.C10, bs.material.C01, bs.material.C20, bs.material.C30, bs.material.K};
+    const double K = bs.material.incompressible ? std::numeric_limits<double>::infinity() : bs.material.K;
+    rubber = {bs.material.C10, bs.material.C01, bs.material.C20, bs.material.C30, K};
     mat = rubber.small_strain(plane);
   }
   mat.validate(bs.material.where.str());
 
   Body body{bs.name, std::move(mesh), std::move(dofs), {}, {}, mat, bs.material.thickness, 0, {},
             law, rubber, {}, {}, {}, {}};
+  body.mixed = bs.material.formulation == "mixed";
+  body.inverse_bulk = 1 / rubber.K;  // 0 when incompressible
   if (!bs.regions.empty()) body.element_region.assign(body.mesh.n_quads(), -1);
   for (const auto& region : bs.regions) {
     material::LinearElastic rm = mat;
@@ -405,6 +409,19 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
   }
 }
 
+/// The pressure dofs of the mixed bodies, after all displacement dofs: per element
+/// n_pressure_modes(p − 1), body after body.
+void number_pressures(Discretization& d) {
+  for (Body& body : d.bodies) {
+    if (!body.mixed) continue;
+    body.pressure_first.push_back(d.n_dofs);
+    for (int q = 0; q < body.mesh.n_quads(); ++q) {
+      d.n_dofs += fem::n_pressure_modes(fem::pressure_degree(body.dofs.element(q)));
+      body.pressure_first.push_back(d.n_dofs);
+    }
+  }
+}
+
 /// The rigid-body motions each body's constraints leave free.
 void find_free_rigid_motions(Discretization& d) {
   for (size_t b = 0; b < d.bodies.size(); ++b) {
@@ -447,6 +464,7 @@ Discretization discretize(const ProblemSpec& spec) {
     d.bodies.back().dof_offset = d.n_dofs;
     d.n_dofs += d.bodies.back().dofs.n_dofs();
   }
+  number_pressures(d);
   d.free_index.assign(d.n_dofs, 0);
   d.prescribed = Eigen::VectorXd::Zero(d.n_dofs);
   d.load = Eigen::VectorXd::Zero(d.n_dofs);
@@ -497,6 +515,10 @@ Discretization discretize(const ProblemSpec& spec) {
     }
     if (pass == 0) d.n_free_external = d.n_free;
   }
+  for (const Body& body : d.bodies)
+    if (body.mixed)
+      for (int dof = body.pressure_first.front(); dof < body.pressure_first.back(); ++dof)
+        d.free_index[dof] = d.n_free++;
   return d;
 }
 

@@ -1,0 +1,165 @@
+// The mixed u–p rubber element (formulation: mixed) solved by the finite-strain program against
+// closed forms: an incompressible patch test on a distorted mesh, uniaxial, equibiaxial and
+// planar stretch of incompressible Mooney–Rivlin and Yeoh blocks, Rivlin's inflation of an
+// incompressible neo-Hookean thick tube (plane strain and axisymmetric), the absence of locking
+// (K/μ = 5000 against 1/K = 0, and the displacement element against both) and p-convergence.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "hpcontact/model/contact_forces.hpp"
+#include "hpcontact/model/contact_solve.hpp"
+#include "hpcontact/model/discretization.hpp"
+#include "hpcontact/post/fields.hpp"
+#include "problems.hpp"
+
+using namespace hpcontact;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct NamedLaw {
+  const char* model;
+  material::RubberConstants k;  ///< MPa; K unused (incompressible)
+};
+
+std::vector<NamedLaw> laws() {
+  return {{"mooney-rivlin", {.C10 = 0.4, .C01 = 0.1}}, {"yeoh", {.C10 = 0.5, .C20 = 0.02, .C30 = 0.001}}};
+}
+
+/// ∂W/∂I₁ and ∂W/∂I₂ at J = 1.
+std::array<double, 2> invariant_slopes(const material::RubberConstants& k, double I1) {
+  const double x = I1 - 3;
+  return {k.C10 + 2 * k.C20 * x + 3 * k.C30 * x * x, k.C01};
+}
+
+/// Incompressible principal Cauchy stress differences (any W(I₁, I₂), J = 1, b the squared
+/// principal stretches): σ_i − σ_j = 2 (b_i − b_j)(W₁ + b_k W₂), k the third direction.
+double stress_difference(const material::RubberConstants& k, const std::array<double, 3>& b, int i, int j) {
+  const int kk = 3 - i - j;
+  const auto W = invariant_slopes(k, b[0] + b[1] + b[2]);
+  return 2 * (b[i] - b[j]) * (W[0] + b[kk] * W[1]);
+}
+
+void set_rubber(model::BodySpec& b, const NamedLaw& law, model::PlaneMode plane, double K = 0) {
+  b.material.model = law.model;
+  b.material.plane = plane;
+  b.material.C10 = law.k.C10;
+  b.material.C01 = law.k.C01;
+  b.material.C20 = law.k.C20;
+  b.material.C30 = law.k.C30;
+  b.material.K = K;
+  b.material.incompressible = K == 0;
+  b.material.formulation = "mixed";
+}
+
+model::ConstraintSpec hold(const char* edges, const char* ux, const char* uy) {
+  model::ConstraintSpec c;
+  c.edge_sets = {edges};
+  if (ux) c.ux = ux;
+  if (uy) c.uy = uy;
+  return c;
+}
+
+std::string times(double factor, const char* var) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.17g*%s", factor, var);
+  return text;
+}
+
+/// One p element [0, a] × [0, h]; edge sets left, right, bottom, top.
+model::ProblemSpec block(const NamedLaw& law, model::PlaneMode plane, double a, double h, int p) {
+  model::ProblemSpec spec;
+  spec.file = spec.case_name = "mixed-block";
+  auto b = test_problems::body("block", 0, 0);
+  set_rubber(b, law, plane);
+  test_problems::add_node(b, 1, 0, 0);
+  test_problems::add_node(b, 2, a, 0);
+  test_problems::add_node(b, 3, a, h);
+  test_problems::add_node(b, 4, 0, h);
+  test_problems::add_element(b, 1, 1, 2, 3, 4);
+  test_problems::add_edge_set(b, "bottom", {{1, 2}});
+  test_problems::add_edge_set(b, "right", {{2, 3}});
+  test_problems::add_edge_set(b, "top", {{3, 4}});
+  test_problems::add_edge_set(b, "left", {{4, 1}});
+  spec.bodies.push_back(b);
+  spec.discretization.degree = {p, p};
+  spec.solver.load_steps = 8;
+  spec.solver.tolerance = 1e-13;
+  return spec;
+}
+
+/// The largest deviation, relative to `scale`, of the displacement (F − I) X and the Cauchy
+/// stresses (xx, yy, xy, zz or θθ) and pressure from the homogeneous ones at sample points of
+/// every element.
+struct Deviation {
+  double u = 0, stress = 0, pressure = 0;
+};
+
+Deviation homogeneous_deviation(const model::Discretization& d, const Eigen::VectorXd& u, const Eigen::Matrix2d& F,
+                                const Eigen::Vector4d& sigma, double p) {
+  Deviation dev;
+  const double scale = sigma.cwiseAbs().maxCoeff();
+  const auto& body = d.bodies[0];
+  for (int q = 0; q < body.mesh.n_quads(); ++q)
+    for (double xi : {-1.0, -0.35, 0.5, 1.0})
+      for (double eta : {-1.0, 0.1, 0.8, 1.0}) {
+        const auto r = post::evaluate(body, q, xi, eta, u);
+        const Vec2 exact = F * r.x - r.x;
+        dev.u = std::max(dev.u, (r.u - exact).cwiseAbs().maxCoeff());
+        const Eigen::Vector4d s(r.stress(0), r.stress(1), r.stress(2), r.stress_zz);
+        dev.stress = std::max(dev.stress, (s - sigma).cwiseAbs().maxCoeff() / scale);
+        dev.pressure = std::max(dev.pressure, std::abs(r.pressure - p) / scale);
+      }
+  return dev;
+}
+
+}  // namespace
+
+// Patch test: the distorted 2 × 2 patch [0, 2]² (straight sides; a curved element's blending
+// map does not hold the linear field u = (F − I) X exactly) under the isochoric
+// F = diag(λ, 1/λ) in plane strain (u_x on left and right, u_y at the bottom, the top free) and
+// F = diag(λ, 1/λ², λ) in axisymmetry (u_r = (λ − 1) R on the right and 0 on the axis, u_z at the
+// bottom, the top free), 1/K = 0: the displacements at sample points of every element are
+// (F − I) X to 1e-12, the Cauchy stresses and the pressure (σ_free = 0 decides it:
+// p = −σ_iso,free) the closed form's to 1e-10 of the largest stress; p = 2, 3, 5, both laws.
+TEST(MixedRubber, IncompressiblePatchTestOnADistortedMesh) {
+  const double l = 1.3;
+  Deviation worst;
+  for (const auto& law : laws())
+    for (bool axisymmetric : {false, true})
+      for (int p : {2, 3, 5}) {
+        auto spec = test_problems::distorted_patch(p);
+        auto& b = spec.bodies[0];
+        set_rubber(b, law, axisymmetric ? model::PlaneMode::axisymmetric : model::PlaneMode::plane_strain);
+        const std::array<double, 3> stretch = axisymmetric ? std::array<double, 3>{l, 1 / (l * l), l}
+                                                           : std::array<double, 3>{l, 1 / l, 1};
+        const std::array<double, 3> bsq = {stretch[0] * stretch[0], stretch[1] * stretch[1], stretch[2] * stretch[2]};
+        b.constraints = {hold("left", "0", nullptr), hold("bottom", nullptr, "0"),
+                         hold("right", times(l - 1, "x").c_str(), nullptr)};
+        spec.solver.load_steps = 4;
+        spec.solver.tolerance = 1e-13;
+        const auto d = model::discretize(spec);
+        const auto sol = model::solve_contact(spec, d);
+        ASSERT_TRUE(sol.converged) << sol.message;
+        // σ_yy = 0: σ_i = σ_i − σ_yy; the pressure is the mean of the Cauchy stress (J = 1)
+        const double sxx = stress_difference(law.k, bsq, 0, 1), szz = stress_difference(law.k, bsq, 2, 1);
+        const Eigen::Vector4d sigma(sxx, 0, 0, szz);
+        Eigen::Matrix2d F;
+        F << stretch[0], 0, 0, stretch[1];
+        const auto dev = homogeneous_deviation(d, sol.u, F, sigma, (sxx + szz) / 3);
+        const std::string what = std::string(law.model) + (axisymmetric ? " axisymmetric" : " plane strain") +
+                                 " p " + std::to_string(p);
+        EXPECT_LT(dev.u, 1e-12) << what;
+        EXPECT_LT(dev.stress, 1e-10) << what;
+        EXPECT_LT(dev.pressure, 1e-10) << what;
+        worst = {std::max(worst.u, dev.u), std::max(worst.stress, dev.stress), std::max(worst.pressure, dev.pressure)};
+      }
+  std::printf("patch test: largest deviation of u %.1e, of stress %.1e, of pressure %.1e (relative)\n", worst.u,
+              worst.stress, worst.pressure);
+}
