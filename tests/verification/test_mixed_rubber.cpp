@@ -163,3 +163,77 @@ TEST(MixedRubber, IncompressiblePatchTestOnADistortedMesh) {
   std::printf("patch test: largest deviation of u %.1e, of stress %.1e, of pressure %.1e (relative)\n", worst.u,
               worst.stress, worst.pressure);
 }
+
+namespace {
+
+/// A homogeneous stretch of a block, 1/K = 0: the prescribed stretch l along `along` (0: x or r,
+/// 1: y or z), the free stretch found by the FE (at the far corner) against `free_exact`, and the
+/// stresses at sample points against `sigma` (xx, yy, xy, zz or θθ), the pressure their mean.
+struct Stretch {
+  const char* name;
+  model::PlaneMode plane;
+  double a, h;
+  int along;
+  std::array<double, 3> (*stretches)(double l);  ///< principal stretches (x, y, z or θ)
+};
+
+std::vector<Stretch> stretch_states() {
+  return {
+      // uniaxial: the cylinder R <= 1, Z <= 2 stretched axially, λ_r = λ_θ = 1/√λ;
+      // σ_zz = σ_z − σ_r = 2 (λ² − 1/λ)(W₁ + W₂/λ)
+      {"uniaxial", model::PlaneMode::axisymmetric, 1, 2, 1,
+       [](double l) { return std::array<double, 3>{1 / std::sqrt(l), l, 1 / std::sqrt(l)}; }},
+      // equibiaxial: the disc R <= 1, Z <= 0.5 stretched radially, λ_z = 1/λ²;
+      // σ_rr = σ_θθ = σ_r − σ_z = 2 (λ² − 1/λ⁴)(W₁ + λ² W₂)
+      {"equibiaxial", model::PlaneMode::axisymmetric, 1, 0.5, 0,
+       [](double l) { return std::array<double, 3>{l, 1 / (l * l), l}; }},
+      // planar tension (pure shear) in plane strain: λ_y = 1/λ, λ_z = 1;
+      // σ_xx = 2 (λ² − 1/λ²)(W₁ + W₂), σ_zz = 2 (1 − 1/λ²)(W₁ + λ² W₂)
+      {"planar", model::PlaneMode::plane_strain, 1, 0.5, 0,
+       [](double l) { return std::array<double, 3>{l, 1 / l, 1}; }},
+  };
+}
+
+}  // namespace
+
+// Uniaxial, equibiaxial and planar stretch of incompressible Mooney–Rivlin and Yeoh blocks
+// (one p = 2 element, the stretched side's displacement prescribed, the free side traction-free):
+// the free stretches are the incompressible ones to 1e-10, the Cauchy stresses at sample points
+// the closed forms' σ_i − σ_free = 2 (b_i − b_free)(W₁ + b_k W₂) to 1e-8 of the largest;
+// λ = 0.5 … 3.
+TEST(MixedRubber, IncompressibleStretchesMatchClosedForms) {
+  double worst_stretch = 0, worst_stress = 0;
+  for (const auto& state : stretch_states())
+    for (const auto& law : laws())
+      for (double l : {0.5, 0.8, 1.5, 2.0, 3.0}) {
+        auto spec = block(law, state.plane, state.a, state.h, 2);
+        const std::string stretched = state.along == 0 ? times(l - 1, "x") : times(l - 1, "y");
+        if (state.along == 0)
+          spec.bodies[0].constraints = {hold("left", "0", nullptr), hold("bottom", nullptr, "0"),
+                                        hold("right", stretched.c_str(), nullptr)};
+        else
+          spec.bodies[0].constraints = {hold("left", "0", nullptr), hold("bottom", nullptr, "0"),
+                                        hold("top", nullptr, stretched.c_str())};
+        const auto d = model::discretize(spec);
+        const auto sol = model::solve_contact(spec, d);
+        const std::string what = std::string(state.name) + " " + law.model + " stretch " + std::to_string(l);
+        ASSERT_TRUE(sol.converged) << what << ": " << sol.message;
+        const auto s = state.stretches(l);
+        const std::array<double, 3> b = {s[0] * s[0], s[1] * s[1], s[2] * s[2]};
+        const int free = 1 - state.along;
+        Eigen::Vector4d sigma(stress_difference(law.k, b, 0, free), stress_difference(law.k, b, 1, free), 0,
+                              stress_difference(law.k, b, 2, free));
+        Eigen::Matrix2d F;
+        F << s[0], 0, 0, s[1];
+        const auto dev = homogeneous_deviation(d, sol.u, F, sigma, (sigma(0) + sigma(1) + sigma(3)) / 3);
+        const auto corner = post::evaluate(d.bodies[0], 0, 1, 1, sol.u);
+        const double free_stretch = 1 + corner.u(free) / corner.x(free);
+        EXPECT_NEAR(free_stretch, s[free], 1e-10 * s[free]) << what;
+        EXPECT_LT(dev.stress, 1e-8) << what;
+        EXPECT_LT(dev.pressure, 1e-8) << what;
+        worst_stretch = std::max(worst_stretch, std::abs(free_stretch - s[free]) / s[free]);
+        worst_stress = std::max({worst_stress, dev.stress, dev.pressure});
+      }
+  std::printf("incompressible stretches: largest relative deviation of the free stretch %.1e, of the "
+              "Cauchy stresses and pressure %.1e\n", worst_stretch, worst_stress);
+}
