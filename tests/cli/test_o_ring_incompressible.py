@@ -92,3 +92,29 @@ def test_keys_that_do_not_apply_are_refused(hpcontact, root, tmp_path):
         r = hpcontact("run", linear, "--out", tmp_path / "y", "--set", setting)
         assert r.returncode != 0, setting
         assert key in r.stderr and "is for the rubber laws" in r.stderr and "not model neo-hooke" in r.stderr, r.stderr
+
+
+CLOSED = """case: closed
+bodies:
+  - name: block
+    material: {model: neo-hooke-split, C10: 0.5, incompressible: true}
+    nodes: {1: [0, 0], 2: [1, 0], 3: [1, 1], 4: [0, 1]}
+    elements: {1: [1, 2, 3, 4]}
+    edge_sets: {all: [[1, 2], [2, 3], [3, 4], [4, 1]]}
+    constraints:
+      - {edges: [all], ux: "0.1*y", uy: "0"}
+"""
+
+
+def test_incompressible_body_held_all_round_is_refused(hpcontact, tmp_path):
+    """Its mean pressure would be undetermined (a singular tangent): refused before solving."""
+    path = tmp_path / "closed.yaml"
+    path.write_text(CLOSED)
+    r = hpcontact("run", path, "--out", tmp_path / "x")
+    assert r.returncode != 0
+    assert "closed.yaml" in r.stderr and "bodies[0].material.incompressible" in r.stderr, r.stderr
+    assert "mean pressure undetermined" in r.stderr, r.stderr
+    opened = CLOSED.replace("[[1, 2], [2, 3], [3, 4], [4, 1]]", "[[1, 2], [2, 3], [4, 1]]")
+    path.write_text(opened)
+    r = hpcontact("run", path, "--out", tmp_path / "y", "-q")
+    assert r.returncode == 0, r.stderr

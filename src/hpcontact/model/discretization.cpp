@@ -453,6 +453,29 @@ std::vector<int> contact_edges_of(const ProblemSpec& spec, const Body& body) {
   return edges;
 }
 
+/// An incompressible body must have some boundary where neither displacement component is
+/// prescribed, or a contact pair: held all round, J = 1 leaves its mean pressure undetermined
+/// (the tangent is singular).
+void require_free_boundary(const ProblemSpec& spec, const Discretization& d) {
+  for (size_t b = 0; b < d.bodies.size(); ++b) {
+    const Body& body = d.bodies[b];
+    if (!body.mixed || body.inverse_bulk != 0 || !contact_edges_of(spec, body).empty()) continue;
+    bool free = false;
+    for (int e = 0; e < body.mesh.n_edges() && !free; ++e) {
+      const auto& edge = body.mesh.edge(e);
+      if (!edge.on_boundary()) continue;
+      std::vector<int> modes = {body.dofs.vertex_mode(edge.v0), body.dofs.vertex_mode(edge.v1)};
+      for (int k = 2; k <= body.dofs.edge_degree(e); ++k) modes.push_back(body.dofs.edge_mode(e, k));
+      for (int m : modes)
+        for (int c = 0; c < 2; ++c) free = free || d.free_index[body.dof_offset + 2 * m + c] >= 0;
+    }
+    HPC_REQUIRE(free, InputError, spec.bodies[b].material.where.str(),
+                ".incompressible: body '", body.name, "' has every boundary displacement prescribed and "
+                "no contact: J = 1 then leaves its mean pressure undetermined (leave part of its "
+                "boundary free or loaded, or give a finite K)");
+  }
+}
+
 }  // namespace
 
 Discretization discretize(const ProblemSpec& spec) {
@@ -495,6 +518,7 @@ Discretization discretize(const ProblemSpec& spec) {
     }
   }
   find_free_rigid_motions(d);
+  require_free_boundary(spec, d);
   for (size_t b = 0; b < d.bodies.size(); ++b) {
     const Body& body = d.bodies[b];
     const auto shapes = mesh::shape_warnings(body.mesh, body.maps, contact_edges_of(spec, body),
