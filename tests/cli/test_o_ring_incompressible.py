@@ -80,7 +80,9 @@ def test_keys_that_do_not_apply_are_refused(hpcontact, root, tmp_path):
                ("bodies[0].material.formulation=hybrid", "bodies[0].material.formulation",
                 "must be one of displacement, mixed"),
                ("bodies[0].material.incompressible=false", "bodies[0].material",
-                "missing required key 'K'")]
+                "missing required key 'K'"),
+               ("discretization.degree=1", "bodies[0].material.formulation",
+                "mixed needs degree 2 or more")]
     for setting, key, cause in refused:
         r = hpcontact("run", os.path.join(root, CASE), "--out", tmp_path / "x", "--set", setting)
         assert r.returncode != 0, setting
