@@ -83,6 +83,7 @@ def test_keys_that_do_not_apply_are_refused(hpcontact, root, tmp_path):
                 "missing required key 'K'"),
                ("discretization.degree=1", "bodies[0].material.formulation",
                 "mixed needs degree 2 or more")]
+    refused.append(("adapt.method=hp", "adapt.min_degree", "needs p >= 2: give adapt.min_degree: 2"))
     for setting, key, cause in refused:
         r = hpcontact("run", os.path.join(root, CASE), "--out", tmp_path / "x", "--set", setting)
         assert r.returncode != 0, setting

@@ -597,6 +597,12 @@ class SpecBuilder {
                    "goal corrects the degrees with the error estimate of each step, which only a loop "
                    "to adapt.tolerance computes: give a tolerance, or degree rising");
     a.min_degree = integer(node["min_degree"]);
+    if (a.method == AdaptMethod::hp && a.degree != HpDegree::constant && a.min_degree < 2)
+      for (size_t b = 0; b < spec.bodies.size(); ++b)
+        if (spec.bodies[b].material.formulation == "mixed")
+          source_.fail(node["min_degree"], "adapt.min_degree",
+                       "bodies[" + std::to_string(b) + "] has the mixed element, whose pressure of "
+                       "degree p - 1 needs p >= 2: give adapt.min_degree: 2");
     if (const YAML::Node t = node["tolerance"]) {
       a.tolerance = number(t);
       a.tolerance_given = true;
