@@ -115,3 +115,41 @@ TEST(MixedFiniteStrain, FoldIsInverted) {
                                                    Eigen::VectorXd::Zero(m), true);
   EXPECT_TRUE(el.inverted());
 }
+
+// A finite K's pressure eliminated per element: at p(u) the pressure rows vanish (to 1e-13 of
+// the element's K ∫ |J − 1| scale), and the condensed force and tangent are the derivatives of
+// Π_e(u, p(u)) and of the force (central differences, 1e-7 relative): p follows u in the tangent.
+TEST(MixedFiniteStrain, CondensedElementIsTheGradientOfPiAtItsPressure) {
+  for (const auto& c : cases())
+    for (const auto& [name, law] : laws())
+      for (double inverse_bulk : {1.0 / 50, 1.0 / 5000}) {
+        const auto s = setup(c.mesh, 3);
+        const int n = s.ev.n_modes();
+        const fem::OutOfPlane oop(0.7, c.axisymmetric);
+        std::srand(5);
+        const Eigen::VectorXd u = 0.05 * Eigen::VectorXd::Random(2 * n);
+        const std::string what = std::string(c.name) + ", " + name + ", 1/K " + std::to_string(inverse_bulk);
+        const Eigen::VectorXd p = fem::condensed_pressure(s.ev, s.psi, inverse_bulk, oop, u);
+        const auto full = fem::mixed_finite_strain_element(s.ev, s.psi, law, inverse_bulk, oop, u, p, false);
+        const double scale = p.cwiseAbs().maxCoeff() * inverse_bulk * s.ev.JxW.sum();
+        EXPECT_LT(full.f_int.tail(p.size()).cwiseAbs().maxCoeff(), 1e-13 * scale) << what;
+        auto element = [&](const Eigen::VectorXd& y, bool tangent) {
+          return fem::condensed_mixed_element(s.ev, s.psi, law, inverse_bulk, oop, y, tangent);
+        };
+        const auto el = element(u, true);
+        ASSERT_EQ(el.f_int.size(), 2 * n);
+        Eigen::VectorXd f_fd(2 * n);
+        Eigen::MatrixXd K_fd(2 * n, 2 * n);
+        const double h = 1e-6;
+        for (int a = 0; a < 2 * n; ++a) {
+          Eigen::VectorXd up = u, um = u;
+          up(a) += h;
+          um(a) -= h;
+          const auto ep = element(up, false), em = element(um, false);
+          f_fd(a) = (ep.energy - em.energy) / (2 * h);
+          K_fd.col(a) = (ep.f_int - em.f_int) / (2 * h);
+        }
+        EXPECT_LT((el.f_int - f_fd).cwiseAbs().maxCoeff(), 1e-7 * el.f_int.cwiseAbs().maxCoeff()) << what;
+        EXPECT_LT((el.K - K_fd).cwiseAbs().maxCoeff(), 1e-7 * el.K.cwiseAbs().maxCoeff()) << what;
+      }
+}
