@@ -12,7 +12,6 @@
 
 #include "hpcontact/basis/legendre.hpp"
 #include "hpcontact/basis/quadrature.hpp"
-#include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/point_blocks.hpp"
 #include "hpcontact/material/mixed_rubber.hpp"
 
@@ -41,52 +40,6 @@ Eigen::MatrixXd pressure_modes_at_gauss_points(int degree, int n_gauss) {
   return psi;
 }
 
-namespace {
-
-/// The deformation at the points of an element: F, the out-of-plane stretch F33 (1 in plane
-/// strain, 1 + u_r / R in axisymmetry), 1/R (0 in plane strain), J = det F · F33 (where a factor
-/// is not positive: the smaller factor, a fold), the weights dV, and the smallest J with where.
-struct Kinematics {
-  std::vector<Eigen::Matrix2d> F;
-  Eigen::VectorXd F33, inv_R, J, w;
-  double min_J = std::numeric_limits<double>::infinity();
-  int min_J_point = -1;
-};
-
-Kinematics kinematics(const ElementValues& ev, const OutOfPlane& out_of_plane, const Eigen::VectorXd& u_e) {
-  const int n = ev.n_modes(), nq = ev.n_points();
-  Kinematics k;
-  k.F.resize(nq);
-  k.F33 = Eigen::VectorXd::Ones(nq);
-  k.inv_R = Eigen::VectorXd::Zero(nq);
-  k.J.resize(nq);
-  k.w.resize(nq);
-  const Eigen::VectorXd u_r = ev.N.transpose() * u_e.head(n);
-  for (int q = 0; q < nq; ++q) {
-    k.F[q] = deformation_gradient(ev, q, u_e);
-    if (out_of_plane.axisymmetric) {
-      k.inv_R(q) = 1 / ev.x[q].x();  // Gauss points are inside the element: R > 0
-      k.F33(q) = 1 + u_r(q) * k.inv_R(q);
-    }
-    const double det = k.F[q].determinant();
-    // both factors of J must be positive (two negatives are a fold too)
-    k.J(q) = det > 0 && k.F33(q) > 0 ? det * k.F33(q) : std::min(det, k.F33(q));
-    k.w(q) = ev.JxW(q) * out_of_plane.at(ev.x[q]);
-    if (!(k.J(q) > k.min_J)) {
-      k.min_J = k.J(q);
-      k.min_J_point = q;
-    }
-  }
-  return k;
-}
-
-/// The pressure mass matrix M = ∫ ψ ψᵀ dV.
-Eigen::MatrixXd pressure_mass(const Eigen::MatrixXd& psi, const Eigen::VectorXd& w) {
-  return psi * w.asDiagonal() * psi.transpose();
-}
-
-}  // namespace
-
 FiniteStrainElement mixed_finite_strain_element(const ElementValues& ev, const Eigen::MatrixXd& psi,
                                                 const material::RubberConstants& constants,
                                                 double inverse_bulk, const OutOfPlane& out_of_plane,
@@ -94,26 +47,38 @@ FiniteStrainElement mixed_finite_strain_element(const ElementValues& ev, const E
                                                 bool tangent) {
   const int n = ev.n_modes(), nq = ev.n_points(), m = static_cast<int>(p_e.size());
   const bool ring = out_of_plane.axisymmetric;
-  const Kinematics kin = kinematics(ev, out_of_plane, u_e);
-  const auto& F = kin.F;
-  const auto& F33 = kin.F33;
-  const auto& inv_R = kin.inv_R;
   FiniteStrainElement el;
-  el.min_J = kin.min_J;
-  el.min_J_point = kin.min_J_point;
+  std::vector<Eigen::Matrix2d> F(nq);
+  Eigen::VectorXd F33 = Eigen::VectorXd::Ones(nq), inv_R = Eigen::VectorXd::Zero(nq);
+  const Eigen::VectorXd u_r = ev.N.transpose() * u_e.head(n);
+  el.min_J = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < nq; ++k) {
+    F[k] = deformation_gradient(ev, k, u_e);
+    if (ring) {
+      inv_R(k) = 1 / ev.x[k].x();  // Gauss points are inside the element: R > 0
+      F33(k) = 1 + u_r(k) * inv_R(k);
+    }
+    const double det = F[k].determinant();
+    // both factors of J must be positive (two negatives are a fold too)
+    const double J = det > 0 && F33(k) > 0 ? det * F33(k) : std::min(det, F33(k));
+    if (!(J > el.min_J)) {
+      el.min_J = J;
+      el.min_J_point = k;
+    }
+  }
   if (el.inverted()) return el;
 
   el.f_int = Eigen::VectorXd::Zero(2 * n + m);
   const Eigen::VectorXd p_points = psi.transpose() * p_e;
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(4 * nq, 2 * n), CB, dJ_psi;  // stacked B; ℂ w B; w dJ ψᵀ
-  Eigen::VectorXd wS11(nq), wS22(nq), wS12(nq), wS33(nq);
+  Eigen::VectorXd wS11(nq), wS22(nq), wS12(nq), wS33(nq), w_inv_K(nq);
   if (tangent) {
     CB.resize(4 * nq, 2 * n);
     dJ_psi.resize(4 * nq, m);
   }
   for (int k = 0; k < nq; ++k) {
     const auto s = material::mixed_rubber_state(constants, F[k], F33(k), p_points(k));
-    const double w = kin.w(k), p = p_points(k);
+    const double w = ev.JxW(k) * out_of_plane.at(ev.x[k]), p = p_points(k);
     el.energy += w * (s.W_iso + p * (s.J - 1) - 0.5 * inverse_bulk * p * p);
     const auto Nx = ev.dN_dx.col(k), Ny = ev.dN_dy.col(k);
     for (int i = 0; i < 2; ++i) {
@@ -131,6 +96,7 @@ FiniteStrainElement mixed_finite_strain_element(const ElementValues& ev, const E
     wS22(k) = w * s.S(1);
     wS12(k) = w * s.S(2);
     wS33(k) = w * s.S(3) * inv_R(k) * inv_R(k);
+    w_inv_K(k) = w * inverse_bulk;
   }
   if (!tangent) return el;
   el.K = Eigen::MatrixXd::Zero(2 * n + m, 2 * n + m);
@@ -145,34 +111,7 @@ FiniteStrainElement mixed_finite_strain_element(const ElementValues& ev, const E
   const Eigen::MatrixXd Kup = B.transpose() * dJ_psi;
   el.K.topRightCorner(2 * n, m) = Kup;
   el.K.bottomLeftCorner(m, 2 * n) = Kup.transpose();
-  el.K.bottomRightCorner(m, m) = -inverse_bulk * pressure_mass(psi, kin.w);
-  return el;
-}
-
-Eigen::VectorXd condensed_pressure(const ElementValues& ev, const Eigen::MatrixXd& psi, double inverse_bulk,
-                                   const OutOfPlane& out_of_plane, const Eigen::VectorXd& u_e) {
-  HPC_ASSERT(inverse_bulk > 0, "an incompressible element's pressure is not a function of u");
-  const Kinematics kin = kinematics(ev, out_of_plane, u_e);
-  const Eigen::VectorXd g = psi * kin.w.cwiseProduct(kin.J - Eigen::VectorXd::Ones(kin.J.size()));
-  return pressure_mass(psi, kin.w).ldlt().solve(g) / inverse_bulk;
-}
-
-FiniteStrainElement condensed_mixed_element(const ElementValues& ev, const Eigen::MatrixXd& psi,
-                                            const material::RubberConstants& constants, double inverse_bulk,
-                                            const OutOfPlane& out_of_plane, const Eigen::VectorXd& u_e,
-                                            bool tangent) {
-  const int n = ev.n_modes();
-  const Eigen::VectorXd p_e = condensed_pressure(ev, psi, inverse_bulk, out_of_plane, u_e);
-  FiniteStrainElement el = mixed_finite_strain_element(ev, psi, constants, inverse_bulk, out_of_plane, u_e, p_e, tangent);
-  if (el.inverted()) return el;
-  el.f_int.conservativeResize(2 * n);  // the pressure rows are zero at p(u)
-  if (!tangent) return el;
-  // K_uu − K_up K_pp⁻¹ K_pu with K_pp = −M/K, M from the same points as K_pp
-  const int m = static_cast<int>(p_e.size());
-  const Eigen::MatrixXd Kup = el.K.topRightCorner(2 * n, m);
-  const Eigen::MatrixXd M = -el.K.bottomRightCorner(m, m) / inverse_bulk;
-  const Eigen::MatrixXd Kc = el.K.topLeftCorner(2 * n, 2 * n) + Kup * M.ldlt().solve(Kup.transpose()) / inverse_bulk;
-  el.K = Kc;
+  el.K.bottomRightCorner(m, m).noalias() = -psi * w_inv_K.asDiagonal() * psi.transpose();
   return el;
 }
 

@@ -42,18 +42,4 @@ FiniteStrainElement mixed_finite_strain_element(const ElementValues& ev, const E
                                                 const Eigen::VectorXd& u_e, const Eigen::VectorXd& p_e,
                                                 bool tangent);
 
-/// A finite K's pressure as a function of the displacement: r_p is linear in p, so r_p = 0 is
-/// p(u_e) = K M⁻¹ ∫ ψ (J − 1) dV, M = ∫ ψ ψᵀ dV (the L² projection of K (J − 1) onto the
-/// element's pressure space). Needs inverse_bulk > 0.
-Eigen::VectorXd condensed_pressure(const ElementValues& ev, const Eigen::MatrixXd& psi, double inverse_bulk,
-                                   const OutOfPlane& out_of_plane, const Eigen::VectorXd& u_e);
-
-/// The mixed element with its pressure eliminated (inverse_bulk > 0): f_int = r_u(u_e, p(u_e))
-/// (2 n), K = K_uu + K K_up M⁻¹ K_pu (the Schur complement of K_pp = −M/K: the derivative of
-/// f_int, p following u), energy Π_e(u_e, p(u_e)). A displacement-only element to assemble.
-FiniteStrainElement condensed_mixed_element(const ElementValues& ev, const Eigen::MatrixXd& psi,
-                                            const material::RubberConstants& constants, double inverse_bulk,
-                                            const OutOfPlane& out_of_plane, const Eigen::VectorXd& u_e,
-                                            bool tangent);
-
 }  // namespace hpcontact::fem

@@ -412,11 +412,11 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
   }
 }
 
-/// The pressure dofs of the incompressible mixed bodies, after all displacement dofs: per
-/// element n_pressure_modes(p − 1), body after body.
+/// The pressure dofs of the mixed bodies, after all displacement dofs: per element
+/// n_pressure_modes(p − 1), body after body.
 void number_pressures(Discretization& d) {
   for (Body& body : d.bodies) {
-    if (!body.global_pressure()) continue;
+    if (!body.mixed) continue;
     body.pressure_first.push_back(d.n_dofs);
     for (int q = 0; q < body.mesh.n_quads(); ++q) {
       d.n_dofs += fem::n_pressure_modes(fem::pressure_degree(body.dofs.element(q)));
@@ -543,7 +543,7 @@ Discretization discretize(const ProblemSpec& spec) {
     if (pass == 0) d.n_free_external = d.n_free;
   }
   for (const Body& body : d.bodies)
-    if (body.global_pressure())
+    if (body.mixed)
       for (int dof = body.pressure_first.front(); dof < body.pressure_first.back(); ++dof)
         d.free_index[dof] = d.n_free++;
   return d;

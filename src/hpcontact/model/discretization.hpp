@@ -71,32 +71,25 @@ struct Body {
     return ue;
   }
 
-  /// The mixed u–p element of a rubber law (fem/mixed_finite_strain.hpp): per element a
-  /// discontinuous pressure of total degree p − 1.
+  /// The mixed u–p element of a rubber law (fem/mixed_finite_strain.hpp): per element the
+  /// coefficients of a discontinuous pressure of total degree p − 1, global dofs after all
+  /// bodies' displacement dofs (Discretization).
   bool mixed = false;
   /// 1/K of the mixed element: 0 when incompressible.
   double inverse_bulk = 0;
-  /// Whether the pressure coefficients are unknowns of the system: incompressible (1/K = 0),
-  /// where the element's pressure block is zero and cannot be eliminated element by element.
-  /// With a finite K each element eliminates its own (fem::condensed_mixed_element: r_p is
-  /// linear in p, p(u) = K M⁻¹ ∫ ψ (J − 1) dV exactly) and the body's unknowns are its
-  /// displacements, as with the displacement element.
-  bool global_pressure() const { return mixed && inverse_bulk == 0; }
   /// Per element q its first pressure dof, and after the last element the end: element q's
-  /// pressure dofs are [pressure_first[q], pressure_first[q + 1]), global dofs after all
-  /// bodies' displacement dofs (Discretization). Empty unless global_pressure().
+  /// pressure dofs are [pressure_first[q], pressure_first[q + 1]). Empty unless mixed.
   std::vector<int> pressure_first;
-  int n_pressure_modes(int q) const { return global_pressure() ? pressure_first[q + 1] - pressure_first[q] : 0; }
-  /// Element q's pressure coefficients from the global dof vector u (empty unless
-  /// global_pressure()).
+  int n_pressure_modes(int q) const { return mixed ? pressure_first[q + 1] - pressure_first[q] : 0; }
+  /// Element q's pressure coefficients from the global dof vector u (empty unless mixed).
   Eigen::VectorXd element_pressures(int q, const Eigen::VectorXd& u) const {
-    if (!global_pressure()) return {};
+    if (!mixed) return {};
     return u.segment(pressure_first[q], n_pressure_modes(q));
   }
 };
 
 /// The whole discrete problem. The dofs are the bodies' displacement dofs, body after body, then
-/// the pressure dofs of incompressible mixed bodies. Free dofs are numbered external modes first (all bodies),
+/// the pressure dofs of mixed bodies. Free dofs are numbered external modes first (all bodies),
 /// then internal modes, then pressures, so the condensed system is the leading block.
 struct Discretization {
   std::vector<Body> bodies;

@@ -6,23 +6,12 @@
 
 namespace hpcontact::model {
 
-namespace {
-
-/// The pressure modes of element q at its Gauss points.
-Eigen::MatrixXd pressure_modes(const Body& body, int q) {
-  return fem::pressure_modes_at_gauss_points(fem::pressure_degree(body.dofs.element(q)), body.n_gauss[q]);
-}
-
-}  // namespace
-
 fem::FiniteStrainElement finite_strain_element(const Body& body, int q, const fem::ElementValues& ev,
                                                const Eigen::VectorXd& u, bool tangent) {
   const Eigen::VectorXd u_e = body.element_coefficients(q, u);
   if (body.mixed) {
-    const Eigen::MatrixXd psi = pressure_modes(body, q);
-    if (!body.global_pressure())
-      return fem::condensed_mixed_element(ev, psi, body.rubber, body.inverse_bulk, body.out_of_plane(), u_e,
-                                          tangent);
+    const Eigen::MatrixXd psi =
+        fem::pressure_modes_at_gauss_points(fem::pressure_degree(body.dofs.element(q)), body.n_gauss[q]);
     return fem::mixed_finite_strain_element(ev, psi, body.rubber, body.inverse_bulk, body.out_of_plane(),
                                             u_e, body.element_pressures(q, u), tangent);
   }
@@ -33,11 +22,7 @@ fem::FiniteStrainElement finite_strain_element(const Body& body, int q, const fe
 
 double mixed_pressure(const Body& body, int q, double xi, double eta, const Eigen::VectorXd& u) {
   const int degree = fem::pressure_degree(body.dofs.element(q));
-  if (body.global_pressure()) return fem::pressure_modes(degree, xi, eta).dot(body.element_pressures(q, u));
-  const auto ev = fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q], body.mesh, q);
-  const Eigen::VectorXd p_e = fem::condensed_pressure(ev, pressure_modes(body, q), body.inverse_bulk,
-                                                      body.out_of_plane(), body.element_coefficients(q, u));
-  return fem::pressure_modes(degree, xi, eta).dot(p_e);
+  return fem::pressure_modes(degree, xi, eta).dot(body.element_pressures(q, u));
 }
 
 }  // namespace hpcontact::model

@@ -89,14 +89,16 @@ std::vector<PointConstraint> prescribed_vertices(const Discretization& d, int b)
 
 std::string describe_dof(const Discretization& d, int dof) {
   for (const Body& body : d.bodies) {
-    if (body.global_pressure() && dof >= body.pressure_first.front() && dof < body.pressure_first.back()) {
+    if (body.mixed && dof >= body.pressure_first.front() && dof < body.pressure_first.back()) {
       const int q = static_cast<int>(std::upper_bound(body.pressure_first.begin(), body.pressure_first.end(), dof) -
                                      body.pressure_first.begin()) - 1;
       std::ostringstream os;
       os << "body '" << body.name << "', element " << body.mesh.quad_id(q) << ", pressure mode "
          << dof - body.pressure_first[q]
-         << " (an incompressible body needs a free or loaded boundary somewhere: prescribed all "
-            "round, its mean pressure is not determined)";
+         << (body.inverse_bulk == 0 ? " (an incompressible body needs a free or loaded boundary "
+                                      "somewhere: prescribed all round, its mean pressure is not "
+                                      "determined)"
+                                    : "");
       return os.str();
     }
     if (dof < body.dof_offset || dof >= body.dof_offset + body.dofs.n_dofs()) continue;
