@@ -73,7 +73,12 @@ struct Body {
 
   /// The mixed u–p element of a rubber law (fem/mixed_finite_strain.hpp): per element the
   /// coefficients of a discontinuous pressure of total degree p − 1, global dofs after all
-  /// bodies' displacement dofs (Discretization).
+  /// bodies' displacement dofs (Discretization), for every K. Not eliminated per element: with
+  /// 1/K = 0 the element's pressure block is zero; with a finite K the elimination is exact
+  /// (p = K M⁻¹ ∫ ψ (J − 1) dV) but was measured to slow Newton as K grows — 70 and 234
+  /// iterations on the incompressible O-ring's mesh at K/μ = 10³ and 10⁴ against 19 with the
+  /// pressure as unknowns (docs/theory.md §12, "Solving"). Their system is symmetric indefinite:
+  /// LU, as finite strain is solved anyway.
   bool mixed = false;
   /// 1/K of the mixed element: 0 when incompressible.
   double inverse_bulk = 0;
