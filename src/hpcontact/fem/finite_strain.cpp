@@ -13,7 +13,7 @@ namespace hpcontact::fem {
 
 Eigen::Matrix2d deformation_gradient(const ElementValues& ev, int k, const Eigen::VectorXd& u_e) {
   const int n = ev.n_modes();
-  const auto ux = u_e.head(n), uy = u_e.tail(n);
+  const auto ux = u_e.head(n), uy = u_e.segment(n, n);
   Eigen::Matrix2d F;
   F << 1 + ux.dot(ev.dN_dx.col(k)), ux.dot(ev.dN_dy.col(k)), uy.dot(ev.dN_dx.col(k)),
       1 + uy.dot(ev.dN_dy.col(k));
@@ -22,7 +22,7 @@ Eigen::Matrix2d deformation_gradient(const ElementValues& ev, int k, const Eigen
 
 Eigen::Matrix2d deformation_gradient(const PointValues& pv, const Eigen::VectorXd& u_e) {
   const int n = static_cast<int>(pv.N.size());
-  const auto ux = u_e.head(n), uy = u_e.tail(n);
+  const auto ux = u_e.head(n), uy = u_e.segment(n, n);
   Eigen::Matrix2d F;
   F << 1 + ux.dot(pv.dN_dx), ux.dot(pv.dN_dy), uy.dot(pv.dN_dx), 1 + uy.dot(pv.dN_dy);
   return F;

@@ -156,8 +156,22 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "bodies[].material.K", .type = T::number, .unit = "force/length²",
        .doc = "Bulk modulus of a rubber law (required by each): U(J) = K/2 (J - 1)^2. Rubber's "
               "K is ~1000 times its shear modulus 2 (C10 + C01); the displacement elements "
-              "stiffen (lock) as that ratio grows, less so at high p.",
+              "stiffen (lock) as that ratio grows, less so at high p (formulation: mixed does "
+              "not). Not with incompressible: true.",
        .lower = greater_than(0)},
+      {.path = "bodies[].material.incompressible", .type = T::boolean, .default_yaml = "false",
+       .doc = "A rubber law with 1/K = 0 (nu = 0.5 exactly): J = 1, held weakly by the mixed "
+              "element's pressure; give it instead of K. Needs formulation: mixed (its default "
+              "then)."},
+      {.path = "bodies[].material.formulation", .type = T::choice,
+       .doc = "A rubber law's element. `displacement`: W of the displacement alone (locks as "
+              "K / mu grows). `mixed`: displacement of degree p and a pressure discontinuous "
+              "between elements, of total degree p - 1 (P_{p-1}), in Pi = int W_iso + p (J - 1) "
+              "- p^2 / (2K) dV: no locking at any K, incompressible allowed; its pressure is "
+              "the VTU field pressure_mixed (positive in tension) and enters the Cauchy stress "
+              "reported. Absent: mixed when incompressible, else displacement (the answers of "
+              "inputs written before it unchanged).",
+       .choices = {"displacement", "mixed"}},
       {.path = "bodies[].material.plane", .type = T::choice, .default_yaml = "strain",
        .doc = "Plane strain, plane stress, or axisymmetric: the body is the meridian section "
               "of a solid of revolution about the axis x = 0 (x the radius r >= 0, y the axial "

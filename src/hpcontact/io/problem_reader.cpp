@@ -211,6 +211,7 @@ class SpecBuilder {
     m.C20 = constant("C20");
     m.C30 = constant("C30");
     m.K = constant("K");
+    read_formulation(node, path, m);
     const std::string plane = node["plane"].Scalar();
     m.plane = plane == "stress"         ? PlaneMode::plane_stress
               : plane == "axisymmetric" ? PlaneMode::axisymmetric
@@ -224,12 +225,34 @@ class SpecBuilder {
     return m;
   }
 
-  /// Each constant the model takes is given, and no other (the schema checks their ranges).
+  /// A rubber law's incompressible and formulation (the schema checks their values): only a
+  /// rubber law takes them, and incompressible needs the mixed element.
+  void read_formulation(const YAML::Node& node, const std::string& path, MaterialSpec& m) {
+    const bool rubber = m.model == "neo-hooke-split" || m.model == "mooney-rivlin" || m.model == "yeoh";
+    m.incompressible = node["incompressible"] && boolean(node["incompressible"]);
+    for (const char* key : {"incompressible", "formulation"})
+      if (node[key] && !rubber && (m.incompressible || std::string(key) == "formulation"))
+        source_.fail(node[key], path + "." + key,
+                     "is for the rubber laws (neo-hooke-split, mooney-rivlin, yeoh), not model " + m.model);
+    m.formulation = node["formulation"] ? node["formulation"].Scalar()
+                    : m.incompressible   ? "mixed"
+                                         : "displacement";
+    if (m.incompressible && m.formulation != "mixed")
+      source_.fail(node["formulation"], path + ".formulation",
+                   "displacement cannot hold J = 1 (incompressible: true): use formulation: mixed, or "
+                   "a finite K instead of incompressible");
+  }
+
+  /// Each constant the model takes is given, and no other (the schema checks their ranges); an
+  /// incompressible rubber law takes no K.
   void require_constants(const YAML::Node& node, const std::string& path, const std::string& model) {
-    const std::vector<std::string> takes = model == "neo-hooke-split" ? std::vector<std::string>{"C10", "K"}
-                                           : model == "mooney-rivlin" ? std::vector<std::string>{"C10", "C01", "K"}
-                                           : model == "yeoh" ? std::vector<std::string>{"C10", "C20", "C30", "K"}
-                                                             : std::vector<std::string>{"E", "nu"};
+    const bool incompressible = node["incompressible"] && to_boolean(node["incompressible"]).value_or(false);
+    const char* K = incompressible ? nullptr : "K";
+    std::vector<std::string> takes = model == "neo-hooke-split" ? std::vector<std::string>{"C10"}
+                                     : model == "mooney-rivlin" ? std::vector<std::string>{"C10", "C01"}
+                                     : model == "yeoh" ? std::vector<std::string>{"C10", "C20", "C30"}
+                                                       : std::vector<std::string>{"E", "nu"};
+    if (K && takes.front() == "C10") takes.push_back(K);
     std::string list;
     for (const auto& key : takes) list += (list.empty() ? "" : ", ") + key;
     for (const char* key : {"E", "nu", "C10", "C01", "C20", "C30", "K"}) {
@@ -237,6 +260,9 @@ class SpecBuilder {
       if (taken && !node[key])
         source_.fail(node, path, std::string("missing required key '") + key + "' (model " + model +
                                      " takes " + list + ")");
+      if (!taken && node[key] && std::string(key) == "K" && incompressible)
+        source_.fail(node[key], path + ".K", "is not taken with incompressible: true (1/K = 0): "
+                     "give one of the two");
       if (!taken && node[key])
         source_.fail(node[key], path + "." + key,
                      "is not a constant of model " + model + " (it takes " + list + ")");
@@ -572,6 +598,12 @@ class SpecBuilder {
                    "goal corrects the degrees with the error estimate of each step, which only a loop "
                    "to adapt.tolerance computes: give a tolerance, or degree rising");
     a.min_degree = integer(node["min_degree"]);
+    if (a.method == AdaptMethod::hp && a.degree != HpDegree::constant && a.min_degree < 2)
+      for (size_t b = 0; b < spec.bodies.size(); ++b)
+        if (spec.bodies[b].material.formulation == "mixed")
+          source_.fail(node["min_degree"], "adapt.min_degree",
+                       "bodies[" + std::to_string(b) + "] has the mixed element, whose pressure of "
+                       "degree p - 1 needs p >= 2: give adapt.min_degree: 2");
     if (const YAML::Node t = node["tolerance"]) {
       a.tolerance = number(t);
       a.tolerance_given = true;

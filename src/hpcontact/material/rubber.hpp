@@ -18,12 +18,13 @@ namespace hpcontact::material {
 /// the bulk modulus K.
 struct RubberConstants {
   double C10 = 0, C01 = 0, C20 = 0, C30 = 0;
-  double K = 0;
+  double K = 0;  ///< ∞: incompressible (only the mixed element takes it)
 
   /// μ = 2 (C10 + C01), the shear modulus at C = I.
   double shear_modulus() const { return 2 * (C10 + C01); }
   /// The linear law of the same μ and K: E = 9Kμ / (3K + μ), ν = (3K − 2μ) / (2 (3K + μ)); what
   /// the small-strain parts of a model (contact stiffness scales, estimators) see of the rubber.
+  /// An incompressible law (K = ∞) is seen as K = 1000 μ (ν = 0.4995).
   LinearElastic small_strain(Plane plane) const;
 };
 

@@ -7,10 +7,12 @@
 #include "hpcontact/fem/axisymmetric_finite_strain.hpp"
 #include "hpcontact/fem/finite_strain.hpp"
 #include "hpcontact/material/hyperelastic_hoop.hpp"
+#include "hpcontact/material/mixed_rubber.hpp"
 
 namespace hpcontact::model {
 
-PointStress point_stress(const Body& body, int q, const fem::PointValues& pv, const Eigen::VectorXd& u_e) {
+PointStress point_stress(const Body& body, int q, const fem::PointValues& pv, const Eigen::VectorXd& u_e,
+                         double pressure) {
   const auto& m = body.material_of(q);
   PointStress ps;
   if (!body.finite_strain()) {
@@ -29,6 +31,15 @@ PointStress point_stress(const Body& body, int q, const fem::PointValues& pv, co
   ps.F = fem::deformation_gradient(pv, u_e);
   const Eigen::Matrix2d E = 0.5 * (ps.F.transpose() * ps.F - Eigen::Matrix2d::Identity());
   ps.strain = {E(0, 0), E(1, 1), 2 * E(0, 1)};
+  if (body.mixed) {
+    const double F33 = body.axisymmetric() ? fem::hoop_stretch(pv.N, pv.x, u_e, ps.F(0, 0)) : 1.0;
+    const auto m = material::mixed_rubber_state(body.rubber, ps.F, F33, pressure);
+    material::HoopHyperelasticState state;
+    state.S = m.S;
+    state.J = m.J;
+    ps.stress = material::hoop_cauchy_stress(state, ps.F, F33, &ps.stress_zz);
+    return ps;
+  }
   if (body.axisymmetric()) {
     const double F_hoop = fem::hoop_stretch(pv.N, pv.x, u_e, ps.F(0, 0));
     const auto state = material::hoop_hyperelastic_state(body.finite_strain_law(q), ps.F, F_hoop);

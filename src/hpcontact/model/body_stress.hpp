@@ -16,7 +16,9 @@ struct PointStress {
   Eigen::Matrix2d F = Eigen::Matrix2d::Identity();  ///< deformation gradient (finite strain)
 };
 
-/// At a point with shape values pv of element q with local coefficients u_e.
-PointStress point_stress(const Body& body, int q, const fem::PointValues& pv, const Eigen::VectorXd& u_e);
+/// At a point with shape values pv of element q with local coefficients u_e; a mixed body's
+/// stress takes its element's pressure there, `pressure` (model::mixed_pressure), not U'(J).
+PointStress point_stress(const Body& body, int q, const fem::PointValues& pv, const Eigen::VectorXd& u_e,
+                         double pressure = 0);
 
 }  // namespace hpcontact::model

@@ -10,6 +10,7 @@
 #include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/fem/finite_strain.hpp"
 #include "hpcontact/model/body_stress.hpp"
+#include "hpcontact/model/finite_strain_body.hpp"
 #include "hpcontact/model/boundary_point.hpp"
 
 namespace hpcontact::model {
@@ -47,7 +48,7 @@ SideValues side_values(const Body& body, const ContactPair& pair, const contact:
   const auto r = fem::edge_reference_point(le, t);
   const auto pv = fem::point_values(body.dofs.element(q), body.maps[q], r[0], r[1]);
   const Eigen::VectorXd ue = body.element_coefficients(q, u);
-  const auto ps = point_stress(body, q, pv, ue);
+  const auto ps = point_stress(body, q, pv, ue, body.mixed ? mixed_pressure(body, q, r[0], r[1], u) : 0.0);
   Mat2 sigma;
   sigma << ps.stress(0), ps.stress(2), ps.stress(2), ps.stress(1);
   SideValues v;

@@ -61,7 +61,7 @@ bool FiniteStrainForces::add(const Eigen::VectorXd& u, Eigen::VectorXd& R,
   parallel_for(ne, [&](int i) {
     const Body& body = d_.bodies[elements_[i].body];
     const int q = elements_[i].q;
-    el[i] = finite_strain_element(body, q, values_[i], body.element_coefficients(q, u), t != nullptr);
+    el[i] = finite_strain_element(body, q, values_[i], u, t != nullptr);
   });
   for (int i = 0; i < ne; ++i) {
     const Body& body = d_.bodies[elements_[i].body];

@@ -14,6 +14,7 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/fem/elasticity.hpp"
+#include "hpcontact/fem/mixed_finite_strain.hpp"
 #include "hpcontact/fem/element_values.hpp"
 #include "hpcontact/mesh/element_shape.hpp"
 #include "hpcontact/model/axis.hpp"
@@ -117,13 +118,16 @@ Body make_body(const ProblemSpec& spec, int b) {
   mat.poisson_ratio = bs.material.poisson_ratio;
   mat.plane = plane;
   if (material::is_rubber(law)) {
-    rubber = {bs.material.C10, bs.material.C01, bs.material.C20, bs.material.C30, bs.material.K};
+    const double K = bs.material.incompressible ? std::numeric_limits<double>::infinity() : bs.material.K;
+    rubber = {bs.material.C10, bs.material.C01, bs.material.C20, bs.material.C30, K};
     mat = rubber.small_strain(plane);
   }
   mat.validate(bs.material.where.str());
 
   Body body{bs.name, std::move(mesh), std::move(dofs), {}, {}, mat, bs.material.thickness, 0, {},
             law, rubber, {}, {}, {}, {}};
+  body.mixed = bs.material.formulation == "mixed";
+  body.inverse_bulk = 1 / rubber.K;  // 0 when incompressible
   if (!bs.regions.empty()) body.element_region.assign(body.mesh.n_quads(), -1);
   for (const auto& region : bs.regions) {
     material::LinearElastic rm = mat;
@@ -149,6 +153,9 @@ Body make_body(const ProblemSpec& spec, int b) {
     body.maps.push_back(opt.lagrange ? mesh::ElementMap::isoparametric(body.mesh, q, opt.lagrange_type)
                                      : mesh::ElementMap::blending(body.mesh, q));
     body.n_gauss.push_back(body.dofs.element(q).max_degree() + ds.quadrature_extra);
+    HPC_REQUIRE(!body.mixed || body.dofs.element(q).max_degree() >= 2, InputError, bs.material.where.str(),
+                ".formulation: mixed needs degree 2 or more (element ", body.mesh.quad_id(q),
+                " has 1: its pressure would be one constant, Q1-P0, which locks or oscillates)");
     mesh::check_jacobian(body.maps[q], body.mesh, q, body.n_gauss[q]);
   }
   for (const auto& set : bs.edge_sets) {
@@ -405,6 +412,19 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
   }
 }
 
+/// The pressure dofs of the mixed bodies, after all displacement dofs: per element
+/// n_pressure_modes(p − 1), body after body.
+void number_pressures(Discretization& d) {
+  for (Body& body : d.bodies) {
+    if (!body.mixed) continue;
+    body.pressure_first.push_back(d.n_dofs);
+    for (int q = 0; q < body.mesh.n_quads(); ++q) {
+      d.n_dofs += fem::n_pressure_modes(fem::pressure_degree(body.dofs.element(q)));
+      body.pressure_first.push_back(d.n_dofs);
+    }
+  }
+}
+
 /// The rigid-body motions each body's constraints leave free.
 void find_free_rigid_motions(Discretization& d) {
   for (size_t b = 0; b < d.bodies.size(); ++b) {
@@ -436,6 +456,29 @@ std::vector<int> contact_edges_of(const ProblemSpec& spec, const Body& body) {
   return edges;
 }
 
+/// An incompressible body must have some boundary where neither displacement component is
+/// prescribed, or a contact pair: held all round, J = 1 leaves its mean pressure undetermined
+/// (the tangent is singular).
+void require_free_boundary(const ProblemSpec& spec, const Discretization& d) {
+  for (size_t b = 0; b < d.bodies.size(); ++b) {
+    const Body& body = d.bodies[b];
+    if (!body.mixed || body.inverse_bulk != 0 || !contact_edges_of(spec, body).empty()) continue;
+    bool free = false;
+    for (int e = 0; e < body.mesh.n_edges() && !free; ++e) {
+      const auto& edge = body.mesh.edge(e);
+      if (!edge.on_boundary()) continue;
+      std::vector<int> modes = {body.dofs.vertex_mode(edge.v0), body.dofs.vertex_mode(edge.v1)};
+      for (int k = 2; k <= body.dofs.edge_degree(e); ++k) modes.push_back(body.dofs.edge_mode(e, k));
+      for (int m : modes)
+        for (int c = 0; c < 2; ++c) free = free || d.free_index[body.dof_offset + 2 * m + c] >= 0;
+    }
+    HPC_REQUIRE(free, InputError, spec.bodies[b].material.where.str(),
+                ".incompressible: body '", body.name, "' has every boundary displacement prescribed and "
+                "no contact: J = 1 then leaves its mean pressure undetermined (leave part of its "
+                "boundary free or loaded, or give a finite K)");
+  }
+}
+
 }  // namespace
 
 Discretization discretize(const ProblemSpec& spec) {
@@ -447,6 +490,7 @@ Discretization discretize(const ProblemSpec& spec) {
     d.bodies.back().dof_offset = d.n_dofs;
     d.n_dofs += d.bodies.back().dofs.n_dofs();
   }
+  number_pressures(d);
   d.free_index.assign(d.n_dofs, 0);
   d.prescribed = Eigen::VectorXd::Zero(d.n_dofs);
   d.load = Eigen::VectorXd::Zero(d.n_dofs);
@@ -477,6 +521,7 @@ Discretization discretize(const ProblemSpec& spec) {
     }
   }
   find_free_rigid_motions(d);
+  require_free_boundary(spec, d);
   for (size_t b = 0; b < d.bodies.size(); ++b) {
     const Body& body = d.bodies[b];
     const auto shapes = mesh::shape_warnings(body.mesh, body.maps, contact_edges_of(spec, body),
@@ -497,6 +542,10 @@ Discretization discretize(const ProblemSpec& spec) {
     }
     if (pass == 0) d.n_free_external = d.n_free;
   }
+  for (const Body& body : d.bodies)
+    if (body.mixed)
+      for (int dof = body.pressure_first.front(); dof < body.pressure_first.back(); ++dof)
+        d.free_index[dof] = d.n_free++;
   return d;
 }
 

@@ -55,10 +55,12 @@ struct Body {
   /// The finite-strain law of element q with its constants.
   material::FiniteStrainLaw finite_strain_law(int q) const { return {law, material_of(q), rubber}; }
 
-  /// Global dof of local dof `local` (component-blocked) of element q.
+  /// Global dof of local dof `local` of element q: component-blocked displacements (2 n), then
+  /// for a mixed body its pressure modes.
   int global_dof(int q, int local) const {
     const auto& es = dofs.element(q);
     const int n = es.n_modes();
+    if (local >= 2 * n) return pressure_first[q] + local - 2 * n;
     return dof_offset + 2 * es.modes[local % n] + local / n;
   }
 
@@ -68,10 +70,32 @@ struct Body {
     for (int a = 0; a < ue.size(); ++a) ue(a) = u(global_dof(q, a));
     return ue;
   }
+
+  /// The mixed u–p element of a rubber law (fem/mixed_finite_strain.hpp): per element the
+  /// coefficients of a discontinuous pressure of total degree p − 1, global dofs after all
+  /// bodies' displacement dofs (Discretization), for every K. Not eliminated per element: with
+  /// 1/K = 0 the element's pressure block is zero; with a finite K the elimination is exact
+  /// (p = K M⁻¹ ∫ ψ (J − 1) dV) but was measured to slow Newton as K grows — 70 and 234
+  /// iterations on the incompressible O-ring's mesh at K/μ = 10³ and 10⁴ against 19 with the
+  /// pressure as unknowns (docs/theory.md §12, "Solving"). Their system is symmetric indefinite:
+  /// LU, as finite strain is solved anyway.
+  bool mixed = false;
+  /// 1/K of the mixed element: 0 when incompressible.
+  double inverse_bulk = 0;
+  /// Per element q its first pressure dof, and after the last element the end: element q's
+  /// pressure dofs are [pressure_first[q], pressure_first[q + 1]). Empty unless mixed.
+  std::vector<int> pressure_first;
+  int n_pressure_modes(int q) const { return mixed ? pressure_first[q + 1] - pressure_first[q] : 0; }
+  /// Element q's pressure coefficients from the global dof vector u (empty unless mixed).
+  Eigen::VectorXd element_pressures(int q, const Eigen::VectorXd& u) const {
+    if (!mixed) return {};
+    return u.segment(pressure_first[q], n_pressure_modes(q));
+  }
 };
 
-/// The whole discrete problem. Free dofs are numbered external modes first (all bodies), then
-/// internal modes, so the condensed system is the leading block.
+/// The whole discrete problem. The dofs are the bodies' displacement dofs, body after body, then
+/// the pressure dofs of mixed bodies. Free dofs are numbered external modes first (all bodies),
+/// then internal modes, then pressures, so the condensed system is the leading block.
 struct Discretization {
   std::vector<Body> bodies;
   std::string method;  ///< "p" or "h"

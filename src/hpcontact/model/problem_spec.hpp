@@ -39,6 +39,11 @@ struct MaterialSpec {
   /// A rubber law's constants (material/rubber.hpp) [force/length²]; those the law does not
   /// take stay 0.
   double C10 = 0, C01 = 0, C20 = 0, C30 = 0, K = 0;
+  /// A rubber law with 1/K = 0 (K not given): J = 1, held by the mixed element's pressure.
+  bool incompressible = false;
+  /// A rubber law's element: "displacement" (W of u alone) or "mixed" (u and an element-wise
+  /// pressure, fem/mixed_finite_strain.hpp).
+  std::string formulation = "displacement";
   PlaneMode plane = PlaneMode::plane_strain;
   double thickness = 1.0;  ///< out-of-plane thickness [length]
   SourceRef where;

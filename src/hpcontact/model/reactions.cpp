@@ -33,12 +33,13 @@ std::vector<int> supported_elements(const Discretization& d, const Body& body) {
 }
 
 /// The internal forces of element q at u (component-blocked local order): K_e u_e for small
-/// strain, t ∫ Bᵀ S dA for finite strain (empty where it inverts).
+/// strain, t ∫ Bᵀ S dA for finite strain (empty where it inverts; a mixed body's pressure rows
+/// after the displacements').
 Eigen::VectorXd internal_forces(const Body& body, int q, const Eigen::VectorXd& u) {
   const Eigen::VectorXd ue = body.element_coefficients(q, u);
   if (!body.finite_strain()) return element_stiffness(body, q) * ue;
   const auto ev = fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q], body.mesh, q);
-  return finite_strain_element(body, q, ev, ue, false).f_int;
+  return finite_strain_element(body, q, ev, u, false).f_int;
 }
 
 /// A force vector's resultant and moment with a body's resultant weights w and boundary

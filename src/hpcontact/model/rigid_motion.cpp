@@ -2,6 +2,8 @@
 // motion (a, b, θ) to the prescribed components, u_x = a - θ (y - c_y), u_y = b + θ (x - c_x).
 #include "hpcontact/model/rigid_motion.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -87,6 +89,18 @@ std::vector<PointConstraint> prescribed_vertices(const Discretization& d, int b)
 
 std::string describe_dof(const Discretization& d, int dof) {
   for (const Body& body : d.bodies) {
+    if (body.mixed && dof >= body.pressure_first.front() && dof < body.pressure_first.back()) {
+      const int q = static_cast<int>(std::upper_bound(body.pressure_first.begin(), body.pressure_first.end(), dof) -
+                                     body.pressure_first.begin()) - 1;
+      std::ostringstream os;
+      os << "body '" << body.name << "', element " << body.mesh.quad_id(q) << ", pressure mode "
+         << dof - body.pressure_first[q]
+         << (body.inverse_bulk == 0 ? " (an incompressible body needs a free or loaded boundary "
+                                      "somewhere: prescribed all round, its mean pressure is not "
+                                      "determined)"
+                                    : "");
+      return os.str();
+    }
     if (dof < body.dof_offset || dof >= body.dof_offset + body.dofs.n_dofs()) continue;
     const int mode = (dof - body.dof_offset) / 2;
     const char* comp = (dof - body.dof_offset) % 2 == 0 ? "ux" : "uy";

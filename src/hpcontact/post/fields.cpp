@@ -32,8 +32,10 @@ PointResult evaluate(const model::Body& body, int q, double xi, double eta, cons
   const int n = static_cast<int>(pv.N.size());
   PointResult r;
   r.x = pv.x;
-  r.u = Vec2(ue.head(n).dot(pv.N), ue.tail(n).dot(pv.N));
-  auto ps = model::point_stress(body, q, pv, ue);
+  r.u = Vec2(ue.head(n).dot(pv.N), ue.segment(n, n).dot(pv.N));
+  const auto pressure = [&](double x, double y) { return body.mixed ? model::mixed_pressure(body, q, x, y, u) : 0.0; };
+  double p = pressure(xi, eta);
+  auto ps = model::point_stress(body, q, pv, ue, p);
   // det J = 0 at a corner of 180° (two edges on one circle, node 3 of the Hertz 2×2 mesh): there
   // the strain is round-off divided by round-off (von Mises 2e7 for a peak of 1.4e4), and next
   // to it the discrete field's gradient grows like 1/distance (the map's singularity), so it is
@@ -43,11 +45,13 @@ PointResult evaluate(const model::Body& body, int q, double xi, double eta, cons
       !ps.stress.allFinite()) {
     const auto inner = fem::point_values(body.dofs.element(q), body.maps[q], xi * (1 - 2e-2),
                                          eta * (1 - 2e-2));
-    ps = model::point_stress(body, q, inner, ue);
+    p = pressure(xi * (1 - 2e-2), eta * (1 - 2e-2));
+    ps = model::point_stress(body, q, inner, ue, p);
   }
   r.strain = ps.strain;
   r.stress = ps.stress;
   r.stress_zz = ps.stress_zz;
+  r.pressure = p;  // where the stress is taken
   r.von_mises = von_mises(r.stress(0), r.stress(1), r.stress_zz, r.stress(2));
   const auto principal = principal_stresses(r.stress(0), r.stress(1), r.stress(2));
   r.principal_1 = principal[0];
@@ -62,7 +66,7 @@ double strain_energy(const model::Discretization& d, const Eigen::VectorXd& u) {
       const auto ev = fem::element_values(body.dofs.element(q), body.maps[q], body.n_gauss[q],
                                           body.mesh, q);
       if (body.finite_strain()) {
-        U += model::finite_strain_element(body, q, ev, body.element_coefficients(q, u), false).energy;
+        U += model::finite_strain_element(body, q, ev, u, false).energy;
         continue;
       }
       U += element_strain_energy(body, q, ev, body.element_coefficients(q, u));

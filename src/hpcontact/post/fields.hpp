@@ -21,6 +21,7 @@ struct PointResult {
   double von_mises = 0;      ///< from all four stress components
   double principal_1 = 0;    ///< larger in-plane principal stress
   double principal_2 = 0;    ///< smaller in-plane principal stress
+  double pressure = 0;       ///< a mixed body's element pressure (positive in tension), else 0
 };
 
 /// Fields at reference point (xi, eta) of element q of a body. Where the map is singular (a

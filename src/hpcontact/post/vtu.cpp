@@ -57,6 +57,10 @@ void write_vtu(const std::string& path, const model::Discretization& d, const Ei
   scalar("von_mises", [](const PointResult& p) { return p.von_mises; });
   scalar("principal_1", [](const PointResult& p) { return p.principal_1; });
   scalar("principal_2", [](const PointResult& p) { return p.principal_2; });
+  // the mixed element's pressure (discontinuous: every element has its own points), when a body
+  // has one
+  if (std::any_of(d.bodies.begin(), d.bodies.end(), [](const model::Body& b) { return b.mixed; }))
+    scalar("pressure_mixed", [](const PointResult& p) { return p.pressure; });
   grid.begin_cell_data();
   auto cell_int = [&](const char* name, const std::vector<int>& v) {
     grid.cell_scalar(name, [&](std::size_t i) { return v[i]; });
