@@ -66,10 +66,10 @@ LinearElastic RubberConstants::small_strain(Plane plane) const {
   const double mu = shear_modulus();
   // An incompressible law (K = ∞) has ν = 1/2, where the linear law's D is singular: the scales
   // and estimators see it as K = 1000 μ (ν = 0.4995), the ratio of a typical rubber.
-  const double K = std::isfinite(this->K) ? this->K : 1000 * mu;
+  const double bulk = std::isfinite(K) ? K : 1000 * mu;
   LinearElastic m;
-  m.youngs_modulus = 9 * K * mu / (3 * K + mu);
-  m.poisson_ratio = (3 * K - 2 * mu) / (2 * (3 * K + mu));
+  m.youngs_modulus = 9 * bulk * mu / (3 * bulk + mu);
+  m.poisson_ratio = (3 * bulk - 2 * mu) / (2 * (3 * bulk + mu));
   m.plane = plane;
   return m;
 }

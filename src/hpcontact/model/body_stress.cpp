@@ -33,10 +33,10 @@ PointStress point_stress(const Body& body, int q, const fem::PointValues& pv, co
   ps.strain = {E(0, 0), E(1, 1), 2 * E(0, 1)};
   if (body.mixed) {
     const double F33 = body.axisymmetric() ? fem::hoop_stretch(pv.N, pv.x, u_e, ps.F(0, 0)) : 1.0;
-    const auto m = material::mixed_rubber_state(body.rubber, ps.F, F33, pressure);
+    const auto mixed = material::mixed_rubber_state(body.rubber, ps.F, F33, pressure);
     material::HoopHyperelasticState state;
-    state.S = m.S;
-    state.J = m.J;
+    state.S = mixed.S;
+    state.J = mixed.J;
     ps.stress = material::hoop_cauchy_stress(state, ps.F, F33, &ps.stress_zz);
     return ps;
   }

@@ -125,7 +125,7 @@ Body make_body(const ProblemSpec& spec, int b) {
   mat.validate(bs.material.where.str());
 
   Body body{bs.name, std::move(mesh), std::move(dofs), {}, {}, mat, bs.material.thickness, 0, {},
-            law, rubber, {}, {}, {}, {}};
+            law, rubber, {}, {}, {}, {}, false, 0, {}};
   body.mixed = bs.material.formulation == "mixed";
   body.inverse_bulk = 1 / rubber.K;  // 0 when incompressible
   if (!bs.regions.empty()) body.element_region.assign(body.mesh.n_quads(), -1);
