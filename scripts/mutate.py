@@ -459,7 +459,7 @@ MUTATIONS = [
              "      carried.multipliers = carried_multipliers(from.pairs, st.multipliers, to_pairs, in);",
              "      carried.multipliers = std::vector<Eigen::VectorXd>(to_pairs.size());",
              "one degree more starts each frictional step with zero multipliers",
-             ["PathStart.OneDegreeMoreReachesTheColdStartsSolutionInFewerIterations"]),
+             ["PathStart.OneDegreeMoreCarriesEachStepsTractions"]),
     Mutation("other-rows-no-slip", "model", S + "model/contact_result_rows.cpp",
              "if (m.total_slips) ps.slip = c.nodes.interpolate(foot.edge, foot.t, *m.total_slips);",
              "(void)m.total_slips;",

@@ -77,3 +77,34 @@ TEST(PathStart, OneDegreeMoreReachesTheColdStartsSolutionInFewerIterations) {
   std::printf("p+1 from the p solve's path: %d Newton iterations in %d steps (cold start: %d)\n",
               warm.newton_iterations, warm.load_steps, cold.newton_iterations);
 }
+
+// One degree more on the same mesh, every step's multipliers are carried as the same traction
+// field: the new Lobatto nodes' quadrature of the normal and of the tangential multiplier (each
+// a polynomial of the edge's degree) gives the old nodes' forces, step by step.
+TEST(PathStart, OneDegreeMoreCarriesEachStepsTractions) {
+  const auto s = adapt::solve(partial_slip());
+  const model::ProblemSpec higher = adapt::with_degrees_raised(s->spec);
+  const model::Discretization d = model::discretize(higher);
+  const auto pairs = model::make_contact_pairs(higher, d);
+  const auto start = adapt::carry_over(s->discretization, s->solution, d, pairs);
+  ASSERT_EQ(start.path.size(), s->solution.step_states.size());
+  const auto& old_nodes = s->solution.pairs[0].constraints->nodes;
+  const auto& new_nodes = pairs[0].constraints->nodes;
+  auto forces = [](const contact::MultiplierNodes& nodes, const Eigen::VectorXd& l) {
+    double normal = 0, tangential = 0;
+    for (int j = 0; j < nodes.size(); ++j) {
+      normal += nodes.nodes[j].weight * l(j);
+      tangential += nodes.nodes[j].weight * l(nodes.size() + j);
+    }
+    return std::make_pair(normal, tangential);
+  };
+  for (size_t k = 0; k < start.path.size(); ++k) {
+    const auto before = forces(old_nodes, s->solution.step_states[k].multipliers[0]);
+    ASSERT_EQ(start.path[k].multipliers[0].size(), 2 * new_nodes.size());
+    const auto after = forces(new_nodes, start.path[k].multipliers[0]);
+    EXPECT_GT(std::abs(before.first), 1.0) << k;  // a pressed pair
+    EXPECT_NEAR(after.first, before.first, 1e-9 * std::abs(before.first)) << k;
+    EXPECT_NEAR(after.second, before.second, 1e-9 * std::abs(before.first)) << k;
+  }
+  EXPECT_GT(std::abs(forces(old_nodes, s->solution.step_states.back().multipliers[0]).second), 1.0);
+}
