@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <optional>
@@ -413,6 +414,12 @@ py::dict mesh_of(const Result& res, int subdivisions) {
   py::list names;
   for (const auto& b : res.run->discretization.bodies) names.append(b.name);
   out["body_names"] = names;
+  const auto& bodies = res.run->discretization.bodies;
+  if (std::any_of(bodies.begin(), bodies.end(), [](const model::Body& b) { return b.mixed; })) {
+    std::vector<double> p;
+    for (const auto& point : m.points) p.push_back(point.pressure);
+    out["pressure_mixed"] = to_numpy(p);
+  }
   return out;
 }
 
@@ -618,7 +625,8 @@ linear quads. points (n, 2) undeformed positions, cells (m, 4) point indices cou
 displacement (n, 2), strain (n, 3) xx, yy, gamma_xy (Green-Lagrange under finite strain),
 stress (n, 4) xx, yy, xy, zz (Cauchy under finite strain; zz: out of plane, the hoop stress of an
 axisymmetric body), von_mises, principal_1, principal_2 (n,), cell_body (index into body_names),
-cell_element (the element's id in the input), cell_degree (m,). A point on an edge between two
+cell_element (the element's id in the input), cell_degree (m,); with a mixed (u-p) rubber body
+pressure_mixed (n,), its element pressure (0 on other bodies). A point on an edge between two
 elements appears once per element. The deformed mesh is points + displacement; e.g. with
 matplotlib: tripcolor or PolyCollection(points[cells] + displacement[cells]).
 

@@ -45,7 +45,8 @@ def test_lame_fields_at_every_sampled_point(lame):
     np.testing.assert_allclose(lame.displacement(m["points"][::7]), m["displacement"][::7], rtol=0, atol=1e-12)
 
 
-@pytest.mark.parametrize("case", [os.path.join("lame", "thick-cylinder.yaml"), os.path.join("two-bars", "stick.yaml")])
+@pytest.mark.parametrize("case", [os.path.join("lame", "thick-cylinder.yaml"), os.path.join("two-bars", "stick.yaml"),
+                                  os.path.join("o-ring", "o-ring-incompressible.yaml")])
 def test_mesh_is_solution_vtu_as_meshio_reads_it(root, tmp_path, case):
     """Every array equal to the file's (its 10 significant digits), the cells the same."""
     result = hpcontact.Problem.from_file(os.path.join(root, "examples", case)).run(out=tmp_path / "out")
@@ -62,6 +63,12 @@ def test_mesh_is_solution_vtu_as_meshio_reads_it(root, tmp_path, case):
     np.testing.assert_array_equal(vtu.cell_data["body"][0], m["cell_body"])
     np.testing.assert_array_equal(vtu.cell_data["element"][0], m["cell_element"])
     assert len(m["body_names"]) == 1 + ("two-bars" in case)
+    # the mixed element's pressure where a body has one, as the file's pressure_mixed
+    assert ("pressure_mixed" in m) == ("incompressible" in case) == ("pressure_mixed" in vtu.point_data)
+    if "pressure_mixed" in m:
+        p = m["pressure_mixed"]
+        np.testing.assert_allclose(vtu.point_data["pressure_mixed"], p, rtol=1e-9, atol=1e-9 * np.abs(p).max())
+        assert np.abs(p).max() > 0
 
 
 def test_subdivisions(lame):
