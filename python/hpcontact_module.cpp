@@ -582,7 +582,8 @@ body="name" searches that body only. Raises ValueError naming the first point ou
           py::arg("points"), py::arg("body") = py::none(),
           R"(Stresses (sxx, syy, sxy, szz) at points of the undeformed bodies.
 
-Cauchy stresses under finite strain; szz is the out-of-plane stress (nu (sxx + syy) in linear
+Cauchy stresses under finite strain; szz is the stress normal to the plane (the hoop stress of
+an axisymmetric body, x the radius; nu (sxx + syy) in linear
 plane strain, 0 in plane stress).
 points and body as for displacement(); returns shape (n, 4) (or (4,)).)")
       .def_property_readonly(
