@@ -1011,7 +1011,7 @@ std::string input_schema_markdown() {
         "stresses at the element samples (a 180° corner of a blending map sampled just inside); "
         "`sigma_zz` is the stress normal to the plane: nu (sigma_xx + sigma_yy) in linear plane "
         "strain, 0 in plane stress, and for an axisymmetric body (x the radius, y the axis) the "
-        "hoop stress sigma_theta (the hoop strain u_r / r is not written); a mixed rubber body "
+        "hoop stress sigma_theta, and `strain_hoop` its hoop strain u_r / r; a mixed rubber body "
         "also `pressure_mixed`, its element pressure; "
         "`contact.vtu` the contact points with the columns of contact.csv; `input.yaml` the "
         "effective input (defaults filled in, `--set` applied).\n"

@@ -49,6 +49,11 @@ PointResult evaluate(const model::Body& body, int q, double xi, double eta, cons
     ps = model::point_stress(body, q, inner, ue, p);
   }
   r.strain = ps.strain;
+  if (body.axisymmetric()) {
+    const double radius = pv.x.x(), on_axis = 1e-12 * (1 + body.mesh.size());
+    const double stretch = radius > on_axis ? r.u.x() / radius : r.strain(0);
+    r.strain_hoop = body.finite_strain() && radius > on_axis ? stretch + 0.5 * stretch * stretch : stretch;
+  }
   r.stress = ps.stress;
   r.stress_zz = ps.stress_zz;
   r.pressure = p;  // where the stress is taken

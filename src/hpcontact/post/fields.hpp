@@ -22,6 +22,9 @@ struct PointResult {
   double principal_1 = 0;    ///< larger in-plane principal stress
   double principal_2 = 0;    ///< smaller in-plane principal stress
   double pressure = 0;       ///< a mixed body's element pressure (positive in tension), else 0
+  /// An axisymmetric body's hoop strain u_r / r (Green–Lagrange ((1 + u_r/r)² − 1)/2 under
+  /// finite strain; on the axis the radial strain, its limit); 0 for other bodies.
+  double strain_hoop = 0;
 };
 
 /// Fields at reference point (xi, eta) of element q of a body. Where the map is singular (a

@@ -50,6 +50,8 @@ void write_vtu(const std::string& path, const model::Discretization& d, const Ei
   scalar("strain_xx", [](const PointResult& p) { return p.strain(0); });
   scalar("strain_yy", [](const PointResult& p) { return p.strain(1); });
   scalar("gamma_xy", [](const PointResult& p) { return p.strain(2); });
+  if (std::any_of(d.bodies.begin(), d.bodies.end(), [](const model::Body& b) { return b.axisymmetric(); }))
+    scalar("strain_hoop", [](const PointResult& p) { return p.strain_hoop; });
   scalar("sigma_xx", [](const PointResult& p) { return p.stress(0); });
   scalar("sigma_yy", [](const PointResult& p) { return p.stress(1); });
   scalar("sigma_zz", [](const PointResult& p) { return p.stress_zz; });
