@@ -11,7 +11,8 @@ A marked figure (an HTML comment around it: invisible when rendered):
 
 FILE is a problem file relative to the README's folder, run once per check with `hpcontact run
 FILE --out TMP -q` (a run that fails counts with its last-good/summary.json: a README may quote
-where a failing run stopped); KEY is a path into its summary.json, dot-separated, with list
+where a failing run stopped); FILE?KEY=VALUE&KEY=VALUE runs it with those `--set` overrides (a
+table of degrees: thick-cylinder.yaml?discretization.degree=6); KEY is a path into its summary.json, dot-separated, with list
 indices as numbers (contact_pairs.0.normal_force) and a trailing '#' for a list's length
 (adapt.history#). VALUE is the number as the README shows it: it matches when it equals the
 summary's value rounded to the digits shown (half a unit of the last digit; an integer
@@ -104,18 +105,24 @@ class Runs:
     def __init__(self, hpcontact, folder):
         self.hpcontact, self.folder, self.summaries = hpcontact, folder, {}
 
-    def summary(self, path, where):
-        if path in self.summaries:
-            return self.summaries[path]
+    def summary(self, run, where):
+        if run in self.summaries:
+            return self.summaries[run]
+        path, _, query = run.partition("?")
         if not os.path.isfile(path):
             raise MarkerError(f"{where}: no problem file {os.path.relpath(path, ROOT)}")
+        sets = []
+        for setting in filter(None, query.split("&")):
+            if "=" not in setting:
+                raise MarkerError(f"{where}: '{setting}' is not KEY=VALUE")
+            sets += ["--set", setting]
         out = os.path.join(self.folder, f"run{len(self.summaries)}")
-        r = subprocess.run([self.hpcontact, "run", path, "--out", out, "-q"], capture_output=True, text=True)
+        r = subprocess.run([self.hpcontact, "run", path, "--out", out, "-q", *sets], capture_output=True, text=True)
         for candidate in (os.path.join(out, "summary.json"), os.path.join(out, "last-good", "summary.json")):
             if os.path.isfile(candidate) and (r.returncode == 0 or "last-good" in candidate):
                 with open(candidate) as f:
-                    self.summaries[path] = json.load(f)
-                return self.summaries[path]
+                    self.summaries[run] = json.load(f)
+                return self.summaries[run]
         raise MarkerError(f"{where}: {os.path.relpath(path, ROOT)} wrote no summary.json "
                           f"(exit {r.returncode}): {r.stderr.strip()[:300]}")
 
