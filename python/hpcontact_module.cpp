@@ -146,7 +146,7 @@ py::dict describe(const Problem& p) {
   return out;
 }
 
-Result run(const Problem& p, const py::object& out_arg, bool quiet) {
+Result run(const Problem& p, const py::object& out_arg, bool quiet, bool verbose) {
   std::optional<std::string> out;
   if (!out_arg.is_none()) out = fspath(out_arg);
   driver::RunOptions options;
@@ -155,10 +155,12 @@ Result run(const Problem& p, const py::object& out_arg, bool quiet) {
     options.effective_input = p.read.effective_yaml;
   }
   // Progress lines go to sys.stdout; the callback also lets Ctrl-C stop a long run.
-  options.progress = [quiet](const ProgressEvent& e) {
+  // (Newton's iterations only when verbose, as the command line's -v.)
+  options.progress = [quiet, verbose](const ProgressEvent& e) {
     py::gil_scoped_acquire gil;
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-    if (!quiet) py::print("  " + e.text, py::arg("flush") = true);
+    if (quiet || (!verbose && e.as<IterationProgress>())) return;
+    py::print("  " + e.text, py::arg("flush") = true);
   };
   std::shared_ptr<driver::RunResult> r;
   {
@@ -536,7 +538,7 @@ and "dofs_condensed" (after condensing internal modes). For an adaptive run, of 
       .def_property_readonly(
           "dofs", [](const Problem& p) { return describe(p)["dofs"].cast<int>(); },
           "Free unknowns of the (first) discretisation, as summary.json's \"dofs\".")
-      .def("run", &run, py::arg("out") = py::none(), py::arg("quiet") = true,
+      .def("run", &run, py::arg("out") = py::none(), py::arg("quiet") = true, py::arg("verbose") = false,
            R"(Solves the problem and returns a Result.
 
 out: None writes nothing; a folder (str or os.PathLike) gets the files of `hpcontact run --out` (summary.json,
@@ -544,7 +546,8 @@ contact.csv, pressure.csv, solution.vtu, input.yaml), as the command line writes
 replace the earlier run's files only when this run has succeeded, and the folder is refused
 (Error) if it holds the problem or reference file, a file with an output name that hpcontact did
 not write, or a link where an output goes, or if another run is writing into it (docs/input.md,
-"The output folder"). quiet=False prints the progress lines. Raises SolverError when the solution does not
+"The output folder"). quiet=False prints the progress lines (a line per load step, hp/rp step,
+file written and message), verbose=True also Newton's iterations, as `hpcontact run -v`. Raises SolverError when the solution does not
 converge (with out, the last converged step is kept in out/last-good/), InputError for input
 found wrong only now (a reference curve), Error otherwise. Ctrl-C stops the run between steps.)")
       .def("__repr__", [](const Problem& p) {

@@ -28,7 +28,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 255 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
+--list prints them. A run of all 256 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp (but for its adjoint and its load-step cuts) and contact/penalty.cpp,
@@ -465,6 +465,11 @@ MUTATIONS = [
              "    const double stretch = radius > on_axis ? r.u.y() / radius : r.strain(0);",
              "the VTU's hoop strain divides the axial displacement by the radius",
              ["cli:tests/cli/test_axisymmetric.py::test_hoop_strain_and_stress_in_the_vtu_are_lames"]),
+    Mutation("python-progress-iterations", "python", "python/hpcontact_module.cpp",
+             "    if (quiet || (!verbose && e.as<IterationProgress>())) return;",
+             "    if (quiet) return;",
+             "the Python module prints every Newton iteration without verbose",
+             ["python:tests/python/test_load_history.py::test_progress_lines_from_python"]),
     Mutation("other-rows-no-slip", "model", S + "model/contact_result_rows.cpp",
              "if (m.total_slips) ps.slip = c.nodes.interpolate(foot.edge, foot.t, *m.total_slips);",
              "(void)m.total_slips;",

@@ -43,3 +43,21 @@ def test_a_linear_run_without_contact_has_no_history(root):
     result = problem.run()
     assert result.contact_history == {}
     assert len(result.load_history["step"]) == 0
+
+
+def test_progress_lines_from_python(root, capsys):
+    """run(quiet=False) prints a line per load step (5 for the two bars) and no Newton iteration;
+    verbose=True adds one line per iteration, as many as summary's newton_iterations; quiet (the
+    default) prints nothing."""
+    problem = hpcontact.Problem.from_file(os.path.join(root, "examples", "two-bars", "stick.yaml"))
+    problem.run()
+    assert capsys.readouterr().out == ""
+    problem.run(quiet=False)
+    lines = capsys.readouterr().out.splitlines()
+    assert sum("load step" in line for line in lines) == 5
+    assert not any(line.strip().startswith("iteration ") for line in lines)
+    result = problem.run(quiet=False, verbose=True)
+    lines = capsys.readouterr().out.splitlines()
+    iterations = [line for line in lines if line.strip().startswith("iteration ")]
+    assert len(iterations) == result.summary["newton_iterations"] > 0
+    assert sum("load step" in line for line in lines) == 5
