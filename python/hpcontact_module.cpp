@@ -371,45 +371,29 @@ py::dict mesh_of(const Result& res, int subdivisions) {
                           std::to_string(subdivisions));
   const post::SampledMesh m = post::sample_mesh(res.run->discretization, res.run->u, subdivisions);
   const auto n = static_cast<py::ssize_t>(m.points.size());
-  py::array_t<double> X({n, py::ssize_t(2)}), u({n, py::ssize_t(2)}), strain({n, py::ssize_t(3)}),
-      stress({n, py::ssize_t(4)});
-  py::array_t<double> von_mises(n), principal_1(n), principal_2(n);
-  auto x = X.mutable_unchecked<2>();
-  auto d = u.mutable_unchecked<2>();
-  auto e = strain.mutable_unchecked<2>();
-  auto t = stress.mutable_unchecked<2>();
-  auto vm = von_mises.mutable_unchecked<1>();
-  auto p1 = principal_1.mutable_unchecked<1>();
-  auto p2 = principal_2.mutable_unchecked<1>();
-  for (py::ssize_t i = 0; i < n; ++i) {
-    const auto& p = m.points[i];
-    x(i, 0) = p.x.x();
-    x(i, 1) = p.x.y();
-    d(i, 0) = p.u.x();
-    d(i, 1) = p.u.y();
-    for (int k = 0; k < 3; ++k) e(i, k) = p.strain(k);
-    t(i, 0) = p.stress(0);
-    t(i, 1) = p.stress(1);
-    t(i, 2) = p.stress(2);
-    t(i, 3) = p.stress_zz;
-    vm(i) = p.von_mises;
-    p1(i) = p.principal_1;
-    p2(i) = p.principal_2;
-  }
+  // A column per value of each sampled point: (n, columns), or (n,) for one.
+  auto per_point = [&](int columns, auto value) {
+    py::array_t<double> a = columns == 1 ? py::array_t<double>(n) : py::array_t<double>({n, py::ssize_t(columns)});
+    double* out = a.mutable_data();
+    for (py::ssize_t i = 0; i < n; ++i)
+      for (int c = 0; c < columns; ++c) out[i * columns + c] = value(m.points[i], c);
+    return a;
+  };
+  using P = post::PointResult;
+  py::dict out;
+  out["points"] = per_point(2, [](const P& p, int c) { return p.x(c); });
+  out["displacement"] = per_point(2, [](const P& p, int c) { return p.u(c); });
+  out["strain"] = per_point(3, [](const P& p, int c) { return p.strain(c); });
+  out["stress"] = per_point(4, [](const P& p, int c) { return c < 3 ? p.stress(c) : p.stress_zz; });
+  out["von_mises"] = per_point(1, [](const P& p, int) { return p.von_mises; });
+  out["principal_1"] = per_point(1, [](const P& p, int) { return p.principal_1; });
+  out["principal_2"] = per_point(1, [](const P& p, int) { return p.principal_2; });
   const auto n_cells = static_cast<py::ssize_t>(m.cells.size());
   py::array_t<int> cells({n_cells, py::ssize_t(4)});
   auto c = cells.mutable_unchecked<2>();
   for (py::ssize_t i = 0; i < n_cells; ++i)
     for (int k = 0; k < 4; ++k) c(i, k) = m.cells[i][k];
-  py::dict out;
-  out["points"] = X;
   out["cells"] = cells;
-  out["displacement"] = u;
-  out["strain"] = strain;
-  out["stress"] = stress;
-  out["von_mises"] = von_mises;
-  out["principal_1"] = principal_1;
-  out["principal_2"] = principal_2;
   out["cell_body"] = to_numpy(m.cell_body);
   out["cell_element"] = to_numpy(m.cell_element);
   out["cell_degree"] = to_numpy(m.cell_degree);
@@ -417,11 +401,8 @@ py::dict mesh_of(const Result& res, int subdivisions) {
   for (const auto& b : res.run->discretization.bodies) names.append(b.name);
   out["body_names"] = names;
   const auto& bodies = res.run->discretization.bodies;
-  if (std::any_of(bodies.begin(), bodies.end(), [](const model::Body& b) { return b.mixed; })) {
-    std::vector<double> p;
-    for (const auto& point : m.points) p.push_back(point.pressure);
-    out["pressure_mixed"] = to_numpy(p);
-  }
+  if (std::any_of(bodies.begin(), bodies.end(), [](const model::Body& b) { return b.mixed; }))
+    out["pressure_mixed"] = per_point(1, [](const P& p, int) { return p.pressure; });
   return out;
 }
 

@@ -85,42 +85,32 @@ Vec2 displacement_at(const model::Discretization& d, const post::PointLocator& l
   return v;
 }
 
-/// The value of an old pair's nodal field at X (one block of its multipliers: the normal
-/// pressures or the tangential tractions), interpolated linearly between its two nodes nearest
-/// to X along the boundary (the nearest node and the nearer of its neighbours).
-double nodal_value_at(const contact::MultiplierNodes& old, const Eigen::Ref<const Eigen::VectorXd>& values,
-                      const Vec2& X) {
-  const auto& nodes = old.nodes;
-  if (nodes.empty()) return 0;
+/// A nodal field at X given its values at the points `at` (in order along a boundary),
+/// interpolated linearly between the two points nearest to X along it (the nearest and the
+/// nearer of its neighbours).
+double value_along(const std::vector<Vec2>& at, const Eigen::Ref<const Eigen::VectorXd>& values, const Vec2& X) {
+  if (at.empty()) return 0;
   size_t best = 0;
-  for (size_t j = 1; j < nodes.size(); ++j)
-    if ((nodes[j].X - X).norm() < (nodes[best].X - X).norm()) best = j;
+  for (size_t j = 1; j < at.size(); ++j)
+    if ((at[j] - X).norm() < (at[best] - X).norm()) best = j;
   size_t other = best;
   double d_other = std::numeric_limits<double>::infinity();
   for (size_t j : {best - 1, best + 1})
-    if (j < nodes.size() && (nodes[j].X - X).norm() < d_other) {
+    if (j < at.size() && (at[j] - X).norm() < d_other) {
       other = j;
-      d_other = (nodes[j].X - X).norm();
+      d_other = (at[j] - X).norm();
     }
   if (other == best) return values(best);
-  const Vec2 a = nodes[best].X, b = nodes[other].X;
+  const Vec2 a = at[best], b = at[other];
   const double s = std::clamp((X - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
   return (1 - s) * values(best) + s * values(other);
 }
 
-/// The pressure of the old pair's result at X, interpolated as nodal_value_at does.
-double pressure_at(const model::ContactResult& old, const Vec2& X) {
-  const auto& nodes = old.nodes;
-  if (nodes.empty()) return 0;
-  contact::MultiplierNodes at;
-  Eigen::VectorXd p(nodes.size());
-  for (size_t j = 0; j < nodes.size(); ++j) {
-    contact::MultiplierNode n;
-    n.X = nodes[j].X;
-    at.nodes.push_back(n);
-    p(j) = nodes[j].pressure;
-  }
-  return nodal_value_at(at, p, X);
+template <class Node>
+std::vector<Vec2> positions(const std::vector<Node>& nodes) {
+  std::vector<Vec2> X;
+  for (const auto& n : nodes) X.push_back(n.X);
+  return X;
 }
 
 /// Each exact pair's multipliers of `from` (normal, then with friction tangential, per node) at
@@ -137,12 +127,13 @@ std::vector<Eigen::VectorXd> carried_multipliers(const std::vector<model::Contac
     if (!c || !old || c->has_friction() != old->has_friction()) continue;
     const int blocks = c->has_friction() ? 2 : 1, n_old = old->size(), n = c->size();
     if (from[k].size() != blocks * n_old) continue;
+    const std::vector<Vec2> old_X = positions(old->nodes.nodes);
     Eigen::VectorXd l(blocks * n);
     for (int b = 0; b < blocks; ++b) {
       const auto values = from[k].segment(b * n_old, n_old);
       for (int j = 0; j < n; ++j)
         l(b * n + j) = nested_meshes ? old->nodes.interpolate(c->nodes.nodes[j].edge, c->nodes.nodes[j].t, values)
-                                     : nodal_value_at(old->nodes, values, c->nodes.nodes[j].X);
+                                     : value_along(old_X, values, c->nodes.nodes[j].X);
     }
     out[k] = l;
   }
@@ -216,8 +207,12 @@ model::StartState carry_over(const model::Discretization& from_d,
     for (size_t k = 0; k < to_pairs.size() && k < from.contact.size(); ++k) {
       const auto& c = to_pairs[k].constraints;
       if (!c) continue;
+      const auto& nodes = from.contact[k].nodes;
+      const std::vector<Vec2> old_X = positions(nodes);
+      Eigen::VectorXd pressures(nodes.size());
+      for (size_t j = 0; j < nodes.size(); ++j) pressures(j) = nodes[j].pressure;
       Eigen::VectorXd lambda(c->size());
-      for (int j = 0; j < c->size(); ++j) lambda(j) = pressure_at(from.contact[k], c->nodes.nodes[j].X);
+      for (int j = 0; j < c->size(); ++j) lambda(j) = value_along(old_X, pressures, c->nodes.nodes[j].X);
       start.multipliers[k] = lambda;
     }
   }

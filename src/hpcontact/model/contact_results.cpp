@@ -14,7 +14,8 @@
 namespace hpcontact::model {
 
 ConstraintState pair_constraint_state(const Discretization& d, const ContactPair& pair,
-                                      const Eigen::VectorXd& u, const Eigen::VectorXd& multipliers) {
+                                      const Eigen::VectorXd& u, const Eigen::VectorXd& multipliers,
+                                      Eigen::VectorXd* residual) {
   const int m = pair.constraints->size();
   const Eigen::VectorXd lambda = multipliers.head(m);
   Eigen::VectorXd lambda_t;
@@ -23,7 +24,7 @@ ConstraintState pair_constraint_state(const Discretization& d, const ContactPair
     lambda_t = multipliers.tail(m);
     fi.lambda_t = &lambda_t;
   }
-  return evaluate_constraints(d, pair, u, lambda, nullptr, nullptr, false, fi);
+  return evaluate_constraints(d, pair, u, lambda, residual, nullptr, false, fi);
 }
 
 Vec2 contact_resultant(const Discretization& d, const ContactPair& pair, const Eigen::VectorXd& u,

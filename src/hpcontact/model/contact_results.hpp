@@ -131,9 +131,11 @@ ContactResult evaluate_contact(const Discretization& d, const ContactPair& pair,
                                const Eigen::VectorXd* total_slips = nullptr);
 
 /// The constraints of an exactly enforced pair at u with all its multipliers (normal, then
-/// tangential with friction), the tangential slips measured from the undeformed state.
+/// tangential with friction), the tangential slips measured from the undeformed state. With
+/// `residual`, the contact forces are subtracted from it (over all dofs), as in the solve.
 ConstraintState pair_constraint_state(const Discretization& d, const ContactPair& pair,
-                                      const Eigen::VectorXd& u, const Eigen::VectorXd& multipliers);
+                                      const Eigen::VectorXd& u, const Eigen::VectorXd& multipliers,
+                                      Eigen::VectorXd* residual = nullptr);
 
 /// ∫ traction ds on the pair's body at the state u (and its multipliers when it is enforced
 /// exactly).

@@ -108,16 +108,7 @@ Eigen::VectorXd pair_contact_forces(const Discretization& d, const ContactPair& 
     if (pair.other >= 0) fc.segment(d.bodies[pair.other].dof_offset, f.other.size()) += f.other;
     return fc;
   }
-  // evaluate_constraints subtracts the contact forces from a residual
-  const int m = pair.constraints->size();
-  const Eigen::VectorXd lambda = multipliers.head(m);
-  Eigen::VectorXd lambda_t;
-  FrictionInputs fi;
-  if (pair.constraints->has_friction() && multipliers.size() == 2 * m) {
-    lambda_t = multipliers.tail(m);
-    fi.lambda_t = &lambda_t;
-  }
-  evaluate_constraints(d, pair, u, lambda, &fc, nullptr, false, fi);
+  pair_constraint_state(d, pair, u, multipliers, &fc);  // subtracts the contact forces
   return -fc;
 }
 
