@@ -23,27 +23,38 @@ double hoop_stretch(const Eigen::VectorXd& N, const Vec2& X, const Eigen::Vector
   return 1 + N.dot(u_e.head(N.size())) / R;
 }
 
+GaussKinematics gauss_kinematics(const ElementValues& ev, const Eigen::VectorXd& u_e, bool ring) {
+  const int n = ev.n_modes(), nq = ev.n_points();
+  GaussKinematics g{std::vector<Eigen::Matrix2d>(nq), Eigen::VectorXd::Ones(nq), Eigen::VectorXd::Zero(nq),
+                    std::numeric_limits<double>::infinity(), -1};
+  const Eigen::VectorXd u_r = ev.N.transpose() * u_e.head(n);
+  for (int k = 0; k < nq; ++k) {
+    g.F[k] = deformation_gradient(ev, k, u_e);
+    if (ring) {
+      g.inv_R(k) = 1 / ev.x[k].x();  // Gauss points are inside the element: R > 0
+      g.F33(k) = 1 + u_r(k) * g.inv_R(k);
+    }
+    const double det = g.F[k].determinant();
+    // J = det F_plane · F33; both factors must be positive (two negatives are a fold too)
+    const double J = det > 0 && g.F33(k) > 0 ? det * g.F33(k) : std::min(det, g.F33(k));
+    if (!(J > g.min_J)) {
+      g.min_J = J;
+      g.min_J_point = k;
+    }
+  }
+  return g;
+}
+
 FiniteStrainElement axisymmetric_finite_strain_element(const ElementValues& ev,
                                                        const material::FiniteStrainLaw& law,
                                                        const Eigen::VectorXd& u_e, bool tangent) {
   const int n = ev.n_modes(), nq = ev.n_points();
   FiniteStrainElement el;
-  std::vector<Eigen::Matrix2d> F(nq);
-  Eigen::VectorXd F_hoop(nq), inv_R(nq);
-  const Eigen::VectorXd u_r = ev.N.transpose() * u_e.head(n);
-  el.min_J = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < nq; ++k) {
-    F[k] = deformation_gradient(ev, k, u_e);
-    inv_R(k) = 1 / ev.x[k].x();  // Gauss points are inside the element: R > 0
-    F_hoop(k) = 1 + u_r(k) * inv_R(k);
-    const double det = F[k].determinant();
-    // det F = det F_plane · F_θθ; both factors must be positive (two negatives are a fold too)
-    const double J = det > 0 && F_hoop(k) > 0 ? det * F_hoop(k) : std::min(det, F_hoop(k));
-    if (!(J > el.min_J)) {
-      el.min_J = J;
-      el.min_J_point = k;
-    }
-  }
+  const GaussKinematics kin = gauss_kinematics(ev, u_e, true);
+  const auto& F = kin.F;
+  const Eigen::VectorXd &F_hoop = kin.F33, &inv_R = kin.inv_R;
+  el.min_J = kin.min_J;
+  el.min_J_point = kin.min_J_point;
   if (el.inverted()) return el;
 
   el.f_int = Eigen::VectorXd::Zero(2 * n);

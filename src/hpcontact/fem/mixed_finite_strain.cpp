@@ -12,6 +12,7 @@
 
 #include "hpcontact/basis/legendre.hpp"
 #include "hpcontact/basis/quadrature.hpp"
+#include "hpcontact/fem/axisymmetric_finite_strain.hpp"
 #include "hpcontact/fem/point_blocks.hpp"
 #include "hpcontact/material/mixed_rubber.hpp"
 
@@ -48,24 +49,11 @@ FiniteStrainElement mixed_finite_strain_element(const ElementValues& ev, const E
   const int n = ev.n_modes(), nq = ev.n_points(), m = static_cast<int>(p_e.size());
   const bool ring = out_of_plane.axisymmetric;
   FiniteStrainElement el;
-  std::vector<Eigen::Matrix2d> F(nq);
-  Eigen::VectorXd F33 = Eigen::VectorXd::Ones(nq), inv_R = Eigen::VectorXd::Zero(nq);
-  const Eigen::VectorXd u_r = ev.N.transpose() * u_e.head(n);
-  el.min_J = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < nq; ++k) {
-    F[k] = deformation_gradient(ev, k, u_e);
-    if (ring) {
-      inv_R(k) = 1 / ev.x[k].x();  // Gauss points are inside the element: R > 0
-      F33(k) = 1 + u_r(k) * inv_R(k);
-    }
-    const double det = F[k].determinant();
-    // both factors of J must be positive (two negatives are a fold too)
-    const double J = det > 0 && F33(k) > 0 ? det * F33(k) : std::min(det, F33(k));
-    if (!(J > el.min_J)) {
-      el.min_J = J;
-      el.min_J_point = k;
-    }
-  }
+  const GaussKinematics kin = gauss_kinematics(ev, u_e, ring);
+  const auto& F = kin.F;
+  const Eigen::VectorXd &F33 = kin.F33, &inv_R = kin.inv_R;
+  el.min_J = kin.min_J;
+  el.min_J_point = kin.min_J_point;
   if (el.inverted()) return el;
 
   el.f_int = Eigen::VectorXd::Zero(2 * n + m);
