@@ -58,7 +58,6 @@ TEST(PathStart, TheSameDiscretisationRetracesItsPath) {
   EXPECT_EQ(again.load_steps, s->solution.load_steps);
   // each step's guess is its answer: Newton checks it and stops (at most one correction)
   EXPECT_LE(again.newton_iterations, again.load_steps);
-  EXPECT_LT(s->solution.newton_iterations, 2 * s->solution.load_steps + 100);  // (a real path)
   EXPECT_GT(s->solution.newton_iterations, again.newton_iterations);
   EXPECT_LT((again.u - s->solution.u).norm(), 1e-9 * s->solution.u.norm());
   EXPECT_LT((again.multipliers[0] - s->solution.multipliers[0]).norm(), 1e-9 * s->solution.multipliers[0].norm());
