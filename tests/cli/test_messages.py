@@ -229,3 +229,28 @@ def test_exact_contact_that_does_not_converge_says_where_the_constraint_stands(h
            "penetration 0.01779 at (0.7816, -0.01779)" in r.stderr, r.stderr
     assert not (out / "summary.json").exists()
     assert json.load(open(out / "last-good" / "summary.json"))["converged"] is False
+
+
+ORING = "examples/o-ring/o-ring-plane-strain.yaml"
+
+
+def test_too_few_iterations_are_not_called_a_load_beyond_capacity(hpcontact, root, tmp_path):
+    """A step whose Newton solves run out of iterations while converging (the rubber ring in one
+    load step with 5 iterations allowed: its last halving falls 37.7, 0.52, 0.19, 0.015, 1.2e-4,
+    2.5e-8 with 3.8e-9 to reach) was reported as "the load cannot be carried beyond the last
+    converged step" — an untuned roller with friction stopped with that message where 60
+    iterations carried it. Now the message says what is lacking: iterations."""
+    r = hpcontact("run", os.path.join(root, ORING), "--out", tmp_path / "out", "-q",
+                  "--set", "solver.load_steps=1", "--set", "solver.max_iterations=5",
+                  "--set", "solver.max_cuts=2")
+    assert r.returncode == 1, r.stderr
+    assert "Newton was still converging when its iterations ran out (solver.max_iterations = 5" \
+        in r.stderr, r.stderr
+    assert "raise solver.max_iterations" in r.stderr, r.stderr
+    assert "cannot be carried" not in r.stderr, r.stderr
+    assert (tmp_path / "out" / "last-good" / "summary.json").exists()
+    # Given the iterations it lacked, the same run converges.
+    r = hpcontact("run", os.path.join(root, ORING), "--out", tmp_path / "more", "-q",
+                  "--set", "solver.load_steps=1", "--set", "solver.max_iterations=12",
+                  "--set", "solver.max_cuts=2")
+    assert r.returncode == 0, r.stderr

@@ -458,10 +458,12 @@ bool LoadPath::advance(double from, double target, int steps, const FactorsAt& f
     if (cuts == ss_.max_cuts || unchanged ||
         (rep.status == solve::SolveStatus::singular && structural && !held_before)) {
       const bool at_capacity = cuts == ss_.max_cuts && cuts > 0 && lambda != from;
+      const bool slow = rep.status == solve::SolveStatus::max_iterations &&
+                        still_converging(rep.residual_history);
       sol_.message = failed_step_message({input_step(next), factors_now, cuts, ss_.max_cuts, why,
                                           unchanged, at_capacity, converged_.describe(),
                                           at_capacity ? system_.capacity_used() : std::string(),
-                                          rep.residual_history});
+                                          rep.residual_history, slow, ss_.max_iterations});
       return false;
     }
     ++cuts;

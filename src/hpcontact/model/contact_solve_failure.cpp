@@ -37,6 +37,16 @@ bool same_residuals(const std::vector<double>& a, const std::vector<double>& b) 
   return true;
 }
 
+bool still_converging(const std::vector<double>& r) {
+  const size_t n = r.size();
+  if (n < 4) return false;
+  const size_t half = n / 2;
+  int falling = 0;
+  for (size_t i = half; i + 1 < n; ++i) falling += r[i + 1] < r[i];
+  const int steps = static_cast<int>(n - 1 - half);
+  return 5 * falling >= 4 * steps && r.back() <= 0.5 * r[half];
+}
+
 std::string failed_step_message(const StepFailure& f) {
   std::ostringstream os;
   os << "load step " << f.step << " (" << f.factors << ") failed after " << f.cuts
@@ -46,7 +56,15 @@ std::string failed_step_message(const StepFailure& f) {
           "change with the load step — bodies overlapping in the input (an interference, "
           "which no load scales: contact[].interference: ramp relieves it step by step) or "
           "a state the step starts from; more cuts cannot help";
-  if (f.at_capacity)
+  if (f.slow) {
+    os << "; Newton was still converging when its iterations ran out (solver.max_iterations = "
+       << f.max_iterations << "; the residual fell at nearly every iteration of the last half): "
+          "raise solver.max_iterations";
+    if (f.cuts > 0)
+      os << " (the last of " << f.cuts << " halvings was converging too: too few iterations, "
+                                          "rather than a load beyond what the pairs can carry, "
+                                          "is the likely cause)";
+  } else if (f.at_capacity)
     os << "; the load cannot be carried beyond the last converged step (" << f.last_converged
        << "): a step from it of 1/" << (1LL << f.cuts) << " of a load step (solver.max_cuts = "
        << f.max_cuts << " halvings) does not converge" << f.capacity_used;

@@ -40,7 +40,17 @@ struct StepFailure {
   std::string last_converged;  ///< the factors of the last converged step, described
   std::string capacity_used;   ///< ContactSystem::capacity_used(), with at_capacity
   std::vector<double> residuals;  ///< its last Newton solve's residual history
+  /// Its last Newton solve ran out of iterations (solver.max_iterations) while still converging
+  /// (still_converging): more iterations, not a shorter step, is what it lacks.
+  bool slow = false;
+  int max_iterations = 0;  ///< solver.max_iterations, with slow
 };
+
+/// Whether the residual history of a Newton solve that ran out of iterations shows it still
+/// converging: over the second half of its iterations the residual fell at four of every five
+/// and by at least a factor 2 in all (a load beyond what can be carried, an active set that
+/// cycles, a diverging solve do neither).
+bool still_converging(const std::vector<double>& residuals);
 
 /// The message of a failed load step: what failed, why, what more cuts could do, the residuals.
 std::string failed_step_message(const StepFailure& failure);
