@@ -38,13 +38,11 @@ bool same_residuals(const std::vector<double>& a, const std::vector<double>& b) 
 }
 
 bool still_converging(const std::vector<double>& r) {
-  const size_t n = r.size();
-  if (n < 4) return false;
-  const size_t half = n / 2;
-  int falling = 0;
-  for (size_t i = half; i + 1 < n; ++i) falling += r[i + 1] < r[i];
-  const int steps = static_cast<int>(n - 1 - half);
-  return 5 * falling >= 4 * steps && r.back() <= 0.5 * r[half];
+  if (r.size() < 4) return false;
+  const auto last_half = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
+  const double largest = *std::max_element(last_half, r.end());
+  const double smallest = *std::min_element(last_half, r.end());
+  return r.back() == smallest && r.back() <= 0.1 * largest;
 }
 
 std::string failed_step_message(const StepFailure& f) {
@@ -58,7 +56,7 @@ std::string failed_step_message(const StepFailure& f) {
           "a state the step starts from; more cuts cannot help";
   if (f.slow) {
     os << "; Newton was still converging when its iterations ran out (solver.max_iterations = "
-       << f.max_iterations << "; the residual fell at nearly every iteration of the last half): "
+       << f.max_iterations << "; over the last half of them the residual fell tenfold or more and was still falling): "
           "raise solver.max_iterations";
     if (f.cuts > 0)
       os << " (the last of " << f.cuts << " halvings was converging too: too few iterations, "

@@ -47,9 +47,9 @@ struct StepFailure {
 };
 
 /// Whether the residual history of a Newton solve that ran out of iterations shows it still
-/// converging: over the second half of its iterations the residual fell at four of every five
-/// and by at least a factor 2 in all (a load beyond what can be carried, an active set that
-/// cycles, a diverging solve do neither).
+/// converging: over the second half of its iterations the residual fell by a factor 10 or more
+/// from its largest there and ends at its smallest (not a load beyond what can be carried, an
+/// active set that cycles, a stagnating or diverging solve).
 bool still_converging(const std::vector<double>& residuals);
 
 /// The message of a failed load step: what failed, why, what more cuts could do, the residuals.
