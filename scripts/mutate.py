@@ -28,7 +28,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 258 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
+--list prints them. A run of all 261 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp (but for its adjoint and its load-step cuts) and contact/penalty.cpp,
@@ -1465,6 +1465,21 @@ MUTATIONS = [
              "  return r.back() == smallest && r.back() < largest;",
              "a residual that stagnates, falling a hair at every iteration, counts as still converging",
              ["StillConverging.StagnationIsNot"]),
+    Mutation("gmsh-profile-keeps-straight-points", "io", S + "io/gmsh_profile.cpp",
+             "    if (std::abs(turn) < 1e-9) {",
+             "    if (std::abs(turn) < 1e-9 && false) {",
+             "a Gmsh chain keeps every node where it goes straight on: a corner per element",
+             ["cli:tests/cli/test_gmsh_profile.py::test_the_groove_from_gmsh_is_the_groove_from_points"]),
+    Mutation("gmsh-profile-ignores-line-direction", "io", S + "io/gmsh_profile.cpp",
+             "  if (position(links[0].b) < position(links[0].a)) std::reverse(order.begin(), order.end());",
+             "  if (false) std::reverse(order.begin(), order.end());",
+             "an open Gmsh chain walks from its end of lowest node tag, not the way its first line runs",
+             ["cli:tests/cli/test_gmsh_profile.py::test_reverse_walks_the_chain_the_other_way_and_a_loop_is_closed"]),
+    Mutation("gmsh-profile-reverse-ignored", "io", S + "io/gmsh_profile.cpp",
+             "  if (reverse) std::reverse(",
+             "  if (false && reverse) std::reverse(",
+             "obstacle.gmsh.reverse does nothing",
+             ["cli:tests/cli/test_gmsh_profile.py::test_reverse_walks_the_chain_the_other_way_and_a_loop_is_closed"]),
 ]
 
 

@@ -45,15 +45,6 @@ bool in_group(const std::vector<std::string>& groups, const std::string& name) {
   return std::find(groups.begin(), groups.end(), name) != groups.end();
 }
 
-/// The names of the file's physical groups of dimension `dim`, for "(defined: ...)".
-std::string group_list(const GmshMesh& mesh, int dim) {
-  std::string list;
-  std::set<std::string> seen;
-  for (const GmshPhysicalGroup& g : mesh.groups)
-    if (g.dim == dim && seen.insert(g.name).second) list += (list.empty() ? "" : ", ") + g.name;
-  return list.empty() ? "none" : list;
-}
-
 bool has_group(const GmshMesh& mesh, int dim, const std::string& name) {
   return std::any_of(mesh.groups.begin(), mesh.groups.end(),
                      [&](const GmshPhysicalGroup& g) { return g.dim == dim && g.name == name; });
@@ -162,7 +153,7 @@ class Importer {
     const std::string& surface = options_.surface;
     if (!surface.empty() && !has_group(mesh_, 2, surface))
       throw GmshOptionError("surface", "no 2D physical group of that name in " + mesh_.file +
-                                           " (defined: " + group_list(mesh_, 2) + ") (got '" +
+                                           " (defined: " + gmsh_group_list(mesh_, 2) + ") (got '" +
                                            surface + "')");
     const std::string in_surface = surface.empty() ? "" : " of surface '" + surface + "'";
     for (const GmshOtherFace& f : mesh_.other_faces) {
@@ -255,7 +246,7 @@ class Importer {
     const std::string key = "arcs[" + std::to_string(j) + "]";
     if (!has_group(mesh_, 1, arc.group))
       throw GmshOptionError(key + ".edges", "no 1D physical group of that name in " + mesh_.file +
-                                                " (defined: " + group_list(mesh_, 1) + ") (got '" +
+                                                " (defined: " + gmsh_group_list(mesh_, 1) + ") (got '" +
                                                 arc.group + "')");
     const std::vector<const GmshLine*> lines = body_lines(arc.group);
     if (lines.empty())
@@ -494,6 +485,14 @@ void write_mesh(YAML::Node body, const ImportedMesh& m, const std::string& path,
 }
 
 }  // namespace
+
+std::string gmsh_group_list(const GmshMesh& mesh, int dim) {
+  std::string list;
+  std::set<std::string> seen;
+  for (const GmshPhysicalGroup& g : mesh.groups)
+    if (g.dim == dim && seen.insert(g.name).second) list += (list.empty() ? "" : ", ") + g.name;
+  return list.empty() ? "none" : list;
+}
 
 ImportedMesh import_gmsh_body(const GmshMesh& mesh, const ImportOptions& options) {
   return Importer(mesh, options).run();

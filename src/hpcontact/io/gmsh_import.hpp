@@ -56,6 +56,9 @@ class GmshOptionError : public InputError {
   std::string what_text;
 };
 
+/// The names of the file's physical groups of dimension `dim`, for "(defined: ...)"; "none".
+std::string gmsh_group_list(const GmshMesh& mesh, int dim);
+
 /// Makes the body's mesh: selects the quadrilaterals, orders their corners counter-clockwise,
 /// makes the named arcs and recovers the arcs of curved second-order edges, and the edge set of
 /// every 1D physical group. Throws InputError naming the .msh file and line, GmshOptionError

@@ -560,6 +560,25 @@ const std::vector<KeySpec>& input_schema() {
               "itself. The gap is the signed distance to the closest point of the boundary; at a "
               "sharp corner the closest point of a point in its fan of normals is the corner, "
               "and the normal the direction from the corner to the point.", .min_items = 2},
+      {.path = "contact[].obstacle.gmsh", .type = T::section,
+       .doc = "profile, curve: the points from a Gmsh file instead of points (MSH 4.1 ASCII; a "
+              "1D mesh is enough: gmsh -1 -format msh41). The line elements of a 1D physical "
+              "group are chained end to end: their vertices and the midside nodes of "
+              "second-order lines in order, walking the way the group's first line in the file "
+              "runs (Gmsh orients a line along its curve), points where the chain goes straight "
+              "on left out (a straight Gmsh line of many elements is one segment; a meshed arc "
+              "stays the polygon of its nodes: give a profile's round corners as fillet). A "
+              "chain that returns to its start makes a closed profile. Expanded when read: the "
+              "effective input lists the points and closed instead of this key, and its header "
+              "says how many points came from how many lines."},
+      {.path = "contact[].obstacle.gmsh.file", .type = T::string, .required = true,
+       .doc = "Path of the .msh file, relative to the problem file's folder."},
+      {.path = "contact[].obstacle.gmsh.curve", .type = T::string, .required = true,
+       .doc = "Name of a 1D physical group of the file: one chain of lines (no branches, one "
+              "piece)."},
+      {.path = "contact[].obstacle.gmsh.reverse", .type = T::boolean, .default_yaml = "false",
+       .doc = "Walk the chain the other way (the body lies to the boundary's left walking from "
+              "the first point to the last)."},
       {.path = "contact[].obstacle.fillet", .type = T::numbers, .default_yaml = "0",
        .unit = "length",
        .doc = "profile: the radii of circular fillets rounding its corners (the interior points of "

@@ -17,6 +17,7 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/geometry/profile.hpp"
 #include "hpcontact/io/gmsh_import.hpp"
+#include "hpcontact/io/gmsh_profile.hpp"
 #include "hpcontact/io/overrides.hpp"
 #include "hpcontact/io/schema_check.hpp"
 #include "hpcontact/io/solid_reader.hpp"
@@ -1020,8 +1021,10 @@ ReadResult parse_problem_full(const std::string& yaml_text, const std::string& f
                                " an input may have: give fewer or smaller --set values");
     }
     const bool solid = is_solid_problem(root);
-    const std::vector<std::string> gmsh_notes =
+    std::vector<std::string> gmsh_notes =
         solid ? std::vector<std::string>{} : expand_gmsh_meshes(root, source);
+    if (!solid)
+      for (std::string& note : expand_gmsh_obstacles(root, source)) gmsh_notes.push_back(std::move(note));
     std::optional<model::ProblemSpec> solid_spec;
     if (solid)
       solid_spec = solid_problem(root, source);
