@@ -29,6 +29,12 @@ length along the common tangent (the tangential multiplier times the pressure's 
   eps = 1000 E figure by 4e-4, so the full set's interpolation costs about a quarter of that).
   6001 points are within 5e-5 of 96001. Outside [-a, a] the closed forms are zero: a traction
   there counts as error. A penalty run reports P, Q, a, c and these figures.
+- shear_rel_L2_own_points and pressure_rel_L2_own_points: each method read only where its
+  contact law holds, by its own quadrature: exact, the multipliers at the Gauss–Lobatto nodes
+  with the weights that integrate each edge's polynomial in s exactly; penalty, its tractions at
+  the Gauss points (contact[].quadrature per edge) with the Gauss–Legendre weights of each edge's
+  extent in s (found from its outermost points; s is nearly linear in the edge parameter: the
+  points fit to 1e-3 of the extent). No interpolation between points enters.
 
 - with --reference REF (a run of the same case on a much finer discretization: the model's own
   answer, which the half-space's closed forms are not exactly), the shear's and the pressure's
@@ -223,13 +229,43 @@ def relative_l2(x, w, measured, exact):
     return float(np.sqrt(np.sum(w * (m - e) ** 2) / np.sum(w * e ** 2)))
 
 
+def own_point_weights(folder, s, enforcement, degree):
+    """The quadrature weights of a run's own contact points along s (own_point_errors)."""
+    if enforcement != "penalty":
+        return edge_weights(s, degree)
+    n = yaml.safe_load(open(os.path.join(folder, "input.yaml")))["contact"][0]["quadrature"]
+    if len(s) % n:
+        raise SystemExit(f"{len(s)} penalty points are not blocks of contact[0].quadrature = {n}")
+    g, gw = np.polynomial.legendre.leggauss(n)
+    w = np.zeros_like(s)
+    for k in range(0, len(s), n):
+        x = s[k:k + n]
+        h = (x[-1] - x[0]) / (g[-1] - g[0])
+        mid = x[0] - g[0] * h
+        if not np.allclose(mid + h * g, x, rtol=0, atol=1e-3 * abs(h)):
+            raise SystemExit(f"the penalty points {k}..{k + n - 1} are not one edge's Gauss points in s")
+        w[k:k + n] = gw * abs(h)
+    return w
+
+
+def own_point_errors(folder, enforcement, degree, body, p_exact, q_exact):
+    """The shear's and the pressure's relative L2 errors at the run's own contact points, by
+    their own quadrature (the module's docstring)."""
+    n = read_nodes(folder, body)
+    s = n["s"]
+    w = own_point_weights(folder, s, enforcement, degree)
+    rel = lambda fe, ex: float(np.sqrt(np.sum(w * (fe - ex) ** 2) / np.sum(w * ex ** 2)))  # noqa: E731
+    return {"shear_rel_L2_own_points": rel(shear(n), q_exact(s)),
+            "pressure_rel_L2_own_points": rel(n["pressure"], p_exact(s))}
+
+
 def uniform_errors(folder):
     """The method's shear and pressure against Cattaneo–Mindlin's and Hertz's by one metric for
     both methods (the module's docstring): shear_rel_L2_uniform, pressure_rel_L2_uniform, with
     P, Q, a, c and the method."""
     summary = json.load(open(os.path.join(folder, "summary.json")))
     pair = summary["contact_pairs"][0]
-    mu, R_star, E_star, body, _ = read_case(folder)
+    mu, R_star, E_star, body, degree = read_case(folder)
     P, Q = pair["normal_force"], abs(pair["tangential_force"])
     a, c, _, p_exact, q_exact = closed_form(R_star, E_star, mu, P, Q)
     penalty = pair["enforcement"] == "penalty"
@@ -238,7 +274,8 @@ def uniform_errors(folder):
     return {"method": pair["enforcement"], "P": P, "Q": Q, "mu": mu, "a": a, "c": c, "dofs": summary["dofs"],
             "shear_rel_L2_uniform": relative_l2(x, w, t["shear"], q_exact),
             "pressure_rel_L2_uniform": relative_l2(x, w, t["pressure"], p_exact),
-            "uniform": {"from": float(x[0]), "to": float(x[-1]), "points": len(x)}}
+            "uniform": {"from": float(x[0]), "to": float(x[-1]), "points": len(x)},
+            **own_point_errors(folder, pair["enforcement"], degree, body, p_exact, q_exact)}
 
 
 def measure(folder):
@@ -334,7 +371,8 @@ def main():
         sys.stdout.write("\n")
         return
     out, data = measure(args.folder)
-    out.update({k: uniform[k] for k in ("method", "shear_rel_L2_uniform", "pressure_rel_L2_uniform", "uniform")})
+    out.update({k: uniform[k] for k in ("method", "shear_rel_L2_uniform", "pressure_rel_L2_uniform", "uniform",
+                                        "shear_rel_L2_own_points", "pressure_rel_L2_own_points")})
     if args.reference:
         reference, _ = measure(args.reference)
         out.update(against_reference(discrete_tractions(args.folder), discrete_tractions(args.reference)))

@@ -200,6 +200,8 @@ def _synthetic_run(folder, enforcement, s, factor):
             "contact": [{"body": "upper", "obstacle": {"type": "body", "body": "lower"},
                          "friction": {"law": "coulomb", "mu": 0.3}}],
             "discretization": {"degree": 4}}
+    if enforcement == "penalty":
+        spec["contact"][0]["quadrature"] = 50
     os.makedirs(folder)
     with open(os.path.join(folder, "input.yaml"), "w") as f:
         yaml.safe_dump(spec, f)
@@ -225,7 +227,8 @@ def test_uniform_metric_reads_both_methods_alike(tmp_path):
     a, c, _, _, _ = compare.closed_form(R_star, E_star, mu, 700.0, 105.0)
     grid = [g for g in np.linspace(-2 * a, 2 * a, 65) if min(abs(abs(g) - a), abs(abs(g) - c)) > 1e-3 * a]
     ends = np.sort(np.concatenate([grid, [-a, -c, c, a]]))
-    penalty = np.concatenate([np.linspace(lo, hi, 50) for lo, hi in zip(ends, ends[1:])])
+    g, _ = np.polynomial.legendre.leggauss(50)
+    penalty = np.concatenate([0.5 * (lo + hi) + 0.5 * (hi - lo) * g for lo, hi in zip(ends, ends[1:])])
     nodes = [ends[0]]
     for lo, hi in zip(ends, ends[1:]):
         nodes.extend(gauss_lobatto(4, lo, hi)[1:])
@@ -236,3 +239,30 @@ def test_uniform_metric_reads_both_methods_alike(tmp_path):
         assert errors["method"] == method
         assert errors["shear_rel_L2_uniform"] == pytest.approx(0.1, abs=5e-4), method
         assert errors["pressure_rel_L2_uniform"] == pytest.approx(0.1, abs=5e-4), method
+        # at the points themselves the factor is all there is
+        assert errors["shear_rel_L2_own_points"] == pytest.approx(0.1, rel=1e-12), method
+        assert errors["pressure_rel_L2_own_points"] == pytest.approx(0.1, rel=1e-12), method
+
+
+def test_own_point_weights_integrate_each_methods_polynomials(tmp_path):
+    """The own-points metric's quadrature: a penalty run's 50 Gauss points per edge (edges of
+    unequal length, the extents found from the points) integrate s^k over the edges (k <= 99;
+    checked at 0, 1, 7, 30) exactly; an exact run's Gauss–Lobatto nodes (degree 4) those up to k = 4; points that are
+    not one edge's Gauss points are refused."""
+    ends = [-1.0, -0.3, 0.1, 1.0]
+    g, _ = np.polynomial.legendre.leggauss(50)
+    s = np.concatenate([0.5 * (lo + hi) + 0.5 * (hi - lo) * g for lo, hi in zip(ends, ends[1:])])
+    folder = str(tmp_path / "penalty")
+    _synthetic_run(folder, "penalty", s, 1.0)
+    w = compare.own_point_weights(folder, s, "penalty", 4)
+    for k in (0, 1, 7, 30):
+        assert np.sum(w * s ** k) == pytest.approx((1 - (-1) ** (k + 1)) / (k + 1), abs=1e-13)
+    nodes = [ends[0]]
+    for lo, hi in zip(ends, ends[1:]):
+        nodes.extend(gauss_lobatto(4, lo, hi)[1:])
+    nodes = np.array(nodes)
+    w = compare.own_point_weights(folder, nodes, "augmented-lagrangian", 4)
+    for k in range(5):
+        assert np.sum(w * nodes ** k) == pytest.approx((1 - (-1) ** (k + 1)) / (k + 1), abs=1e-13)
+    with pytest.raises(SystemExit):
+        compare.own_point_weights(folder, np.linspace(-1, 1, 150), "penalty", 4)
