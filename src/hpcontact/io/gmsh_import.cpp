@@ -498,6 +498,16 @@ ImportedMesh import_gmsh_body(const GmshMesh& mesh, const ImportOptions& options
   return Importer(mesh, options).run();
 }
 
+GmshMesh read_gmsh_section(const YAML::Node& section, const std::string& path, YamlSource& source) {
+  std::filesystem::path file(section["file"].Scalar());
+  if (file.is_relative()) file = std::filesystem::path(source.file()).parent_path() / file;
+  try {
+    return read_gmsh(file.string());
+  } catch (const IoError& e) {
+    throw IoError(source.where(section["file"], path + ".file").str() + ": " + e.what());
+  }
+}
+
 std::vector<std::string> expand_gmsh_meshes(YAML::Node& root, YamlSource& source) {
   std::vector<std::string> notes;
   std::optional<std::size_t> values;  // of the tree, counted at the first gmsh section
@@ -522,14 +532,7 @@ std::vector<std::string> expand_gmsh_meshes(YAML::Node& root, YamlSource& source
         source.fail(body_view[key], join_key(path, key),
                     "give either gmsh or nodes and elements, not both");
 
-    std::filesystem::path file(g["file"].Scalar());
-    if (file.is_relative()) file = std::filesystem::path(source.file()).parent_path() / file;
-    GmshMesh mesh;
-    try {
-      mesh = read_gmsh(file.string());
-    } catch (const IoError& e) {
-      throw IoError(source.where(g["file"], gmsh_path + ".file").str() + ": " + e.what());
-    }
+    const GmshMesh mesh = read_gmsh_section(g, gmsh_path, source);
     ImportedMesh imported;
     try {
       imported = import_gmsh_body(mesh, read_options(g, body_view));

@@ -65,6 +65,10 @@ std::string gmsh_group_list(const GmshMesh& mesh, int dim);
 /// for an option that does not fit the mesh (the caller adds the problem file's key path).
 ImportedMesh import_gmsh_body(const GmshMesh& mesh, const ImportOptions& options);
 
+/// Reads the .msh file that a `gmsh` section at `path` names in its `file` key, relative to the
+/// folder of source.file(); IoError naming the key if it cannot be read, InputError as read_gmsh().
+GmshMesh read_gmsh_section(const YAML::Node& section, const std::string& path, YamlSource& source);
+
 /// Replaces the `gmsh` section of every body of a problem file's tree (after --set overrides,
 /// before the schema check) by the nodes, elements, curves and edge_sets it stands for; the
 /// .msh file is found relative to the folder of source.file(). Returns one line per body so made,

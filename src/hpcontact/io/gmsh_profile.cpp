@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <charconv>
 #include <map>
 #include <sstream>
@@ -177,14 +176,7 @@ std::string expand_one(YAML::Node obstacle, const std::string& path, YamlSource&
                     (kind.empty() ? std::string("none") : kind) + ")");
   if (view["points"])
     source.fail(view["points"], path + ".points", "give either gmsh or points, not both");
-  std::filesystem::path file(g["file"].Scalar());
-  if (file.is_relative()) file = std::filesystem::path(source.file()).parent_path() / file;
-  GmshMesh mesh;
-  try {
-    mesh = read_gmsh(file.string());
-  } catch (const IoError& e) {
-    throw IoError(source.where(g["file"], gmsh_path_key + ".file").str() + ": " + e.what());
-  }
+  const GmshMesh mesh = read_gmsh_section(g, gmsh_path_key, source);
   const std::string group = g["curve"].Scalar();
   GmshPath chain;
   try {
