@@ -8,8 +8,8 @@ radial shift of the cord's centre and the tilt of its vertical radius.
 usage: o_ring_hoop.py [--hpcontact PATH] [--out DIR] [--set key=value ...]
 
 The hoop force is N = ∫ sigma_zz da over the deformed half section (solution.vtu's sigma_zz:
-the hoop stress sigma_theta of the ring, nu (sigma_xx + sigma_yy) ... the normal stress out of
-the plane of the section), each sample cell's area times the mean of its corners' values. A
+the hoop stress sigma_theta of the ring; of the plane section the stress normal to its plane),
+each sample cell's area times the mean of its corners' values. A
 half ring cut along a meridian is held by the hoop forces on its two cuts and the radial
 tractions on it: N = F_r / (2 pi), F_r the radial total of the plate's tractions (summary.json
 contact.resultant[0]). Frictionless plates push only axially, so the ring's hoop force is zero;
@@ -93,9 +93,12 @@ def run_all(hpcontact, out, sets=()):
 
 def main(argv=None):
     parser = script_parser(__doc__)
-    parser.add_argument("--hpcontact", default=default_hpcontact())
-    parser.add_argument("--out", default=os.path.join("results", "o-ring-hoop"))
-    parser.add_argument("--set", action="append", default=[], dest="sets")
+    parser.add_argument("--hpcontact", default=default_hpcontact(),
+                        help="the hpcontact program (default: %(default)s)")
+    parser.add_argument("--out", default=os.path.join("results", "o-ring-hoop"),
+                        help="folder of the four runs, out/0 ... out/3 (default: %(default)s)")
+    parser.add_argument("--set", action="append", default=[], dest="sets", metavar="KEY=VALUE",
+                        help="an input override given to every run (repeatable)")
     args = parser.parse_args(argv)
     table = run_all(args.hpcontact, args.out, args.sets)
     plane = table["plane strain, frictionless"]["force_per_length"]
