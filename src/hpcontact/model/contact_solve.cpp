@@ -26,18 +26,22 @@ namespace hpcontact::model {
 namespace {
 
 /// The sparse solver of the tangent's displacement block: the input's (solver.linear), with
-/// CHOLMOD giving way to LU when a tangent is not positive definite (the contact's curvature
-/// terms — −p_N M between two bodies, a curve obstacle's — at a deep trial penetration: not a
-/// missing constraint), and LU outright where the block may be unsymmetric or indefinite: the
-/// seed's difference tangent (a column straddling a point's contact switch), finite strain (a
-/// body unstable under compression on its way to a stable state), friction in slip, a pair
-/// pressing along the mean normal.
+/// CHOLMOD giving way to LU at the first tangent that is not symmetric to round-off or not
+/// positive definite (solve::LinearSolverKind::cholmod_else_lu): the contact's curvature terms
+/// (−p_N M between two bodies, a curve obstacle's) at a deep trial penetration, a finite-strain
+/// body unstable under compression on its way to a stable state, friction in slip, a pair
+/// pressing along the mean normal. The block of a finite-strain body with exactly enforced
+/// contact is symmetric (its multipliers' unsymmetric rows are the Schur complement's), and
+/// CHOLMOD factorises it in about a third of LU's time. LU outright for the seed's difference
+/// tangent (a column straddling a point's contact switch), and where the input asks for ldlt
+/// on a block that may be unsymmetric or indefinite.
 solve::LinearSolverKind tangent_solver(const SolverSpec& ss, const Discretization& d,
                                        const ContactSystem& system) {
   const auto kind = solve::linear_solver_kind(ss.linear, ss.where.str() + ".linear");
-  if (ss.tangent == "finite-difference" || d.finite_strain() || system.has_unsymmetric_tangent())
-    return solve::LinearSolverKind::lu;
-  return kind == solve::LinearSolverKind::cholmod ? solve::LinearSolverKind::cholmod_else_lu : kind;
+  if (ss.tangent == "finite-difference") return solve::LinearSolverKind::lu;
+  if (kind == solve::LinearSolverKind::cholmod) return solve::LinearSolverKind::cholmod_else_lu;
+  if (d.finite_strain() || system.has_unsymmetric_tangent()) return solve::LinearSolverKind::lu;
+  return kind;
 }
 
 /// The problem's contact pairs, checked against the solver's settings: the target force's scale,

@@ -226,6 +226,17 @@ struct LinearSolver::Impl {
   }
 };
 
+bool symmetric_to_round_off(const SparseMatrix& A, double tolerance) {
+  if (A.rows() != A.cols()) return false;
+  const SparseMatrix At = A.transpose();
+  const Eigen::VectorXd d = A.diagonal().cwiseAbs();
+  const SparseMatrix asymmetry = A - At;
+  for (Eigen::Index col = 0; col < asymmetry.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(asymmetry, col); it; ++it)
+      if (!(std::abs(it.value()) <= tolerance * std::sqrt(d(it.row()) * d(col)))) return false;
+  return true;
+}
+
 LinearSolverKind linear_solver_kind(const std::string& name, const std::string& where) {
   if (name == "cholmod") return LinearSolverKind::cholmod;
   if (name == "ldlt") return LinearSolverKind::ldlt;
@@ -274,6 +285,12 @@ void LinearSolver::factorize(SparseMatrix&& A_in) {
     stop_point("factorising");
     solver.factorize(A);
   };
+  if (kind_ == LinearSolverKind::cholmod && lu_when_indefinite_ && !symmetric_to_round_off(A)) {
+    kind_ = LinearSolverKind::lu;  // not symmetric: LU from now on (neither done here)
+    --factorizations_;
+    if (analyse) --analyses_;
+    return factorize(SparseMatrix(A));
+  }
   if (kind_ == LinearSolverKind::cholmod) {
     if (analyse) {
       impl_->cholmod.analyzePattern(A);

@@ -10,9 +10,11 @@ namespace hpcontact::solve {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
-/// cholmod_else_lu: CHOLMOD while the matrices are positive definite, UMFPACK's LU from the first
-/// that is not (a contact tangent made indefinite by a curvature term at a deep trial
-/// penetration) — a singular matrix is still refused, by the LU.
+/// cholmod_else_lu: CHOLMOD while the matrices are symmetric (to round-off:
+/// |a_ij − a_ji| ≤ symmetry_tolerance · √|a_ii a_jj|) and positive definite, UMFPACK's LU from
+/// the first that is not (a contact tangent made indefinite by a curvature term at a deep trial
+/// penetration, a finite-strain body unstable under compression, friction in slip) — a singular
+/// matrix is still refused, by the LU.
 enum class LinearSolverKind { cholmod, ldlt, lu, cholmod_else_lu };
 
 /// What a CHOLMOD factorisation needs, from its symbolic analysis, and what it took.
@@ -25,6 +27,15 @@ struct FactorMemory {
   /// CHOLMOD's peak memory in use (analysis, factorisation and solves so far).
   double peak_bytes = 0;
 };
+
+/// The asymmetry, relative to the diagonal, up to which cholmod_else_lu takes a matrix for a
+/// symmetric one and factorises its lower triangle: the sums of an assembly leave ~1e-16 of an
+/// entry's terms, and a Newton step solved with the symmetric part of a tangent this close to
+/// it converges as with the tangent itself.
+constexpr double symmetry_tolerance = 1e-10;
+
+/// Whether |a_ij − a_ji| ≤ tolerance · √|a_ii a_jj| for every entry of the square matrix A.
+bool symmetric_to_round_off(const Eigen::SparseMatrix<double>& A, double tolerance = symmetry_tolerance);
 
 /// Parses "cholmod" / "ldlt" / "lu"; InputError naming `where` otherwise.
 LinearSolverKind linear_solver_kind(const std::string& name, const std::string& where);

@@ -146,6 +146,42 @@ TEST(LinearSolver, CholmodGivesWayToLuOnAnIndefiniteMatrix) {
   EXPECT_THROW(t.factorize(singular), NumericalError);
 }
 
+// cholmod_else_lu shall factorise a matrix symmetric to round-off (asymmetry 1e-14 of the
+// diagonal) by CHOLMOD, and give way to LU at one that is not (asymmetry 1e-6): the solution is
+// then that of the matrix itself, not of its lower triangle, and LU stays.
+TEST(LinearSolver, CholmodGivesWayToLuOnAnUnsymmetricMatrix) {
+  auto matrix = [](double asymmetry) {
+    return from_triplets(3, {{0, 0, 4}, {0, 1, 1 + asymmetry}, {1, 0, 1}, {1, 1, 3}, {1, 2, -1},
+                             {2, 1, -1}, {2, 2, 2}});
+  };
+  const Eigen::Vector3d x(1, -2, 0.5);
+  LinearSolver s(LinearSolverKind::cholmod_else_lu);
+  s.factorize(matrix(1e-14));
+  EXPECT_EQ(s.kind(), LinearSolverKind::cholmod);
+  const SparseMatrix A = matrix(1e-6);
+  s.factorize(A);
+  EXPECT_EQ(s.kind(), LinearSolverKind::lu);
+  EXPECT_EQ(s.factorizations(), 2);
+  EXPECT_LE((s.solve(A * x) - x).norm(), 1e-14 * x.norm());
+  s.factorize(matrix(0));
+  EXPECT_EQ(s.kind(), LinearSolverKind::lu);
+}
+
+// symmetric_to_round_off shall measure the asymmetry against the diagonal entries of its row
+// and column: 1e-9 √(a_ii a_jj) is over the tolerance, 1e-11 of it is not, whatever the scale.
+TEST(LinearSolver, SymmetryIsRelativeToTheDiagonal) {
+  for (const double scale : {1e-8, 1.0, 1e8}) {
+    auto matrix = [scale](double asymmetry) {  // √(a_00 a_11) = 10 scale
+      return from_triplets(2, {{0, 0, 4 * scale}, {0, 1, scale * (1 + 10 * asymmetry)}, {1, 0, scale},
+                               {1, 1, 25 * scale}});
+    };
+    EXPECT_TRUE(solve::symmetric_to_round_off(matrix(0)));
+    EXPECT_TRUE(solve::symmetric_to_round_off(matrix(1e-11)));
+    EXPECT_FALSE(solve::symmetric_to_round_off(matrix(1e-9)));
+  }
+  EXPECT_FALSE(solve::symmetric_to_round_off(from_triplets(2, {{0, 1, 1e-300}})));  // no diagonal
+}
+
 // Solver names shall parse ("cholmod", "ldlt"); anything else is an InputError naming the key.
 TEST(LinearSolver, KindFromName) {
   EXPECT_EQ(solve::linear_solver_kind("cholmod", "k"), LinearSolverKind::cholmod);
