@@ -1,8 +1,9 @@
-// Axisymmetric total Lagrangian element. The rows of B for mode a are the plane element's
-// (F_i1 N_a,1, F_i2 N_a,2, F_i1 N_a,2 + F_i2 N_a,1) for component i, and a fourth, the hoop
-// row F_θθ N_a / R on u_r only (δF_θθ = δu_r / R). Its geometric tangent: the plane
-// δ_ik ∇N_a · S ∇N_b plus, from δ(F_θθ / R) N_a = N_a N_b / R² δu_r, S_θθ N_a N_b / R² on the
-// u_r–u_r block. The weight of a point is w = JxW · 2π R.
+// Axisymmetric total Lagrangian element. A mode's u_r moves F_rr, F_rz and the hoop stretch
+// F_θθ (δF_θθ = N_a δu_r / R), its u_z F_zr and F_zz: the force and the tangent are the plane
+// element's ∫ ∂N_a ⋅ P and ∫ ∂N_a ⋅ 𝔸 ⋅ ∂N_b on these five slots (fem/gradient_tangent.hpp),
+// N_a / R the derivative along the hoop slot. As B: the plane rows (F_i1 N_a,1, F_i2 N_a,2,
+// F_i1 N_a,2 + F_i2 N_a,1) and a hoop row F_θθ N_a / R on u_r, with the geometric part
+// δ_ik ∇N_a · S ∇N_b plus S_θθ N_a N_b / R² on u_r–u_r. The weight of a point is w = JxW · 2π R.
 #include "hpcontact/fem/axisymmetric_finite_strain.hpp"
 
 #include <algorithm>
@@ -11,8 +12,8 @@
 #include <vector>
 
 #include "hpcontact/fem/finite_strain.hpp"
+#include "hpcontact/fem/gradient_tangent.hpp"
 #include "hpcontact/fem/out_of_plane.hpp"
-#include "hpcontact/fem/point_blocks.hpp"
 #include "hpcontact/material/hyperelastic_hoop.hpp"
 
 namespace hpcontact::fem {
@@ -57,42 +58,30 @@ FiniteStrainElement axisymmetric_finite_strain_element(const ElementValues& ev,
   el.min_J_point = kin.min_J_point;
   if (el.inverted()) return el;
 
-  el.f_int = Eigen::VectorXd::Zero(2 * n);
-  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(4 * nq, 2 * n), CB;  // stacked B; ℂ w B
-  Eigen::VectorXd wS11(nq), wS22(nq), wS12(nq), wShoop(nq);
-  if (tangent) CB.resize(4 * nq, 2 * n);
+  // D0: u_r's slot derivatives (N_,r, N_,z, N / R) point after point, D1: u_z's (N_,r, N_,z)
+  constexpr int kSlots = static_cast<int>(kAxisymmetricSlots.size());
+  Eigen::MatrixXd D0(n, 3 * nq), D1(n, 2 * nq), A;
+  Eigen::VectorXd p0(3 * nq), p1(2 * nq);
+  if (tangent) A.resize(kSlots, kSlots * nq);
   const OutOfPlane ring(0, true);
   for (int k = 0; k < nq; ++k) {
     const auto state = material::hoop_hyperelastic_state(law, F[k], F_hoop(k));
     const double w = ev.JxW(k) * ring.at(ev.x[k]);
     el.energy += w * state.W;
-    const auto Nx = ev.dN_dx.col(k), Ny = ev.dN_dy.col(k);
-    for (int i = 0; i < 2; ++i) {
-      B.block(4 * k, i * n, 1, n) = F[k](i, 0) * Nx.transpose();
-      B.block(4 * k + 1, i * n, 1, n) = F[k](i, 1) * Ny.transpose();
-      B.block(4 * k + 2, i * n, 1, n) = (F[k](i, 0) * Ny + F[k](i, 1) * Nx).transpose();
-    }
-    B.block(4 * k + 3, 0, 1, n) = (F_hoop(k) * inv_R(k)) * ev.N.col(k).transpose();
-    el.f_int.noalias() += B.middleRows(4 * k, 4).transpose() * (w * state.S);
-    if (!tangent) continue;
-    CB.middleRows(4 * k, 4).noalias() = (w * state.C) * B.middleRows(4 * k, 4);
-    wS11(k) = w * state.S(0);
-    wS22(k) = w * state.S(1);
-    wS12(k) = w * state.S(2);
-    wShoop(k) = w * state.S(3) * inv_R(k) * inv_R(k);
+    D0.col(3 * k) = D1.col(2 * k) = ev.dN_dx.col(k);
+    D0.col(3 * k + 1) = D1.col(2 * k + 1) = ev.dN_dy.col(k);
+    D0.col(3 * k + 2) = inv_R(k) * ev.N.col(k);
+    const Eigen::Matrix3d F3 = plane_tensor(F[k], F_hoop(k));
+    const Eigen::Matrix3d S3 = plane_tensor(Eigen::Vector3d(state.S.head<3>()), state.S(3));
+    const auto P = first_piola(kAxisymmetricSlots, F3, S3, w);
+    p0.segment(3 * k, 3) = P.head<3>();
+    p1.segment(2 * k, 2) = P.tail<2>();
+    if (tangent) A.middleCols(kSlots * k, kSlots) = first_elasticity(kAxisymmetricSlots, F3, S3, state.C, w);
   }
-  if (!tangent) return el;
-  el.K = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-  for_point_blocks(nq, 32.0 * n * n, [&](int first, int count) {
-    el.K.noalias() += B.middleRows(4 * first, 4 * count).transpose() *
-                      CB.middleRows(4 * first, 4 * count);
-  });
-  add_geometric_stiffness(ev, wS11, wS22, wS12, el.K);
-  for_point_blocks(nq, 2.0 * n * n, [&](int first, int count) {
-    const auto N = ev.N.middleCols(first, count);
-    el.K.topLeftCorner(n, n).noalias() +=
-        N * wShoop.segment(first, count).asDiagonal() * N.transpose();
-  });
+  el.f_int.resize(2 * n);
+  el.f_int.head(n).noalias() = D0 * p0;
+  el.f_int.tail(n).noalias() = D1 * p1;
+  if (tangent) el.K = gradient_tangent(D0, D1, 3, 2, A);
   return el;
 }
 

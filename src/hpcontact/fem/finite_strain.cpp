@@ -1,12 +1,14 @@
-// Total Lagrangian element. With δE = B δu, the rows of B for mode a and component i are
-// (F_i1 N_a,1, F_i2 N_a,2, F_i1 N_a,2 + F_i2 N_a,1); the tangent is Bᵀ ℂ B (material) plus
-// δ_ik ∇N_a · S ∇N_b (geometric). B of all points is stacked so that a few matrix products (one
-// per block of points, fem/point_blocks.hpp) form Bᵀ ℂ B.
+// Total Lagrangian element. The internal force is f_ai = ∫ N_a,J P_iJ and the tangent
+// ∫ N_a,J 𝔸_iJkL N_b,L with P = F S and 𝔸 = ∂P/∂F = δ_ik S_JL + F_iI ℂ_IJKL F_kK, which is
+// Bᵀ ℂ B (material, B the rows (F_i1 N_a,1, F_i2 N_a,2, F_i1 N_a,2 + F_i2 N_a,1) of δE) plus
+// δ_ik ∇N_a · S ∇N_b (geometric) in one: fem/gradient_tangent.hpp forms it in a few matrix
+// products. add_geometric_stiffness is the geometric part alone, for the mixed element.
 #include "hpcontact/fem/finite_strain.hpp"
 
 #include <limits>
 #include <vector>
 
+#include "hpcontact/fem/gradient_tangent.hpp"
 #include "hpcontact/fem/point_blocks.hpp"
 
 namespace hpcontact::fem {
@@ -59,34 +61,28 @@ FiniteStrainElement finite_strain_element(const ElementValues& ev, const materia
   }
   if (el.inverted()) return el;
 
-  el.f_int = Eigen::VectorXd::Zero(2 * n);
-  Eigen::MatrixXd B(3 * nq, 2 * n), CB;  // stacked B of all points; ℂ w B
-  Eigen::VectorXd wS11(nq), wS22(nq), wS12(nq);
-  if (tangent) CB.resize(3 * nq, 2 * n);
+  // D: the modes' gradients point after point; P and 𝔸 on the slots F_11, F_12, F_21, F_22
+  constexpr int kSlots = static_cast<int>(kPlaneSlots.size());
+  Eigen::MatrixXd D(n, 2 * nq), A;
+  Eigen::VectorXd p0(2 * nq), p1(2 * nq);
+  if (tangent) A.resize(kSlots, kSlots * nq);
   for (int k = 0; k < nq; ++k) {
     const auto state = material::hyperelastic_state(law, F[k]);
     const double w = ev.JxW(k) * thickness;
     el.energy += w * state.W;
-    const auto Nx = ev.dN_dx.col(k), Ny = ev.dN_dy.col(k);
-    for (int i = 0; i < 2; ++i) {
-      B.block(3 * k, i * n, 1, n) = F[k](i, 0) * Nx.transpose();
-      B.block(3 * k + 1, i * n, 1, n) = F[k](i, 1) * Ny.transpose();
-      B.block(3 * k + 2, i * n, 1, n) = (F[k](i, 0) * Ny + F[k](i, 1) * Nx).transpose();
-    }
-    el.f_int.noalias() += B.middleRows(3 * k, 3).transpose() * (w * state.S);
-    if (!tangent) continue;
-    CB.middleRows(3 * k, 3).noalias() = (w * state.C) * B.middleRows(3 * k, 3);
-    wS11(k) = w * state.S(0);
-    wS22(k) = w * state.S(1);
-    wS12(k) = w * state.S(2);
+    D.col(2 * k) = ev.dN_dx.col(k);
+    D.col(2 * k + 1) = ev.dN_dy.col(k);
+    const Eigen::Matrix3d F3 = plane_tensor(F[k], 1.0);
+    const Eigen::Matrix3d S3 = plane_tensor(state.S, state.S33);
+    const auto P = first_piola(kPlaneSlots, F3, S3, w);
+    p0.segment(2 * k, 2) = P.head<2>();
+    p1.segment(2 * k, 2) = P.tail<2>();
+    if (tangent) A.middleCols(kSlots * k, kSlots) = first_elasticity(kPlaneSlots, F3, S3, state.C, w);
   }
-  if (!tangent) return el;
-  el.K = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-  for_point_blocks(nq, 24.0 * n * n, [&](int first, int count) {
-    el.K.noalias() += B.middleRows(3 * first, 3 * count).transpose() *
-                      CB.middleRows(3 * first, 3 * count);
-  });
-  add_geometric_stiffness(ev, wS11, wS22, wS12, el.K);
+  el.f_int.resize(2 * n);
+  el.f_int.head(n).noalias() = D * p0;
+  el.f_int.tail(n).noalias() = D * p1;
+  if (tangent) el.K = gradient_tangent(D, D, 2, 2, A);
   return el;
 }
 
