@@ -63,6 +63,12 @@ bool FiniteStrainForces::add(const Eigen::VectorXd& u, Eigen::VectorXd& R,
     const int q = elements_[i].q;
     el[i] = finite_strain_element(body, q, values_[i], u, t != nullptr);
   });
+  if (t) {
+    std::size_t entries = t->size();
+    for (const auto& e : el) entries += static_cast<std::size_t>(e.K.size());
+    t->reserve(entries);
+  }
+  std::vector<int> dofs;
   for (int i = 0; i < ne; ++i) {
     const Body& body = d_.bodies[elements_[i].body];
     const int q = elements_[i].q;
@@ -77,11 +83,12 @@ bool FiniteStrainForces::add(const Eigen::VectorXd& u, Eigen::VectorXd& R,
       return false;
     }
     const int n = static_cast<int>(el[i].f_int.size());
-    for (int a = 0; a < n; ++a) R(body.global_dof(q, a)) += el[i].f_int(a);
+    dofs.resize(n);
+    for (int a = 0; a < n; ++a) dofs[a] = body.global_dof(q, a);
+    for (int a = 0; a < n; ++a) R(dofs[a]) += el[i].f_int(a);
     if (!t) continue;
-    for (int a = 0; a < n; ++a)
-      for (int b = 0; b < n; ++b)
-        t->emplace_back(body.global_dof(q, a), body.global_dof(q, b), el[i].K(a, b));
+    for (int b = 0; b < n; ++b)  // K is column-major
+      for (int a = 0; a < n; ++a) t->emplace_back(dofs[a], dofs[b], el[i].K(a, b));
   }
   return true;
 }

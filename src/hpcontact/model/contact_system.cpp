@@ -429,6 +429,7 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
   }
   r.head(n_u_) = op_->restrict(d_, R);
   if (!T) return;
+  T->reserve(T->size() + t_all.size());
   for (const auto& e : t_all) {
     const int i = op_->unknown(d_, e.row()), j = op_->unknown(d_, e.col());
     if (i >= 0 && j >= 0) T->emplace_back(i, j, e.value());

@@ -228,12 +228,29 @@ struct LinearSolver::Impl {
 
 bool symmetric_to_round_off(const SparseMatrix& A, double tolerance) {
   if (A.rows() != A.cols()) return false;
-  const SparseMatrix At = A.transpose();
   const Eigen::VectorXd d = A.diagonal().cwiseAbs();
-  const SparseMatrix asymmetry = A - At;
-  for (Eigen::Index col = 0; col < asymmetry.outerSize(); ++col)
-    for (SparseMatrix::InnerIterator it(asymmetry, col); it; ++it)
-      if (!(std::abs(it.value()) <= tolerance * std::sqrt(d(it.row()) * d(col)))) return false;
+  auto close = [&](Eigen::Index row, Eigen::Index col, double a, double b) {
+    return std::abs(a - b) <= tolerance * std::sqrt(d(row) * d(col));
+  };
+  const SparseMatrix At = A.transpose();
+  // Column by column through A and Aᵀ side by side: an entry stored in one and not in the other
+  // is compared with zero.
+  for (Eigen::Index col = 0; col < A.outerSize(); ++col) {
+    SparseMatrix::InnerIterator a(A, col), b(At, col);
+    while (a || b) {
+      if (a && (!b || a.row() < b.row())) {
+        if (!close(a.row(), col, a.value(), 0.0)) return false;
+        ++a;
+      } else if (b && (!a || b.row() < a.row())) {
+        if (!close(b.row(), col, 0.0, b.value())) return false;
+        ++b;
+      } else {
+        if (!close(a.row(), col, a.value(), b.value())) return false;
+        ++a;
+        ++b;
+      }
+    }
+  }
   return true;
 }
 
