@@ -183,6 +183,19 @@ private:
   const NonlinearSolution::StepState* path_guess(double s) const;
   /// |R(x)| at the current factors.
   double residual_norm(const Eigen::VectorXd& x);
+  /// A converged step of the path: its segment, path parameter and unknowns.
+  struct ConvergedStep {
+    int segment = -1;
+    double s = 0;
+    Eigen::VectorXd x;
+  };
+  /// The last two converged steps (the older first), for the predictor.
+  std::vector<ConvergedStep> last_steps_;
+  /// The predictor of a finite-strain path: the unknowns at s extrapolated linearly from the
+  /// last two converged steps of the current segment; nothing if there are fewer, or no finite
+  /// strain (a linear body's first Newton step from the last state is exact already but for
+  /// the contact's active set).
+  std::optional<Eigen::VectorXd> predicted(double s) const;
   int segment_ = -1;  ///< the path's segment under way (advance() calls so far, less one)
   StepAttempt attempt_step(double s, const FactorsAt& factors, const ForceTarget& force,
                            const Eigen::VectorXd* start = nullptr);
@@ -539,6 +552,11 @@ LoadPath::StepAttempt LoadPath::attempt_step(double s, const FactorsAt& factors,
   // smaller: it is the better start for a step the last converged state is far from (a press),
   // not always for the next of several small steps, which that state is close to.
   if (guess && residual_norm(x_guess) < residual_norm(a.x)) a.x = std::move(x_guess);
+  // The extrapolation of the last two steps where its residual is the smaller (a rubber ring
+  // squeezed in equal steps: about one Newton iteration less a step).
+  if (!start && !guess && !force)
+    if (auto x_pred = predicted(s); x_pred && residual_norm(*x_pred) < residual_norm(a.x))
+      a.x = std::move(*x_pred);
   newton_options_.reference_norm = system_.force_scale(a.x);
   if (force)
     newton_options_.reference_norm =
@@ -551,6 +569,15 @@ LoadPath::StepAttempt LoadPath::attempt_step(double s, const FactorsAt& factors,
     system_.set_factors(a.factors.displacements, a.factors.loads);
   }
   return a;
+}
+
+std::optional<Eigen::VectorXd> LoadPath::predicted(double s) const {
+  if (!d_.finite_strain() || last_steps_.size() < 2) return std::nullopt;
+  const ConvergedStep &a = last_steps_[0], &b = last_steps_[1];
+  if (a.segment != segment_ || b.segment != segment_ || a.x.size() != b.x.size() ||
+      b.x.size() != x_.size() || !(std::abs(b.s - a.s) > 0))
+    return std::nullopt;
+  return Eigen::VectorXd(b.x + (s - b.s) / (b.s - a.s) * (b.x - a.x));
 }
 
 double LoadPath::residual_norm(const Eigen::VectorXd& x) {
@@ -573,6 +600,8 @@ const NonlinearSolution::StepState* LoadPath::path_guess(double s) const {
 void LoadPath::accept_step(StepAttempt attempt, const StepLabel& name) {
   x_ = std::move(attempt.x);
   converged_ = attempt.factors;
+  if (last_steps_.size() == 2) last_steps_.erase(last_steps_.begin());
+  last_steps_.push_back({segment_, attempt.s, x_});
   if (system_.has_friction())
     sol_.step_states.push_back({segment_, attempt.s, converged_.displacements.y(), system_.solution(x_),
                                 system_.multipliers(x_)});
