@@ -2,6 +2,7 @@
 // bodies) and the finite-strain internal forces, each with its tangent's triplets.
 #include "hpcontact/model/contact_forces.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -54,21 +55,23 @@ FiniteStrainForces::FiniteStrainForces(const Discretization& d) : d_(d) {
   }
 }
 
-bool FiniteStrainForces::add(const Eigen::VectorXd& u, Eigen::VectorXd& R,
-                             std::vector<Eigen::Triplet<double>>* t, std::string* inverted) const {
+std::vector<int> FiniteStrainForces::element_dofs(int i) const {
+  const Body& body = d_.bodies[elements_[i].body];
+  const int q = elements_[i].q;
+  std::vector<int> dofs(2 * body.dofs.element(q).n_modes() + body.n_pressure_modes(q));
+  for (int a = 0; a < static_cast<int>(dofs.size()); ++a) dofs[a] = body.global_dof(q, a);
+  return dofs;
+}
+
+bool FiniteStrainForces::elements(const Eigen::VectorXd& u, Eigen::VectorXd& R, bool tangent,
+                                  std::string* inverted, std::vector<fem::FiniteStrainElement>& el) const {
   const int ne = static_cast<int>(elements_.size());
-  std::vector<fem::FiniteStrainElement> el(ne);
+  el.assign(ne, {});
   parallel_for(ne, [&](int i) {
     const Body& body = d_.bodies[elements_[i].body];
     const int q = elements_[i].q;
-    el[i] = finite_strain_element(body, q, values_[i], u, t != nullptr);
+    el[i] = finite_strain_element(body, q, values_[i], u, tangent);
   });
-  if (t) {
-    std::size_t entries = t->size();
-    for (const auto& e : el) entries += static_cast<std::size_t>(e.K.size());
-    t->reserve(entries);
-  }
-  std::vector<int> dofs;
   for (int i = 0; i < ne; ++i) {
     const Body& body = d_.bodies[elements_[i].body];
     const int q = elements_[i].q;
@@ -83,12 +86,64 @@ bool FiniteStrainForces::add(const Eigen::VectorXd& u, Eigen::VectorXd& R,
       return false;
     }
     const int n = static_cast<int>(el[i].f_int.size());
-    dofs.resize(n);
-    for (int a = 0; a < n; ++a) dofs[a] = body.global_dof(q, a);
-    for (int a = 0; a < n; ++a) R(dofs[a]) += el[i].f_int(a);
-    if (!t) continue;
+    for (int a = 0; a < n; ++a) R(body.global_dof(q, a)) += el[i].f_int(a);
+  }
+  return true;
+}
+
+bool FiniteStrainForces::add(const Eigen::VectorXd& u, Eigen::VectorXd& R,
+                             std::vector<Eigen::Triplet<double>>* t, std::string* inverted) const {
+  std::vector<fem::FiniteStrainElement> el;
+  if (!elements(u, R, t != nullptr, inverted, el)) return false;
+  if (!t) return true;
+  std::size_t entries = t->size();
+  for (const auto& e : el) entries += static_cast<std::size_t>(e.K.size());
+  t->reserve(entries);
+  for (int i = 0; i < static_cast<int>(el.size()); ++i) {
+    const std::vector<int> dofs = element_dofs(i);
+    const int n = static_cast<int>(el[i].K.rows());
     for (int b = 0; b < n; ++b)  // K is column-major
       for (int a = 0; a < n; ++a) t->emplace_back(dofs[a], dofs[b], el[i].K(a, b));
+  }
+  return true;
+}
+
+void FiniteStrainForces::find_pattern(const std::vector<int>& unknown, int n) const {
+  std::vector<Eigen::Triplet<double>> t;
+  std::vector<std::vector<int>> rows(elements_.size());  // the unknown of each local dof
+  for (size_t i = 0; i < elements_.size(); ++i) {
+    for (const int dof : element_dofs(static_cast<int>(i))) rows[i].push_back(unknown[dof]);
+    for (const int b : rows[i])
+      for (const int a : rows[i])
+        if (a >= 0 && b >= 0) t.emplace_back(a, b, 0.0);
+  }
+  pattern_.resize(n, n);
+  pattern_.setFromTriplets(t.begin(), t.end());
+  pattern_.makeCompressed();
+  positions_.assign(elements_.size(), {});
+  const int* outer = pattern_.outerIndexPtr();
+  const int* inner = pattern_.innerIndexPtr();
+  for (size_t i = 0; i < elements_.size(); ++i)
+    for (const int b : rows[i])
+      for (const int a : rows[i]) {
+        int position = -1;
+        if (a >= 0 && b >= 0) position = static_cast<int>(std::lower_bound(inner + outer[b], inner + outer[b + 1], a) - inner);
+        positions_[i].push_back(position);
+      }
+}
+
+bool FiniteStrainForces::add(const Eigen::VectorXd& u, Eigen::VectorXd& R, const std::vector<int>& unknown,
+                             int n, Eigen::SparseMatrix<double>& K, std::string* inverted) const {
+  std::vector<fem::FiniteStrainElement> el;
+  if (!elements(u, R, true, inverted, el)) return false;
+  if (positions_.size() != elements_.size() || pattern_.rows() != n) find_pattern(unknown, n);
+  K = pattern_;
+  double* values = K.valuePtr();
+  for (size_t i = 0; i < el.size(); ++i) {
+    const double* k = el[i].K.data();
+    const std::vector<int>& at = positions_[i];
+    for (size_t e = 0; e < at.size(); ++e)
+      if (at[e] >= 0) values[at[e]] += k[e];
   }
   return true;
 }

@@ -9,6 +9,7 @@
 #include <Eigen/Sparse>
 
 #include "hpcontact/fem/element_values.hpp"
+#include "hpcontact/fem/finite_strain.hpp"
 #include "hpcontact/model/contact_pairs.hpp"
 
 namespace hpcontact::model {
@@ -48,6 +49,13 @@ public:
   /// when an element inverts (det F ≤ 0 at a quadrature point).
   bool add(const Eigen::VectorXd& u, Eigen::VectorXd& R, std::vector<Eigen::Triplet<double>>* t,
            std::string* inverted) const;
+  /// The same, the tangent formed on unknowns: K (n × n) becomes the sum of the element
+  /// blocks, each dof's row and column at unknown[dof] (−1: a dof that is no unknown, left out).
+  /// The pattern and where each element's entries go in it are found at the first call and
+  /// kept (`unknown` and n must be the same at every call): the blocks are added in place, in
+  /// the elements' order (the sums of the triplets' assembly, to the bit), with nothing sorted.
+  bool add(const Eigen::VectorXd& u, Eigen::VectorXd& R, const std::vector<int>& unknown, int n,
+           Eigen::SparseMatrix<double>& K, std::string* inverted) const;
 
 private:
   struct Ref {
@@ -56,6 +64,17 @@ private:
   const Discretization& d_;
   std::vector<Ref> elements_;
   std::vector<fem::ElementValues> values_;
+  /// The elements at u (the tangents if asked for), their forces added into R; false (and
+  /// `inverted` says where) if one inverts.
+  bool elements(const Eigen::VectorXd& u, Eigen::VectorXd& R, bool tangent, std::string* inverted,
+                std::vector<fem::FiniteStrainElement>& el) const;
+  /// The global dofs of element i's local ones.
+  std::vector<int> element_dofs(int i) const;
+  /// The tangent's pattern on the unknowns (values zero), and per element the position in its
+  /// values of each entry of the element's matrix (column-major; −1: not an unknown's).
+  mutable Eigen::SparseMatrix<double> pattern_;
+  mutable std::vector<std::vector<int>> positions_;
+  void find_pattern(const std::vector<int>& unknown, int n) const;
 };
 
 /// Anchors and slips of a pair's points after a converged load step (see FrictionHistory).

@@ -577,7 +577,10 @@ std::optional<Eigen::VectorXd> LoadPath::predicted(double s) const {
   if (a.segment != segment_ || b.segment != segment_ || a.x.size() != b.x.size() ||
       b.x.size() != x_.size() || !(std::abs(b.s - a.s) > 0))
     return std::nullopt;
-  return Eigen::VectorXd(b.x + (s - b.s) / (b.s - a.s) * (b.x - a.x));
+  Eigen::VectorXd x = x_;
+  const int n = system_.n_displacements();
+  x.head(n) += (s - b.s) / (b.s - a.s) * (b.x.head(n) - a.x.head(n));
+  return x;
 }
 
 double LoadPath::residual_norm(const Eigen::VectorXd& x) {

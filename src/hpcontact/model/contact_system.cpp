@@ -51,6 +51,8 @@ ContactSystem::ContactSystem(const Discretization& d, const std::vector<ContactP
         gamma_.segment(z_offset_[k] + c->size(), c->size()) = k2w.cwiseQuotient(c->tangential_augmentation);
     }
   K_prescribed_ = op_->K * d_.prescribed;
+  unknown_of_dof_.resize(d_.n_dofs);
+  for (int dof = 0; dof < d_.n_dofs; ++dof) unknown_of_dof_[dof] = op_->unknown(d_, dof);
   u_committed_ = Eigen::VectorXd::Zero(d_.n_dofs);
   u_step_start_ = u_committed_;
   step_slips_.resize(pairs_.size());
@@ -236,12 +238,21 @@ void ContactSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve
     return;
   }
   Triplets T;
-  residual(x, r, K ? &T : nullptr, nullptr, nullptr);
+  solve::SparseMatrix K_finite;
+  residual(x, r, K ? &T : nullptr, nullptr, nullptr, K ? &K_finite : nullptr);
   if (!K) return;
   previous_tangent_states_ = std::move(tangent_states_);
   tangent_states_ = states_;
   solve::SparseMatrix Kc(size(), size());
   Kc.setFromTriplets(T.begin(), T.end());
+  if (K_finite.nonZeros() > 0) {
+    K_finite.conservativeResize(size(), size());
+    Kc = K_finite + Kc;
+  }
+  if (K_uu_.nonZeros() == 0) {  // finite-strain bodies alone: their triplets are the tangent
+    K->swap(Kc);
+    return;
+  }
   if (n_z_ == 0) {
     *K = K_uu_ + Kc;
     return;
@@ -329,7 +340,8 @@ Eigen::VectorXd ContactSystem::solve(const solve::LinearSolver& sparse, const Ei
 }
 
 void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Triplets* T,
-                             PairStates* states, const PairStates* frozen) const {
+                             PairStates* states, const PairStates* frozen,
+                             solve::SparseMatrix* K_finite) const {
   const Vec2 factors = displacement_factors(x);
   if (target_)
     for (const auto& pair : pairs_)
@@ -341,7 +353,10 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
   Triplets t_all;
   Triplets* t = T ? &t_all : nullptr;
   r = Eigen::VectorXd::Zero(size());
-  if (!finite_.empty() && !finite_.add(u, R, t, &failure_)) {
+  // (under force control the finite-strain triplets on prescribed dofs make the factor's column)
+  const bool in_place = T && K_finite && !target_;
+  if (!finite_.empty() && !(in_place ? finite_.add(u, R, unknown_of_dof_, n_u_, *K_finite, &failure_)
+                                     : finite_.add(u, R, t, &failure_))) {
     // An inverted element has no internal force: a not-finite residual makes Newton stop and
     // the load step be cut.
     r.setConstant(std::numeric_limits<double>::quiet_NaN());

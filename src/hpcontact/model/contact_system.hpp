@@ -155,9 +155,13 @@ private:
   using Triplets = std::vector<Eigen::Triplet<double>>;
 
   /// R(x); the tangent's triplets on the unknowns into T (null: none); the penalty points'
-  /// states into states; with `frozen`, penalty gaps use the normals of those states.
+  /// states into states; with `frozen`, penalty gaps use the normals of those states. With
+  /// K_finite (and T, and no force target) the finite-strain bodies' tangent goes there, on the
+  /// displacement unknowns (FiniteStrainForces' kept pattern), instead of into T.
   void residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Triplets* T, PairStates* states,
-                const PairStates* frozen) const;
+                const PairStates* frozen, solve::SparseMatrix* K_finite = nullptr) const;
+  /// Per dof its index among the unknowns, −1 if none (ElasticOperator::unknown).
+  std::vector<int> unknown_of_dof_;
 
   /// The seed's tangent (eq. 3.35–3.36): column m by central differences of the whole residual
   /// with the step h_m = ν (|x_m| + 1e-3), ν = 1e-6 (< √η; below the seed's 1e-5 because a
