@@ -30,18 +30,22 @@ namespace {
 /// positive definite (solve::LinearSolverKind::cholmod_else_lu): the contact's curvature terms
 /// (−p_N M between two bodies, a curve obstacle's) at a deep trial penetration, a finite-strain
 /// body unstable under compression on its way to a stable state, friction in slip, a pair
-/// pressing along the mean normal. The block of a finite-strain body with exactly enforced
-/// contact is symmetric (its multipliers' unsymmetric rows are the Schur complement's), and
-/// CHOLMOD factorises it in about a third of LU's time. LU outright for the seed's difference
-/// tangent (a column straddling a point's contact switch), and where the input asks for ldlt
-/// on a block that may be unsymmetric or indefinite.
+/// pressing along the mean normal. With finite strain the block is symmetric as long as the
+/// contact is enforced exactly (its multipliers' unsymmetric rows are the Schur complement's),
+/// and CHOLMOD factorises it in about a third of LU's time. LU outright for the seed's
+/// difference tangent (a column straddling a point's contact switch), where the input asks for
+/// ldlt with finite strain, and for friction or the mean normal at small strain (kept from
+/// before the test of symmetry: those paths' Newton iterates, and so their results at the level
+/// of Newton's tolerance, stay as they were).
 solve::LinearSolverKind tangent_solver(const SolverSpec& ss, const Discretization& d,
                                        const ContactSystem& system) {
   const auto kind = solve::linear_solver_kind(ss.linear, ss.where.str() + ".linear");
   if (ss.tangent == "finite-difference") return solve::LinearSolverKind::lu;
-  if (kind == solve::LinearSolverKind::cholmod) return solve::LinearSolverKind::cholmod_else_lu;
-  if (d.finite_strain() || system.has_unsymmetric_tangent()) return solve::LinearSolverKind::lu;
-  return kind;
+  if (d.finite_strain())
+    return kind == solve::LinearSolverKind::cholmod ? solve::LinearSolverKind::cholmod_else_lu
+                                                    : solve::LinearSolverKind::lu;
+  if (system.has_unsymmetric_tangent()) return solve::LinearSolverKind::lu;
+  return kind == solve::LinearSolverKind::cholmod ? solve::LinearSolverKind::cholmod_else_lu : kind;
 }
 
 /// The problem's contact pairs, checked against the solver's settings: the target force's scale,
