@@ -557,11 +557,16 @@ LoadPath::StepAttempt LoadPath::attempt_step(double s, const FactorsAt& factors,
   // not always for the next of several small steps, which that state is close to.
   if (guess && residual_norm(x_guess) < residual_norm(a.x)) a.x = std::move(x_guess);
   // The extrapolation of the last two steps where its residual is the smaller (a rubber ring
-  // squeezed in equal steps: about one Newton iteration less a step).
+  // squeezed in equal steps: about one Newton iteration less a step). Newton's tolerance stays
+  // relative to the residual the step's increment gives at the last state: a predictor that
+  // is exact but for round-off (a homogeneous deformation) must not make it round-off itself.
+  double unpredicted = 0;
   if (!start && !guess && !force)
-    if (auto x_pred = predicted(s); x_pred && residual_norm(*x_pred) < residual_norm(a.x))
-      a.x = std::move(*x_pred);
-  newton_options_.reference_norm = system_.force_scale(a.x);
+    if (auto x_pred = predicted(s)) {
+      unpredicted = residual_norm(a.x);
+      if (residual_norm(*x_pred) < unpredicted) a.x = std::move(*x_pred);
+    }
+  newton_options_.reference_norm = std::max(system_.force_scale(a.x), unpredicted);
   if (force)
     newton_options_.reference_norm =
         std::max(newton_options_.reference_norm, force->share(s) * force->value);

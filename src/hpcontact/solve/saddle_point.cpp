@@ -92,6 +92,9 @@ void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, i
   inv_gamma_ = Eigen::VectorXd::Zero(nf);
   if ((gamma.array() > 0).any()) {
     std::vector<Eigen::Triplet<double>> t;
+    t.reserve(K.nonZeros());
+    for (int c = 0; c < K.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(K, c); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
     for (int k = 0; k < m_; ++k) {
       double w = 0;
       if (!dependent[k] && gamma(k) > 0) {
@@ -102,9 +105,9 @@ void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, i
         for (RowMajor::InnerIterator b(G_rows, k); b; ++b)
           t.emplace_back(a.col(), b.col(), w * a.value() * b.value());
     }
-    SparseMatrix GtG(n_, n_);
-    GtG.setFromTriplets(t.begin(), t.end());
-    sparse.factorize(SparseMatrix(K + GtG));
+    SparseMatrix A(n_, n_);
+    A.setFromTriplets(t.begin(), t.end());
+    sparse.factorize(std::move(A));
   } else {
     sparse.factorize(K);
   }
