@@ -78,6 +78,33 @@ Spatial spatial_closed_form(const char* law, double E, double nu, const Eigen::M
 
 }  // namespace
 
+// The load path's predictor: with u = s (F0 − I)X prescribed on the boundary the solution of
+// every load step is that field inside, linear in the path parameter s, so the extrapolation
+// of the last two converged steps is exact but for round-off. From the third step on Newton
+// then needs one iteration (the correction of round-off, to its tolerance relative to the
+// step's increment), where the first two, which start from the last state, need more; the
+// end state is still the homogeneous one (its strain E0 to 1e-9, p = 2, both laws).
+TEST(FiniteStrainPatch, PredictorIsExactOnALinearPath) {
+  Eigen::Matrix2d F0;
+  F0 << 1.2, 0.3, -0.1, 0.9;
+  const Eigen::Matrix2d E0 = 0.5 * (F0.transpose() * F0 - Eigen::Matrix2d::Identity());
+  for (const char* law : kLaws) {
+    auto spec = homogeneous(2, law, "0.2*x + 0.3*y", "-0.1*x - 0.1*y");
+    spec.solver.load_steps = 6;
+    model::Discretization d;
+    const auto sol = solve_finite(spec, d);
+    ASSERT_EQ(sol.path.size(), 6u) << law;
+    for (int k = 0; k < 6; ++k) {
+      if (k < 2) EXPECT_GT(sol.path[k].iterations, 1) << law << " step " << k + 1;
+      else EXPECT_EQ(sol.path[k].iterations, 1) << law << " step " << k + 1;
+    }
+    for (auto [xi, eta] : sample_points()) {
+      const auto r = post::evaluate(d.bodies[0], 0, xi, eta, sol.u);
+      EXPECT_LT((r.strain - Eigen::Vector3d(E0(0, 0), E0(1, 1), 2 * E0(0, 1))).norm(), 1e-9) << law;
+    }
+  }
+}
+
 // u = (F0 − I)X + c on the boundary of a distorted patch: the solution is that field inside, so
 // the post-processed Green–Lagrange strain and Cauchy stress (σxx, σyy, σxy, σzz) are those of
 // F0 at every point — the stress the closed form above gives, to 1e-9 — for both laws and
