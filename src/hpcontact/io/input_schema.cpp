@@ -274,9 +274,10 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "How the equations are solved."},
       {.path = "solver.linear", .type = T::choice, .default_yaml = "cholmod",
        .doc = "Sparse direct solver: CHOLMOD (in a contact solve it gives way to LU from the first "
-              "tangent that is not positive definite), Eigen's SimplicialLDLT, or UMFPACK's LU "
-              "(used whatever is set with tangent: finite-difference, finite strain and friction, "
-              "whose tangents can be indefinite or unsymmetric).",
+              "tangent that is not positive definite, or with finite strain not symmetric to "
+              "round-off), Eigen's SimplicialLDLT, or UMFPACK's LU (used whatever is set with "
+              "tangent: finite-difference, and with friction at small strain; with ldlt for finite "
+              "strain too: those tangents can be indefinite or unsymmetric).",
        .choices = {"cholmod", "ldlt", "lu"}},
       {.path = "solver.tangent", .type = T::choice, .default_yaml = "analytic",
        .doc = "Newton tangent: analytic (consistent), or the seed's central finite differences of "
