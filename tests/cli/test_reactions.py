@@ -102,11 +102,14 @@ def test_balance_of_an_rp_loop_and_of_penalty_friction(hpcontact, root, tmp_path
 
 
 def test_a_loose_solve_is_warned(hpcontact, root, tmp_path):
-    """The neo-Hooke O-ring solved to a loose tolerance (1e-3) leaves its forces out of balance by
-    1e-5 of the largest: above the limit 1e-6, so summary.json and the run's messages warn,
-    naming the body and the tolerance (the examples above balance to 1e-14 and are not warned)."""
+    """The neo-Hooke O-ring solved in one load step to a loose tolerance (1e-3) leaves its forces
+    out of balance by 6e-5 of the largest: above the limit 1e-6, so summary.json and the run's
+    messages warn, naming the body and the tolerance (the examples above balance to 1e-14 and
+    are not warned). One step: in eight the predictor's starts leave the last step balanced to
+    1e-10 even at that tolerance."""
     case = os.path.join(root, "examples/o-ring/o-ring-plane-strain.yaml")
-    r = hpcontact("run", case, "--out", tmp_path / "loose", "-q", "--set", "solver.tolerance=1e-3")
+    r = hpcontact("run", case, "--out", tmp_path / "loose", "-q", "--set", "solver.tolerance=1e-3",
+                  "--set", "solver.load_steps=1")
     assert r.returncode == 0, r.stderr
     with open(tmp_path / "loose" / "summary.json") as f:
         s = json.load(f)

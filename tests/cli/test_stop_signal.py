@@ -113,15 +113,16 @@ def test_a_run_whose_study_died_before_it_started_stops(exe, root, tmp_path):
 
 
 def test_a_stop_inside_a_long_newton_iteration_takes_effect_at_once(exe, root, tmp_path):
-    """A finite-strain block at p = 20 with 44 extra Gauss points a direction: each Newton
-    iteration assembles one element's tangent for seconds. SIGTERM a third of the way into the
+    """A finite-strain block at p = 30 with 44 extra Gauss points a direction: each Newton
+    iteration assembles one element's tangent for seconds (2.5 s on a busy machine; at p = 20
+    the first elasticity tensor's products take 0.45 s, below the test's floor of 1 s). SIGTERM a third of the way into the
     first iteration of load step 2 ends the run well within that iteration's time (it waited for
     the whole iteration), as stopped: load step 1 in last-good/, the message naming the
     iteration given up."""
     out = tmp_path / "r"
     args = [exe, "run", os.path.join(root, "tests", "cli", "data", "crushed-block.yaml"), "--out",
             str(out), "--log-json", "--set", "bodies[0].constraints[1].uy=-1e-3", "--set",
-            "discretization.degree=20", "--set", "discretization.quadrature_extra=44", "--set",
+            "discretization.degree=30", "--set", "discretization.quadrature_extra=44", "--set",
             "solver.load_steps=3", "--set", "output.vtu=false"]
     p = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     events = []
