@@ -239,6 +239,26 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Coordinate along which t runs.", .choices = {"x", "y"}},
       {.path = "bodies[].loads[].interval", .type = T::point, .unit = "length",
        .doc = "[start, end] of t in the along coordinate, start != end; absent: the whole edges."},
+      {.path = "bodies[].loads[].follower", .type = T::boolean, .default_yaml = "false",
+       .doc = "A pressure that follows the deformation: it acts normal to the deformed boundary "
+              "per unit deformed length (and deformed circle 2 pi r of an axisymmetric body), "
+              "its shape taken at the undeformed points; only with pressure. In the residual "
+              "and tangent of a finite-strain body (the load stiffness); in the linear theory a "
+              "follower pressure is the dead pressure. Scaled by the load factor like every load."},
+      {.path = "bodies[].loads[].penetration", .type = T::section,
+       .doc = "Pressure penetration (a seal's system pressure): the follower pressure acts only "
+              "from one end of its edges (one chain) up to the first point in contact of a "
+              "contact pair, nothing beyond (the sealed side), updated with the contact zone at "
+              "every Newton iteration. Only with follower: true; the pair's edges on this body "
+              "must overlap the load's. summary.json reports where the pressure stops and "
+              "whether it reached the far end (the seal leaks: a warning)."},
+      {.path = "bodies[].loads[].penetration.contact", .type = T::integer, .required = true,
+       .doc = "Index of the contact pair (contact[K]) whose contact stops the pressure.",
+       .lower = at_least(0)},
+      {.path = "bodies[].loads[].penetration.from", .type = T::choice, .default_yaml = "start",
+       .doc = "The pressurised end of the loaded edges' chain: start (its first vertex, in the "
+              "order the edge sets list the edges) or end.",
+       .choices = {"start", "end"}},
 
       {.path = "bodies[].nodal_forces[].node", .type = T::integer, .required = true,
        .doc = "Node id."},

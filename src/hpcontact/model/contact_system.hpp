@@ -146,8 +146,20 @@ public:
   /// of μ times its normal one, else empty: why a load may not be carried further.
   std::string capacity_used() const;
   Eigen::VectorXd solve(const solve::LinearSolver& sparse, const Eigen::VectorXd& b) const override;
+  /// Per follower load of the discretisation (Discretization::follower_loads), the part of its
+  /// edges it acted on at the last evaluation: with penetration, up to the contact of its pair
+  /// then (the active multiplier nodes; a penalty pair's points with a pressure).
+  const std::vector<WetRange>& wet_ranges() const { return wet_ranges_; }
 
 private:
+  /// Adds the follower loads' forces at u, times −the loads' factor, into R and their tangent
+  /// into t; their unscaled sum into f (for ∂r/∂α) if not null. `marks` per pair: where its
+  /// points or nodes are in contact.
+  void add_follower_loads(const Eigen::VectorXd& u, double loads_factor,
+                          const std::vector<std::vector<ContactMark>>& marks, Eigen::VectorXd& R,
+                          std::vector<Eigen::Triplet<double>>* t, Eigen::VectorXd* f) const;
+  mutable std::vector<WetRange> wet_ranges_;
+
   using PairStates = std::vector<std::vector<contact::PointState>>;
   /// A tangential multiplier row's state (states_): held is a sticking node whose slip no
   /// unknown moves (tangential_rows).
