@@ -367,10 +367,11 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
         for (const auto& s : *side) points_in_contact_ += s.pressure > 0;
       if (!marks.empty()) {
         for (size_t i = 0; i < f.states.size(); ++i)
-          marks[k].push_back({pair.body, pair.edges[pair.points[i].edge], pair.points[i].t, f.states[i].pressure > 0});
+          marks[k].push_back({pair.body, pair.edges[pair.points[i].edge], pair.points[i].t, pair.points[i].X,
+                              f.states[i].pressure});
         for (size_t i = 0; i < f.other_states.size(); ++i)
           marks[k].push_back({pair.other, pair.other_edges[pair.other_points[i].edge], pair.other_points[i].t,
-                              f.other_states[i].pressure > 0});
+                              pair.other_points[i].X, f.other_states[i].pressure});
       }
       R.segment(d_.bodies[pair.body].dof_offset, f.body.size()) -= f.body;
       if (pair.other >= 0) R.segment(d_.bodies[pair.other].dof_offset, f.other.size()) -= f.other;
@@ -401,7 +402,7 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
       states_[z_offset_[k] + j] = active;
       if (!marks.empty()) {
         const auto& node = c.nodes.nodes[j];
-        marks[k].push_back({pair.body, c.edges[node.edge], node.t, active});
+        marks[k].push_back({pair.body, c.edges[node.edge], node.t, node.X, active ? lambda(j) : 0.0});
       }
       r(o + j) = active ? c.scale(j) * s.G(j) : Wj * lambda(j);
       if (!T) continue;
@@ -482,7 +483,7 @@ void ContactSystem::add_follower_loads(const Eigen::VectorXd& u, double loads_fa
   for (size_t i = 0; i < d_.follower_loads.size(); ++i) {
     const FollowerLoad& L = d_.follower_loads[i];
     static const std::vector<ContactMark> none;
-    wet_ranges_[i] = wetted_range(L, L.penetration ? marks[L.penetration->pair] : none);
+    wet_ranges_[i] = wetted_range(L, L.penetration ? marks[L.penetration->pair] : none, loads_factor);
     add_follower_force(d_, L, u, wet_ranges_[i], 1.0, force, t ? &stiffness : nullptr);
   }
   // R = ... − λ f(u): its tangent −λ ∂f/∂u

@@ -1,6 +1,8 @@
 // The follower loads' forces at a converged state, from the contact it finds there.
 #include "hpcontact/model/follower_forces.hpp"
 
+#include <algorithm>
+
 #include "hpcontact/model/contact_forces.hpp"
 #include "hpcontact/model/discretization.hpp"
 
@@ -13,17 +15,18 @@ std::vector<ContactMark> contact_marks(const Discretization& d, const ContactPai
     const PairConstraints& c = *pair.constraints;
     for (int j = 0; j < c.size(); ++j) {
       const auto& node = c.nodes.nodes[j];
-      const bool pressed = j < multipliers.size() && multipliers(j) > 0;
-      marks.push_back({pair.body, c.edges[node.edge], node.t, pressed});
+      const double pressure = j < multipliers.size() ? std::max(0.0, multipliers(j)) : 0.0;
+      marks.push_back({pair.body, c.edges[node.edge], node.t, node.X, pressure});
     }
     return marks;
   }
   const PairForces f = pair_forces(d, pair, u, nullptr);
   for (size_t i = 0; i < f.states.size(); ++i)
-    marks.push_back({pair.body, pair.edges[pair.points[i].edge], pair.points[i].t, f.states[i].pressure > 0});
+    marks.push_back({pair.body, pair.edges[pair.points[i].edge], pair.points[i].t, pair.points[i].X,
+                     f.states[i].pressure});
   for (size_t i = 0; i < f.other_states.size(); ++i)
     marks.push_back({pair.other, pair.other_edges[pair.other_points[i].edge], pair.other_points[i].t,
-                     f.other_states[i].pressure > 0});
+                     pair.other_points[i].X, f.other_states[i].pressure});
   return marks;
 }
 
@@ -38,7 +41,7 @@ Eigen::VectorXd follower_forces(const Discretization& d, const std::vector<Conta
       const int k = L.penetration->pair;
       marks = contact_marks(d, pairs[k], u, k < static_cast<int>(multipliers.size()) ? multipliers[k] : Eigen::VectorXd());
     }
-    const WetRange range = wetted_range(L, marks);
+    const WetRange range = wetted_range(L, marks, loads_factor);
     if (ranges) ranges->push_back(range);
     add_follower_force(d, L, u, range, loads_factor, f, nullptr);
   }

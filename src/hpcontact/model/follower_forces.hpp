@@ -11,8 +11,8 @@
 
 namespace hpcontact::model {
 
-/// Where pair's multiplier nodes (exact: in contact where the multiplier is positive, as at a
-/// converged state) or points (penalty: where they carry a pressure) lie, on both its bodies.
+/// Where pair's multiplier nodes (exact: their multipliers, those of a converged state, a
+/// negative one taken as 0) or points (penalty: their pressures) lie, on both its bodies.
 std::vector<ContactMark> contact_marks(const Discretization& d, const ContactPair& pair,
                                        const Eigen::VectorXd& u, const Eigen::VectorXd& multipliers);
 

@@ -38,7 +38,7 @@ std::vector<std::pair<double, double>> wet_pieces(const FollowerEdge& e, int k, 
 
 }  // namespace
 
-WetRange wetted_range(const FollowerLoad& L, const std::vector<ContactMark>& marks) {
+WetRange wetted_range(const FollowerLoad& L, const std::vector<ContactMark>& marks, double loads_factor) {
   const double n = static_cast<double>(L.edges.size());
   WetRange range{0, n, false};
   if (!L.penetration) return range;
@@ -47,7 +47,9 @@ WetRange wetted_range(const FollowerLoad& L, const std::vector<ContactMark>& mar
   bool found = false;
   double stop = L.penetration->from_end ? 0.0 : n;
   for (const auto& mark : marks) {
-    if (!mark.in_contact || mark.body != L.body) continue;
+    if (mark.body != L.body || !(mark.pressure > 0) ||
+        mark.pressure <= loads_factor * std::abs(L.pressure(mark.X)))
+      continue;
     for (size_t k = 0; k < L.edges.size(); ++k) {
       if (L.edges[k].mesh_edge != mark.mesh_edge) continue;
       const double s = chain_position(L.edges[k], static_cast<int>(k), mark.t);

@@ -54,17 +54,22 @@ struct WetRange {
   bool leaks = false;
 };
 
-/// Where a contact pair's point or multiplier node lies on a body, and whether it is in contact.
+/// Where a contact pair's point or multiplier node lies on a body, and its contact pressure
+/// (exact: the multiplier of an active node, per undeformed length; penalty: the point's
+/// pressure; 0 where it is not in contact).
 struct ContactMark {
   int body = -1;
   int mesh_edge = -1;
   double t = 0;  ///< local parameter on that edge
-  bool in_contact = false;
+  Vec2 X = Vec2::Zero();  ///< undeformed position
+  double pressure = 0;
 };
 
 /// The whole chain of L, or with penetration the part from its pressurised end up to the first
-/// of `marks` (those of L's pair on L's body) in contact, all of it (leaks) if none is.
-WetRange wetted_range(const FollowerLoad& L, const std::vector<ContactMark>& marks);
+/// of `marks` (those of L's pair on L's body) that seals: whose contact pressure exceeds the
+/// load's pressure there (times loads_factor), as pressure penetration is judged in engineering
+/// codes — the fluid enters a contact that presses less than it; all of it (leaks) if none does.
+WetRange wetted_range(const FollowerLoad& L, const std::vector<ContactMark>& marks, double loads_factor);
 
 /// Adds `factor` times the force of L at the state u (all dofs) over the range into f (all
 /// dofs), and `factor` times its derivative ∂f/∂u into t (all dofs) if t is not null.
