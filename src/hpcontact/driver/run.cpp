@@ -200,8 +200,8 @@ void report_penetration(const model::Discretization& d, const model::NonlinearSo
                     {"leaks", range.leaks}});
     if (range.leaks)
       warn(L.where + ".penetration: the pressure reaches the far end of the loaded edges: no point of "
-           "contact[" + std::to_string(L.penetration->pair) + "] is in contact on them, so nothing "
-           "seals (the seal leaks)", options, s);
+           "contact[" + std::to_string(L.penetration->pair) + "] on them presses harder than the "
+           "pressure, so nothing seals (the seal leaks)", options, s);
   }
   if (!list.empty()) s.extra["penetration"] = list;
 }
