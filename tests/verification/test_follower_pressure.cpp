@@ -319,3 +319,20 @@ TEST(FollowerPressure, SealLeaksAboveThePeakContactPressure) {
     }
   }
 }
+
+// The arc-length method on a follower load (its path's load derivative the follower force at the
+// state reached, ContactSystem::load_vector(x)): Rivlin's plane-strain tube of
+// ThickTubeInflationMatchesRivlin (p = 6) inflated to P_Rivlin(1.5) along the arc-length path
+// shall end at the closed form's bore stretch within 1e-5 relative, as under load control.
+TEST(FollowerPressure, ArcLengthInflationMatchesRivlin) {
+  auto spec = pressurised_tube(false, 6, rivlin_pressure(1.5), 4);
+  spec.solver.control = "arc-length";
+  const auto d = model::discretize(spec);
+  const auto sol = model::solve_contact(spec, d);
+  ASSERT_TRUE(sol.converged) << sol.message;
+  const double l_fe = bore_stretch(d, sol.u);
+  std::printf("arc-length: %zu path points, loads factor %.12f, bore stretch %.10f (Rivlin 1.5)\n",
+              sol.path.size(), sol.loads_factor, l_fe);
+  EXPECT_NEAR(sol.loads_factor, 1.0, 1e-12);
+  EXPECT_NEAR(l_fe, 1.5, 1e-5 * 1.5);
+}

@@ -592,7 +592,7 @@ bool LoadPath::arc_length_path() {
   ao.max_iterations = ss_.max_iterations;
   ao.tolerance = ss_.tolerance;
   ao.linear_solver = solve::LinearSolverKind::lu;
-  ao.reference_norm = system_.load_vector().norm();
+  ao.reference_norm = system_.load_vector(x_).norm();  // with the follower loads at the state reached
   HPC_REQUIRE(ao.reference_norm > 0, InputError, ss_.where.str(),
               ".control: arc-length scales the loads, and there are none");
   double lf = 0;

@@ -144,6 +144,18 @@ std::vector<Eigen::VectorXd> ContactSystem::measure_step_slips(const Eigen::Vect
 
 Eigen::VectorXd ContactSystem::load_vector() const { return op_->restrict(d_, op_->load); }
 
+Eigen::VectorXd ContactSystem::load_vector(const Eigen::VectorXd& x) const {
+  if (d_.follower_loads.empty()) return load_vector();
+  const Eigen::VectorXd u = full(x);
+  Eigen::VectorXd f = op_->load;
+  for (size_t i = 0; i < d_.follower_loads.size(); ++i) {
+    const FollowerLoad& L = d_.follower_loads[i];
+    const WetRange all{0, static_cast<double>(L.edges.size()), false};
+    add_follower_force(d_, L, u, i < wet_ranges_.size() ? wet_ranges_[i] : all, 1.0, f, nullptr);
+  }
+  return op_->restrict(d_, f);
+}
+
 bool ContactSystem::has_friction() const {
   for (const auto& pair : pairs_)
     if (pair.memory || (pair.constraints && pair.constraints->has_friction())) return true;

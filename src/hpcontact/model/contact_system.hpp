@@ -92,8 +92,12 @@ public:
   /// The same, the slips of every committed step added up, signed along the node's tangent (the
   /// path's slip: contact.csv `slip`).
   const std::vector<Eigen::VectorXd>& total_slips() const { return total_slips_; }
-  /// The load vector on the unknowns (what a unit load factor applies).
+  /// The load vector on the unknowns (what a unit load factor applies), the follower loads
+  /// left out.
   Eigen::VectorXd load_vector() const;
+  /// The same at the state x with the follower loads on the deformed boundary, over the parts
+  /// of their edges the last evaluation wetted: ∂(λ f)/∂λ at x.
+  Eigen::VectorXd load_vector(const Eigen::VectorXd& x) const;
   const Vec2& displacement_factors() const { return factors_; }
   bool has_friction() const;
   /// Whether the displacement block of a tangent may be unsymmetric: friction, or a pair
@@ -255,9 +259,9 @@ public:
     return s_.solve(sparse, b);
   }
   void set_load_factor(double lambda) override { s_.set_factors(s_.displacement_factors(), lambda); }
-  Eigen::VectorXd load_derivative(const Eigen::VectorXd&) override {
+  Eigen::VectorXd load_derivative(const Eigen::VectorXd& x) override {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(s_.size());
-    f.head(s_.n_displacements()) = -s_.load_vector();
+    f.head(s_.n_displacements()) = -s_.load_vector(x);
     return f;
   }
   int path_size() const override { return s_.n_displacements(); }
