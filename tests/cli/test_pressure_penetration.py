@@ -75,3 +75,25 @@ def test_penetrating_edges_that_are_not_one_chain_are_refused(hpcontact, root, t
     expect_refused(hpcontact, example(root), tmp_path,
                    ["bodies[0].loads[0].edges=[right, left]", "bodies[0].loads[0].penetration.contact=1"],
                    "bodies[0].loads[0].penetration: the loaded edges must form one open chain", 1)
+
+
+def test_from_end_of_the_reversed_chain_is_the_same_load(hpcontact, root, tmp_path):
+    """The loaded edges listed from the top ([upper, right]: the chain starts at the upper end)
+    and pressurised `from: end` are the example's load: the same stop, wetted length and strain
+    energy to round-off (1e-12 relative)."""
+    runs = {}
+    for name, settings in (("start", []),
+                           ("end", ["bodies[0].loads[0]={edges: [upper, right], pressure: 1.5, "
+                                    "follower: true, penetration: {contact: 0, from: end}}"])):
+        args = ["run", example(root), "--out", tmp_path / name, "-q"]
+        for s in settings:
+            args += ["--set", s]
+        r = hpcontact(*args)
+        assert r.returncode == 0, r.stderr
+        runs[name] = json.load(open(tmp_path / name / "summary.json"))
+    a, b = runs["start"], runs["end"]
+    assert b["penetration"][0]["from"] == "end"
+    for i in range(2):
+        assert abs(a["penetration"][0]["stop"][i] - b["penetration"][0]["stop"][i]) < 1e-12 * 20
+    assert abs(a["penetration"][0]["wetted_length"] - b["penetration"][0]["wetted_length"]) < 1e-12 * 3
+    assert abs(a["strain_energy"] - b["strain_energy"]) < 1e-12 * a["strain_energy"]
