@@ -181,6 +181,31 @@ void warn(const std::string& warning, const RunOptions& options, post::Summary& 
   if (options.warning) options.warning(warning);
 }
 
+/// summary.json's `penetration`: per follower load with pressure penetration, where its pressure
+/// stops and the wetted length (undeformed), and a warning for each that reached the far end of
+/// its edges (the seal leaks).
+void report_penetration(const model::Discretization& d, const model::NonlinearSolution& sol,
+                        const RunOptions& options, post::Summary& s) {
+  auto list = nlohmann::json::array();
+  for (size_t i = 0; i < d.follower_loads.size() && i < sol.wet_ranges.size(); ++i) {
+    const model::FollowerLoad& L = d.follower_loads[i];
+    if (!L.penetration) continue;
+    const model::WetRange& range = sol.wet_ranges[i];
+    const model::WetExtent extent = model::wetted_extent(d, L, range);
+    list.push_back({{"load", L.where},
+                    {"contact", L.penetration->pair},
+                    {"from", L.penetration->from_end ? "end" : "start"},
+                    {"wetted_length", extent.length},
+                    {"stop", {extent.stop.x(), extent.stop.y()}},
+                    {"leaks", range.leaks}});
+    if (range.leaks)
+      warn(L.where + ".penetration: the pressure reaches the far end of the loaded edges: no point of "
+           "contact[" + std::to_string(L.penetration->pair) + "] on them presses harder than the "
+           "pressure, so nothing seals (the seal leaks)", options, s);
+  }
+  if (!list.empty()) s.extra["penetration"] = list;
+}
+
 /// A file of the output folder as a progress line names it: with last-good/ in front when it
 /// went there (a failed run's last converged state), so that it is not taken for a result.
 std::string shown_as(const std::filesystem::path& folder, const std::string& file) {
@@ -677,6 +702,7 @@ RunResult run_problem(const model::ProblemSpec& input, const RunOptions& options
     s.extra["newton_iterations_total"] = sol.newton_iterations;
     s.load_steps = sol.load_steps;
     s.extra["load_factor"] = sol.load_factor;
+    report_penetration(d, sol, options, s);
     if (sol.loads_factor != sol.load_factor || !spec.solver.stages.empty() ||
         spec.solver.control != "load")
       s.extra["loads_factor"] = sol.loads_factor;

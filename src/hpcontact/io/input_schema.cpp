@@ -239,6 +239,26 @@ const std::vector<KeySpec>& input_schema() {
        .doc = "Coordinate along which t runs.", .choices = {"x", "y"}},
       {.path = "bodies[].loads[].interval", .type = T::point, .unit = "length",
        .doc = "[start, end] of t in the along coordinate, start != end; absent: the whole edges."},
+      {.path = "bodies[].loads[].follower", .type = T::boolean, .default_yaml = "false",
+       .doc = "A pressure that follows the deformation: it acts normal to the deformed boundary "
+              "per unit deformed length (and deformed circle 2 pi r of an axisymmetric body), "
+              "its shape taken at the undeformed points; only with pressure. In the residual "
+              "and tangent of a finite-strain body (the load stiffness); in the linear theory a "
+              "follower pressure is the dead pressure. Scaled by the load factor like every load."},
+      {.path = "bodies[].loads[].penetration", .type = T::section,
+       .doc = "Pressure penetration (a seal's system pressure): the follower pressure acts only "
+              "from one end of its edges (one chain) up to the first point in contact of a "
+              "contact pair, nothing beyond (the sealed side), updated with the contact zone at "
+              "every Newton iteration. Only with follower: true; the pair's edges on this body "
+              "must overlap the load's. summary.json reports where the pressure stops and "
+              "whether it reached the far end (the seal leaks: a warning)."},
+      {.path = "bodies[].loads[].penetration.contact", .type = T::integer, .required = true,
+       .doc = "Index of the contact pair (contact[K]) whose contact stops the pressure.",
+       .lower = at_least(0)},
+      {.path = "bodies[].loads[].penetration.from", .type = T::choice, .default_yaml = "start",
+       .doc = "The pressurised end of the loaded edges' chain: start (its first vertex, in the "
+              "order the edge sets list the edges) or end.",
+       .choices = {"start", "end"}},
 
       {.path = "bodies[].nodal_forces[].node", .type = T::integer, .required = true,
        .doc = "Node id."},
@@ -975,7 +995,14 @@ std::string input_schema_markdown() {
         "axisymmetric bodies: the forces are totals over the whole circle (2 pi r included, as "
         "`resultant`), x the radial total, no moment (null), and only the axial component "
         "balances (the radial totals are carried by the hoop stresses); `equilibrium_residual` "
-        "the largest `relative` of a body, with a warning above `equilibrium_limit` (1e-6).\n"
+        "the largest `relative` of a body, with a warning above `equilibrium_limit` (1e-6) "
+        "(follower pressures count among the loads, on the deformed boundary, over their "
+        "wetted part); `penetration` (loads with bodies[].loads[].penetration, one record "
+        "each): `load` its place in the file, `contact` and `from` as given, `stop` the "
+        "undeformed point where the pressure stops (the first multiplier node or point of the "
+        "pair, from the pressurised end, that presses harder than the pressure), "
+        "`wetted_length` the undeformed length it acts on, `leaks` whether it reached the far "
+        "end of its edges (no point seals; also a warning naming the load and the pair).\n"
         "- `contact.csv`: a row per contact point — exact contact: the multiplier nodes; "
         "penalty: the Gauss points; a two-body pair lists both bodies' points (`body`). "
         "Columns: `pair`; `X`, `Y` undeformed and `x`, `y` deformed position; `gap` (exact: the "

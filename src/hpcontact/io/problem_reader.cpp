@@ -78,6 +78,7 @@ class SpecBuilder {
     spec.discretization = discretization(root["discretization"]);
     spec.solver = solver(root["solver"]);
     if (root["contact"]) spec.contact = contact(root["contact"], "contact", spec.bodies);
+    require_penetration_pairs(root, spec);
     if (root["exact"]) spec.exact = exact(root["exact"], spec.bodies);
     if (root["adapt"]) spec.adapt = adapt(root["adapt"], spec);
     // Goal-oriented degrees spend fewer dofs for an accuracy in the trunk space than in the
@@ -454,9 +455,63 @@ class SpecBuilder {
           source_.fail(node["interval"], item_path + ".interval",
                        "start and end must differ (got " + shown_value(node["interval"]) + ")");
       }
+      load.follower = boolean(node["follower"]);
+      if (load.follower && load.kind != LoadKind::pressure)
+        source_.fail(node["follower"], item_path + ".follower",
+                     "a follower load is a pressure (normal to the deformed boundary); a traction "
+                     "keeps its direction (got traction with follower: true)");
+      if (const YAML::Node pen = node["penetration"]) {
+        if (!load.follower)
+          source_.fail(pen, item_path + ".penetration",
+                       "pressure penetration moves with the contact zone on the deformed boundary: "
+                       "it needs follower: true (got follower: false)");
+        load.penetration = EdgeLoadSpec::Penetration{integer(pen["contact"]), pen["from"].Scalar() == "end",
+                                                     source_.where(pen, item_path + ".penetration")};
+      }
       load.where = source_.where(node, item_path);
       b.edge_loads.push_back(std::move(load));
     }
+  }
+
+  /// Each penetrating load names an existing contact pair that has edges of the load's body
+  /// among the load's edges (as its own or as its obstacle's).
+  void require_penetration_pairs(const YAML::Node& root, const ProblemSpec& spec) {
+    for (std::size_t i = 0; i < spec.bodies.size(); ++i) {
+      const BodySpec& b = spec.bodies[i];
+      for (std::size_t j = 0; j < b.edge_loads.size(); ++j) {
+        const auto& pen = b.edge_loads[j].penetration;
+        if (!pen) continue;
+        const std::string path = join_index(join_index("bodies", i) + ".loads", j) + ".penetration.contact";
+        const YAML::Node node = root["bodies"][i]["loads"][j]["penetration"]["contact"];
+        if (pen->contact >= static_cast<int>(spec.contact.size()))
+          source_.fail(node, path, "no such contact pair (the problem has " +
+                                       std::to_string(spec.contact.size()) + ") (got " +
+                                       std::to_string(pen->contact) + ")");
+        const ContactPairSpec& c = spec.contact[pen->contact];
+        std::vector<std::string> pair_sets;
+        if (c.body == b.name) pair_sets = c.edge_sets;
+        if (c.obstacle.kind == ObstacleKind::body && c.obstacle.body == b.name)
+          pair_sets.insert(pair_sets.end(), c.obstacle.edge_sets.begin(), c.obstacle.edge_sets.end());
+        if (!shares_an_edge(b, pair_sets, b.edge_loads[j].edge_sets))
+          source_.fail(node, path, "contact[" + std::to_string(pen->contact) + "] has none of the "
+                       "load's edges on body '" + b.name + "': the pressure stops where that pair's "
+                       "contact starts on the loaded edges, so the pair must share some of them");
+      }
+    }
+  }
+
+  /// Whether an edge (either direction) lies in one of the sets `a` and one of the sets `b`.
+  static bool shares_an_edge(const BodySpec& body, const std::vector<std::string>& a,
+                             const std::vector<std::string>& b) {
+    std::set<std::pair<int, int>> in_a;
+    for (const auto& set : body.edge_sets)
+      if (std::find(a.begin(), a.end(), set.name) != a.end())
+        for (const auto& e : set.edges) in_a.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
+    for (const auto& set : body.edge_sets)
+      if (std::find(b.begin(), b.end(), set.name) != b.end())
+        for (const auto& e : set.edges)
+          if (in_a.count({std::min(e[0], e[1]), std::max(e[0], e[1])})) return true;
+    return false;
   }
 
   void read_nodal_forces(const YAML::Node& list, const std::string& path, BodySpec& b) {

@@ -17,6 +17,7 @@
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/model/contact_solve_failure.hpp"
 #include "hpcontact/model/contact_system.hpp"
+#include "hpcontact/model/follower_forces.hpp"
 #include "hpcontact/model/load_scale.hpp"
 #include "hpcontact/model/memory_points.hpp"
 #include "hpcontact/solve/arc_length.hpp"
@@ -638,7 +639,7 @@ bool LoadPath::arc_length_path() {
   ao.max_iterations = ss_.max_iterations;
   ao.tolerance = ss_.tolerance;
   ao.linear_solver = solve::LinearSolverKind::lu;
-  ao.reference_norm = system_.load_vector().norm();
+  ao.reference_norm = system_.load_vector(x_).norm();  // with the follower loads at the state reached
   HPC_REQUIRE(ao.reference_norm > 0, InputError, ss_.where.str(),
               ".control: arc-length scales the loads, and there are none");
   double lf = 0;
@@ -808,6 +809,7 @@ NonlinearSolution LoadPath::result(bool converged) {
                                             slips[k].size() ? &slips[k] : nullptr,
                                             totals[k].size() ? &totals[k] : nullptr));
   sol_.pairs = std::move(pairs_);
+  follower_forces(d_, sol_.pairs, sol_.u, sol_.multipliers, sol_.loads_factor, &sol_.wet_ranges);
   for (size_t k = 0; k < sol_.contact.size(); ++k) {
     const MemoryPoints m = memory_points(sol_, k);
     sol_.contact[k].memory_points = m.own;

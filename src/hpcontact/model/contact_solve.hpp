@@ -68,6 +68,9 @@ struct NonlinearSolution {
     std::vector<Eigen::VectorXd> multipliers;  ///< per pair, as `multipliers` below
   };
   std::vector<StepState> step_states;
+  /// Per follower load (Discretization::follower_loads): the part of its edges it acts on at
+  /// the state u (with penetration: up to its pair's contact there).
+  std::vector<WetRange> wet_ranges;
   /// Per pair: the pressures at its multiplier nodes (exact enforcement), empty for the penalty.
   std::vector<Eigen::VectorXd> multipliers;
   /// The pair's multipliers, or null (for evaluate_contact and BoundaryPressureProbe).

@@ -146,6 +146,18 @@ std::vector<Eigen::VectorXd> ContactSystem::measure_step_slips(const Eigen::Vect
 
 Eigen::VectorXd ContactSystem::load_vector() const { return op_->restrict(d_, op_->load); }
 
+Eigen::VectorXd ContactSystem::load_vector(const Eigen::VectorXd& x) const {
+  if (d_.follower_loads.empty()) return load_vector();
+  const Eigen::VectorXd u = full(x);
+  Eigen::VectorXd f = op_->load;
+  for (size_t i = 0; i < d_.follower_loads.size(); ++i) {
+    const FollowerLoad& L = d_.follower_loads[i];
+    const WetRange all{0, static_cast<double>(L.edges.size()), false};
+    add_follower_force(d_, L, u, i < wet_ranges_.size() ? wet_ranges_[i] : all, 1.0, f, nullptr);
+  }
+  return op_->restrict(d_, f);
+}
+
 bool ContactSystem::has_friction() const {
   for (const auto& pair : pairs_)
     if (pair.memory || (pair.constraints && pair.constraints->has_friction())) return true;
@@ -226,8 +238,13 @@ double ContactSystem::force_scale(const Eigen::VectorXd& x) const {
   const Eigen::VectorXd u = full(x);
   Eigen::VectorXd g = op_->K * u;
   if (!finite_.empty()) finite_.add(u, g, nullptr, nullptr);
+  // the follower loads over all of their edges
+  Eigen::VectorXd follower = Eigen::VectorXd::Zero(d_.n_dofs);
+  for (const FollowerLoad& L : d_.follower_loads)
+    add_follower_force(d_, L, u, WetRange{0, static_cast<double>(L.edges.size()), false},
+                       loads_factor(x), follower, nullptr);
   return op_->restrict(d_, f).norm() + std::abs(loads_factor(x)) * op_->restrict(d_, op_->load).norm() +
-         op_->restrict(d_, g).norm();
+         op_->restrict(d_, g).norm() + op_->restrict(d_, follower).norm();
 }
 
 void ContactSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve::SparseMatrix* K) {
@@ -363,6 +380,8 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
     return;
   }
   if (states) states->resize(pairs_.size());
+  // per pair, where its points or nodes are in contact (for pressure penetration)
+  std::vector<std::vector<ContactMark>> marks(d_.follower_loads.empty() ? 0 : pairs_.size());
   points_in_contact_ = 0;
   states_.assign(n_z_, 0);
   // Rows of z, filled per exact pair; their u-parts as (row, dof of all dofs, value).
@@ -373,6 +392,14 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
       PairForces f = pair_forces(d_, pair, u, t, frozen ? &(*frozen)[k] : nullptr);
       for (const auto* side : {&f.states, &f.other_states})
         for (const auto& s : *side) points_in_contact_ += s.pressure > 0;
+      if (!marks.empty()) {
+        for (size_t i = 0; i < f.states.size(); ++i)
+          marks[k].push_back({pair.body, pair.edges[pair.points[i].edge], pair.points[i].t, pair.points[i].X,
+                              f.states[i].pressure});
+        for (size_t i = 0; i < f.other_states.size(); ++i)
+          marks[k].push_back({pair.other, pair.other_edges[pair.other_points[i].edge], pair.other_points[i].t,
+                              pair.other_points[i].X, f.other_states[i].pressure});
+      }
       R.segment(d_.bodies[pair.body].dof_offset, f.body.size()) -= f.body;
       if (pair.other >= 0) R.segment(d_.bodies[pair.other].dof_offset, f.other.size()) -= f.other;
       if (states) (*states)[k] = std::move(f.states);
@@ -400,6 +427,10 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
       const double Wj = !c.passive.empty() && c.passive[j] ? c.passive_row_weight : c.weight(j);
       active_nodes += active;
       states_[z_offset_[k] + j] = active;
+      if (!marks.empty()) {
+        const auto& node = c.nodes.nodes[j];
+        marks[k].push_back({pair.body, c.edges[node.edge], node.t, node.X, active ? lambda(j) : 0.0});
+      }
       r(o + j) = active ? c.scale(j) * s.G(j) : Wj * lambda(j);
       if (!T) continue;
       for (const auto& [dof, v] : s.dG[j]) {
@@ -442,6 +473,8 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
       }
     }
   }
+  Eigen::VectorXd follower_force;
+  add_follower_loads(u, loads_factor(x), marks, R, t, target_ && target_scales_loads_ ? &follower_force : nullptr);
   r.head(n_u_) = op_->restrict(d_, R);
   if (!T) return;
   T->reserve(T->size() + t_all.size());
@@ -456,6 +489,7 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
     const int col = size() - 1;
     Eigen::VectorXd column = K_prescribed_;
     if (target_scales_loads_) column -= op_->load;
+    if (follower_force.size()) column -= follower_force;
     for (const auto& e : t_all)
       if (const double up = d_.prescribed(e.col()); up != 0.0) column(e.row()) += e.value() * up;
     const Eigen::VectorXd cu = op_->restrict(d_, column);
@@ -464,6 +498,27 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
     for (const auto& e : z_rows)
       if (const double up = d_.prescribed(e.col()); up != 0.0) T->emplace_back(e.row(), col, e.value() * up);
   }
+}
+
+void ContactSystem::add_follower_loads(const Eigen::VectorXd& u, double loads_factor,
+                                       const std::vector<std::vector<ContactMark>>& marks,
+                                       Eigen::VectorXd& R, std::vector<Eigen::Triplet<double>>* t,
+                                       Eigen::VectorXd* f) const {
+  wet_ranges_.resize(d_.follower_loads.size());
+  if (f) *f = Eigen::VectorXd::Zero(d_.n_dofs);
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(d_.n_dofs);
+  std::vector<Eigen::Triplet<double>> stiffness;
+  for (size_t i = 0; i < d_.follower_loads.size(); ++i) {
+    const FollowerLoad& L = d_.follower_loads[i];
+    static const std::vector<ContactMark> none;
+    wet_ranges_[i] = wetted_range(L, L.penetration ? marks[L.penetration->pair] : none, loads_factor);
+    add_follower_force(d_, L, u, wet_ranges_[i], 1.0, force, t ? &stiffness : nullptr);
+  }
+  // R = ... − λ f(u): its tangent −λ ∂f/∂u
+  R -= loads_factor * force;
+  if (f) *f = force;
+  if (t)
+    for (const auto& e : stiffness) t->emplace_back(e.row(), e.col(), -loads_factor * e.value());
 }
 
 void ContactSystem::tangential_rows(const PairConstraints& c, const ConstraintState& s,

@@ -92,8 +92,12 @@ public:
   /// The same, the slips of every committed step added up, signed along the node's tangent (the
   /// path's slip: contact.csv `slip`).
   const std::vector<Eigen::VectorXd>& total_slips() const { return total_slips_; }
-  /// The load vector on the unknowns (what a unit load factor applies).
+  /// The load vector on the unknowns (what a unit load factor applies), the follower loads
+  /// left out.
   Eigen::VectorXd load_vector() const;
+  /// The same at the state x with the follower loads on the deformed boundary, over the parts
+  /// of their edges the last evaluation wetted: ∂(λ f)/∂λ at x.
+  Eigen::VectorXd load_vector(const Eigen::VectorXd& x) const;
   const Vec2& displacement_factors() const { return factors_; }
   bool has_friction() const;
   /// Whether the displacement block of a tangent may be unsymmetric: friction, or a pair
@@ -146,8 +150,20 @@ public:
   /// of μ times its normal one, else empty: why a load may not be carried further.
   std::string capacity_used() const;
   Eigen::VectorXd solve(const solve::LinearSolver& sparse, const Eigen::VectorXd& b) const override;
+  /// Per follower load of the discretisation (Discretization::follower_loads), the part of its
+  /// edges it acted on at the last evaluation: with penetration, up to the contact of its pair
+  /// then (the active multiplier nodes; a penalty pair's points with a pressure).
+  const std::vector<WetRange>& wet_ranges() const { return wet_ranges_; }
 
 private:
+  /// Adds the follower loads' forces at u, times −the loads' factor, into R and their tangent
+  /// into t; their unscaled sum into f (for ∂r/∂α) if not null. `marks` per pair: where its
+  /// points or nodes are in contact.
+  void add_follower_loads(const Eigen::VectorXd& u, double loads_factor,
+                          const std::vector<std::vector<ContactMark>>& marks, Eigen::VectorXd& R,
+                          std::vector<Eigen::Triplet<double>>* t, Eigen::VectorXd* f) const;
+  mutable std::vector<WetRange> wet_ranges_;
+
   using PairStates = std::vector<std::vector<contact::PointState>>;
   /// A tangential multiplier row's state (states_): held is a sticking node whose slip no
   /// unknown moves (tangential_rows).
@@ -247,9 +263,9 @@ public:
     return s_.solve(sparse, b);
   }
   void set_load_factor(double lambda) override { s_.set_factors(s_.displacement_factors(), lambda); }
-  Eigen::VectorXd load_derivative(const Eigen::VectorXd&) override {
+  Eigen::VectorXd load_derivative(const Eigen::VectorXd& x) override {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(s_.size());
-    f.head(s_.n_displacements()) = -s_.load_vector();
+    f.head(s_.n_displacements()) = -s_.load_vector(x);
     return f;
   }
   int path_size() const override { return s_.n_displacements(); }

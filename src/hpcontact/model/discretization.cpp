@@ -11,6 +11,7 @@
 
 #include "hpcontact/basis/legendre.hpp"
 #include "hpcontact/basis/quadrature.hpp"
+#include "hpcontact/contact/contact_boundary.hpp"
 #include "hpcontact/core/error.hpp"
 #include "hpcontact/fem/edge_load.hpp"
 #include "hpcontact/fem/elasticity.hpp"
@@ -301,12 +302,55 @@ double load_shape(LoadShape shape, double t) {
 /// Integrates a distributed load over the loaded part of its edges. The integration on an edge
 /// is split where the load's interval starts or ends, so a load ending inside an element edge is
 /// integrated exactly (to quadrature accuracy) on both sides.
-void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d) {
+/// A follower load's edges in the order of their chain (its start at the end edge the sets list
+/// first), each with its break points; with penetration they must be one open chain.
+template <class Pieces>
+FollowerLoad follower_load(const EdgeLoadSpec& ls, const Body& body, int body_index, const Pieces& pieces) {
+  FollowerLoad L;
+  L.body = body_index;
+  L.where = ls.where.str();
+  L.dead = !body.finite_strain();
+  if (ls.penetration) L.penetration = Penetration{ls.penetration->contact, ls.penetration->from_end};
+  std::vector<int> edges;
+  for (const auto& name : ls.edge_sets)
+    for (int e : edge_set(body, name, ls.where)) edges.push_back(e);
+  auto chain = contact::chain_edges(body.mesh, edges);
+  const bool one_open_chain =
+      !chain.empty() && !chain.back().closes &&
+      std::all_of(chain.begin() + 1, chain.end(), [](const contact::ChainEdge& c) { return c.continues; });
+  HPC_REQUIRE(!ls.penetration || one_open_chain, InputError, ls.where.str(),
+              ".penetration: the loaded edges must form one open chain (a path with two ends), so "
+              "that the pressure runs from one end up to the contact (got ",
+              chain.empty() ? std::string("no edges")
+                            : chain.back().closes ? std::string("a closed loop") : std::string("several chains"),
+              ")");
+  const auto listed = [&](int e) { return std::find(edges.begin(), edges.end(), e) - edges.begin(); };
+  if (chain.size() > 1 && listed(chain.back().edge) < listed(chain.front().edge)) {
+    std::reverse(chain.begin(), chain.end());
+    for (auto& c : chain) {
+      std::swap(c.start, c.end);
+      c.against = !c.against;
+    }
+  }
+  for (const auto& c : chain) {
+    const auto& edge = body.mesh.edge(c.edge);
+    FollowerEdge fe;
+    fe.q = edge.quads[0];
+    fe.le = edge.local_edge[0];
+    fe.mesh_edge = c.edge;
+    fe.against = c.against;
+    fe.breaks = pieces(fe.q, fe.le);
+    L.edges.push_back(std::move(fe));
+  }
+  return L;
+}
+
+void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, int body_index, Discretization& d) {
   const std::string where = ls.where.str();
   const int axis = ls.along == 'y' ? 1 : 0;
-  std::unique_ptr<Expression> expr;
+  std::shared_ptr<Expression> expr;
   if (ls.shape == LoadShape::expression)
-    expr = std::make_unique<Expression>(ls.expression, std::vector<std::string>{"x", "y"},
+    expr = std::make_shared<Expression>(ls.expression, std::vector<std::string>{"x", "y"},
                                         where + ".expression");
   // The loaded edges, each as (element, local edge).
   std::vector<std::pair<int, int>> sides;
@@ -337,13 +381,14 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
   HPC_REQUIRE(!shaped || std::abs(b - a) > 0, InputError, where,
               ": the loaded edges have no extent along ", ls.along,
               "; give 'along' the other coordinate or an 'interval'");
-  auto profile = [&](const Vec2& x) -> double {
+  // by value: a follower load keeps it
+  auto profile = [a, b, axis, expr, interval = ls.interval, shape = ls.shape](const Vec2& x) -> double {
     const double c = x(axis);
     const double lo = std::min(a, b), hi = std::max(a, b);
-    if (ls.interval && (c < lo - 1e-12 * (1 + std::abs(lo)) || c > hi + 1e-12 * (1 + std::abs(hi))))
+    if (interval && (c < lo - 1e-12 * (1 + std::abs(lo)) || c > hi + 1e-12 * (1 + std::abs(hi))))
       return 0.0;
     const double t = b != a ? std::clamp((c - a) / (b - a), 0.0, 1.0) : 0.0;
-    return expr ? (*expr)(x.x(), x.y()) : load_shape(ls.shape, t);
+    return expr ? (*expr)(x.x(), x.y()) : load_shape(shape, t);
   };
   // Break points of each edge: where the coordinate crosses a or b, and the joint t = 1/3 of
   // the two-sided B-spline (its second derivative jumps there).
@@ -394,6 +439,13 @@ void apply_edge_load(const EdgeLoadSpec& ls, const Body& body, Discretization& d
     HPC_REQUIRE(integral * magnitude > 0, InputError, where,
                 ": the load is zero everywhere, so it cannot be scaled to the resultant");
     scale = *ls.resultant / (integral * magnitude);
+  }
+  if (ls.follower && (body.finite_strain() || ls.penetration)) {
+    d.follower_loads.push_back(follower_load(ls, body, body_index, pieces));
+    d.follower_loads.back().pressure = [profile, scale, p = ls.value[0]](const Vec2& X) {
+      return scale * profile(X) * p;
+    };
+    return;
   }
   const Vec2 value(ls.value[0], ls.value[1]);
   fem::TractionFn traction = [&](const Vec2& x, const Vec2& n) -> Vec2 {
@@ -499,7 +551,7 @@ Discretization discretize(const ProblemSpec& spec) {
     const Body& body = d.bodies[b];
     d.bodies[b].constraint_dofs = apply_constraints(bs, body, d);
     if (const auto w = axis_left_free(spec, static_cast<int>(b), body, d)) d.warnings.push_back(*w);
-    for (const auto& ls : bs.edge_loads) apply_edge_load(ls, body, d);
+    for (const auto& ls : bs.edge_loads) apply_edge_load(ls, body, static_cast<int>(b), d);
     for (const auto& nf : bs.nodal_forces) {
       const int v = body.mesh.node_index(nf.node);
       HPC_REQUIRE(v >= 0, InputError, nf.where.str(), ": node ", nf.node, " does not exist");

@@ -12,6 +12,7 @@
 #include "hpcontact/material/hyperelastic.hpp"
 #include "hpcontact/mesh/element_map.hpp"
 #include "hpcontact/mesh/mesh.hpp"
+#include "hpcontact/model/follower_load.hpp"
 #include "hpcontact/model/problem_spec.hpp"
 
 namespace hpcontact::model {
@@ -105,6 +106,9 @@ struct Discretization {
   std::vector<int> free_index;  ///< per dof: its index among the free ones, or -1 if prescribed
   Eigen::VectorXd prescribed;   ///< per dof: its prescribed value (0 where free)
   Eigen::VectorXd load;         ///< external load per dof (edge loads, nodal forces, body force)
+  /// The follower pressures of finite-strain bodies, which act on the deformed boundary and so
+  /// are not in `load` (a linear body's follower pressure is a dead one, in `load`).
+  std::vector<FollowerLoad> follower_loads;
   /// What the input allows but a user should know (each names the file, the place and the
   /// cause): `check` and `run` print them, summary.json lists them.
   std::vector<std::string> warnings;

@@ -96,6 +96,15 @@ struct EdgeLoadSpec {
   std::string expression;  ///< shape == expression: formula in x, y multiplying value
   char along = 'x';        ///< coordinate along which t runs: 'x' or 'y'
   std::optional<std::array<double, 2>> interval;  ///< [start, end] in that coordinate; default: whole edges
+  /// A pressure on the deformed boundary (finite strain; the dead pressure in the linear theory).
+  bool follower = false;
+  /// Pressure penetration: the follower pressure stops at the first point in contact of a pair.
+  struct Penetration {
+    int contact = 0;        ///< the pair's index in ProblemSpec::contact
+    bool from_end = false;  ///< pressurised from the end of the edges' chain (else its start)
+    SourceRef where;
+  };
+  std::optional<Penetration> penetration;
   SourceRef where;
 };
 

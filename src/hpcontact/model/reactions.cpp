@@ -11,6 +11,7 @@
 #include "hpcontact/model/contact_results.hpp"
 #include "hpcontact/model/edge_interpolant.hpp"
 #include "hpcontact/model/finite_strain_body.hpp"
+#include "hpcontact/model/follower_forces.hpp"
 #include "hpcontact/model/linear_solve.hpp"
 #include "hpcontact/model/parallel.hpp"
 
@@ -118,6 +119,8 @@ Eigen::VectorXd support_forces(const Discretization& d, const std::vector<Contac
   Eigen::VectorXd f_c = Eigen::VectorXd::Zero(d.n_dofs);
   for (size_t k = 0; k < pairs.size(); ++k)
     f_c += pair_contact_forces(d, pairs[k], u, k < multipliers.size() ? multipliers[k] : Eigen::VectorXd());
+  // the follower loads are external forces the residual subtracts, as the contact's
+  f_c += follower_forces(d, pairs, u, multipliers, loads_factor);
   return support_residual(d, u, loads_factor, f_c);
 }
 
@@ -135,7 +138,8 @@ Reactions reactions(const Discretization& d, const std::vector<ContactPair>& pai
     f_c[k] = pair_contact_forces(d, pairs[k], u, multipliers_of(k));
     f_c_all += f_c[k];
   }
-  const Eigen::VectorXd R = support_residual(d, u, loads_factor, f_c_all);
+  const Eigen::VectorXd follower = follower_forces(d, pairs, u, multipliers, loads_factor);
+  const Eigen::VectorXd R = support_residual(d, u, loads_factor, f_c_all + follower);
   const int nb = static_cast<int>(d.bodies.size());
   std::vector<Eigen::VectorXd> weights(nb);
   std::vector<std::vector<Vec2>> positions(nb);
@@ -159,7 +163,8 @@ Reactions reactions(const Discretization& d, const std::vector<ContactPair>& pai
       r.balance[b].reactions += fm.force;
       involve(b, fm.force);
     }
-    const Eigen::VectorXd load = loads_factor * d.load.segment(body.dof_offset, n);
+    const Eigen::VectorXd load =
+        loads_factor * d.load.segment(body.dof_offset, n) + follower.segment(body.dof_offset, n);
     r.balance[b].loads = force_and_moment(body, weights[b], positions[b], load, ub).force;
     involve(b, r.balance[b].loads);
   }

@@ -1,0 +1,26 @@
+// The follower loads' forces at a converged state, their wetted parts judged from the contact
+// pairs' multipliers (exact) or pressures (penalty): for reactions and results.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "hpcontact/model/contact_pairs.hpp"
+#include "hpcontact/model/follower_load.hpp"
+
+namespace hpcontact::model {
+
+/// Where pair's multiplier nodes (exact: their multipliers, those of a converged state, a
+/// negative one taken as 0) or points (penalty: their pressures) lie, on both its bodies.
+std::vector<ContactMark> contact_marks(const Discretization& d, const ContactPair& pair,
+                                       const Eigen::VectorXd& u, const Eigen::VectorXd& multipliers);
+
+/// The follower loads' forces at the state u (all dofs) times loads_factor (all dofs), each
+/// over its wetted range (into `ranges`, per follower load, if not null). `multipliers` per pair
+/// (empty for the penalty).
+Eigen::VectorXd follower_forces(const Discretization& d, const std::vector<ContactPair>& pairs,
+                                const Eigen::VectorXd& u, const std::vector<Eigen::VectorXd>& multipliers,
+                                double loads_factor, std::vector<WetRange>* ranges = nullptr);
+
+}  // namespace hpcontact::model
