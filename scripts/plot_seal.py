@@ -107,7 +107,8 @@ def draw(rows, wall, plate, units, out):
 
 def main():
     ap = script_parser(__doc__)
-    ap.add_argument("study_dir")
+    ap.add_argument("study_dir", metavar="STUDY_DIR",
+                    help="the output folder of `hpcontact study` (its runs/NN-label/ folders)")
     ap.add_argument("--plate", type=int, default=1, help="the plate's contact pair (default 1)")
     ap.add_argument("--groove", type=int, default=0, help="the groove's contact pair (default 0)")
     ap.add_argument("--units", help="LENGTH,FORCE written into the labels, e.g. mm,N")

@@ -7,6 +7,8 @@ extrusion gap."""
 import json
 import math
 import os
+import subprocess
+import sys
 
 import pytest
 
@@ -89,11 +91,20 @@ def test_the_plate_zone_moves_towards_the_gap_and_stays_inside_the_wall(hpcontac
     wall's x = 1.77 (no extrusion up to 4.5 N/mm²: README.md), and the seal holds at each."""
     ends = []
     for i, p in enumerate((1.0, 2.5, 4.5)):
-        s = run_at(hpcontact, root, tmp_path / f"p{i}", p)
+        s = run_at(hpcontact, root, tmp_path / "runs" / f"0{i + 1}-p", p)
         assert not any(pen["leaks"] for pen in s["penetration"])
         assert all(pair["pressure_max"] > p for pair in s["contact_pairs"])
         ends.append(max(x for x, _ in s["contact_pairs"][1]["gamma_star_deformed"]))
     assert ends[0] < ends[1] < ends[2] < WALL_X
+    # scripts/plot_seal.py reads the same figures from the run folders (a study's layout)
+    r = subprocess.run([sys.executable, os.path.join(root, "scripts", "plot_seal.py"), tmp_path,
+                        "--units", "mm,N"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    table = [line.split(",") for line in r.stdout.splitlines()[1:4]]
+    assert [float(row[0]) for row in table] == [1.0, 2.5, 4.5]
+    assert [float(row[3]) for row in table] == pytest.approx(ends, abs=1e-4)
+    assert "extrusion onset: not reached" in r.stdout
+    assert os.path.getsize(tmp_path / "seal.png") > 0
 
 
 def test_the_squeeze_curve_stiffens(hpcontact, root, tmp_path):
@@ -112,3 +123,13 @@ def test_the_squeeze_curve_stiffens(hpcontact, root, tmp_path):
                 forces.append(float(row["normal_force"]))
     steps = [b - a for a, b in zip(forces, forces[1:])]
     assert len(steps) >= 4 and all(b > a > 0 for a, b in zip(steps, steps[1:]))
+
+
+def test_the_onset_is_interpolated_between_the_runs_that_bracket_the_wall(root):
+    """plot_seal.onset: the zone end 1.70 at 4 and 1.90 at 5 N/mm² reaches 1.77 at 4.35."""
+    sys.path.insert(0, os.path.join(root, "scripts"))
+    from plot_seal import onset
+    rows = [{"p_s": 3.0, "plate_zone_end": 1.6}, {"p_s": 4.0, "plate_zone_end": 1.7},
+            {"p_s": 5.0, "plate_zone_end": 1.9}]
+    assert onset(rows, WALL_X) == pytest.approx(4.35, abs=1e-12)
+    assert onset(rows[:2], WALL_X) is None
