@@ -38,6 +38,7 @@
 #include "hpcontact/driver/run.hpp"
 #include "hpcontact/driver/slurm_study.hpp"
 #include "hpcontact/driver/study.hpp"
+#include "hpcontact/driver/study_table.hpp"
 #include "hpcontact/io/input_schema.hpp"
 #include "hpcontact/io/problem_reader.hpp"
 #include "hpcontact/io/study_reader.hpp"
@@ -386,6 +387,10 @@ int study_command(const std::string& file, std::string out_dir, int jobs, bool q
     std::raise(outcome.signal);
     return kFailed;
   }
+  for (const std::string& column : driver::absent_columns(study, outcome.rows))
+    std::cerr << "hpcontact: warning: " << printable(file) << ": columns: '" << printable(column)
+              << "' is in no run's summary.json, so its study.csv column is empty (a dotted key; a "
+                 "list's entries by their index: contact_pairs.1.pressure_max)\n";
   return study_result(outcome.rows, out_dir, quiet);
 }
 

@@ -28,7 +28,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 270 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
+--list prints them. A run of all 272 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp (but for its adjoint, its load-step cuts and the predictor) and contact/penalty.cpp,
@@ -1531,6 +1531,16 @@ MUTATIONS = [
              ["FollowerPressure.SealLeaksAboveThePeakContactPressure",
               "FollowerPressure.RingPenetrationMovesTowardsTheSealedSide",
               "cli:tests/cli/test_pressure_penetration.py::test_the_pressurised_ring_reports_where_the_pressure_stops"]),
+    Mutation("study-column-list-index-ignored", "driver", S + "driver/study_table.cpp",
+             "      node = &(*node)[std::stoul(key)];",
+             "      node = &(*node)[0];",
+             "a study column's list index is ignored: every index reads the list's first entry",
+             ["cli:tests/cli/test_study_command.py::test_columns_reach_into_lists_and_a_column_no_run_has_is_named"]),
+    Mutation("study-absent-column-unsaid", "driver", S + "driver/study_table.cpp",
+             "    if (!somewhere) absent.push_back(c);",
+             "    if (false) absent.push_back(c);",
+             "a study column no run has stays an empty column without a word",
+             ["cli:tests/cli/test_study_command.py::test_columns_reach_into_lists_and_a_column_no_run_has_is_named"]),
 ]
 
 

@@ -6,6 +6,8 @@ import os
 import subprocess
 import sys
 
+import pytest
+
 from conftest import scaled_timeout
 
 
@@ -172,3 +174,27 @@ def test_collect_of_a_forged_submission_record_names_the_key(hpcontact, tmp_path
         assert "internal error" not in r.stderr and said in r.stderr, r.stderr
         assert "submission.json: not a submission record" in r.stderr
         assert not (out / "study.csv").exists()
+
+
+def test_columns_reach_into_lists_and_a_column_no_run_has_is_named(hpcontact, root, tmp_path):
+    """A study's `columns` key into a list by its entry's index (contact_pairs.2.normal_force, a
+    groove wall's force: before, an empty column and no word); a key no run's summary.json has is named in a warning."""
+    study = tmp_path / "s.yaml"
+    case = os.path.join(root, "examples", "o-ring", "o-ring-groove.yaml")
+    study.write_text(f"study: columns\ncase: '{case}'\nsweep:\n  discretization.degree: [3, 4]\n"
+                     "columns: [contact_pairs.2.normal_force, contact_pairs.5.normal_force, contact.no_such_key]\n")
+    out = tmp_path / "out"
+    r = hpcontact("study", study, "--out", out, "-q", "-j", "2")
+    assert r.returncode == 0, r.stdout + r.stderr
+    rows = read_rows(out)
+    assert len(rows) == 2
+    for row in rows:
+        summary = json.load(open(os.path.join(out, row["run_dir"], "summary.json")))
+        assert float(row["contact_pairs.2.normal_force"]) == pytest.approx(
+            summary["contact_pairs"][2]["normal_force"], rel=1e-11)
+        assert summary["contact_pairs"][2]["normal_force"] != pytest.approx(summary["contact_pairs"][1]["normal_force"], rel=0.1)
+        assert row["contact_pairs.5.normal_force"] == "" and row["contact.no_such_key"] == ""
+    for column in ("contact_pairs.5.normal_force", "contact.no_such_key"):
+        assert f"s.yaml: columns: '{column}' is in no run's summary.json, so its study.csv column is empty" \
+            in r.stderr, r.stderr
+    assert "contact_pairs.2.normal_force' is in no" not in r.stderr

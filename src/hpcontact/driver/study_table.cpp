@@ -18,21 +18,28 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The value at a dotted path of a JSON object ("contact.half_width"), or null.
+/// The value at a dotted path of a JSON object ("contact.half_width"; a list's entry by its
+/// index: "contact_pairs.1.pressure_max"), or null.
 const nlohmann::json* at_path(const nlohmann::json& j, const std::string& path) {
   const nlohmann::json* node = &j;
   std::size_t start = 0;
   while (start <= path.size()) {
     const std::size_t dot = path.find('.', start);
     const std::string key = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (!node->is_object() || !node->contains(key)) return nullptr;
-    node = &(*node)[key];
+    if (node->is_array()) {
+      const bool index = !key.empty() && key.size() < 10 &&
+                         key.find_first_not_of("0123456789") == std::string::npos;
+      if (!index || std::stoul(key) >= node->size()) return nullptr;
+      node = &(*node)[std::stoul(key)];
+    } else {
+      if (!node->is_object() || !node->contains(key)) return nullptr;
+      node = &(*node)[key];
+    }
     if (dot == std::string::npos) break;
     start = dot + 1;
   }
   return node;
 }
-
 
 std::string csv_field(std::string s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
@@ -106,6 +113,21 @@ std::string study_cell(const StudyRowResult& row, const std::string& column) {
     return "";
   }
   return row.summary.is_object() ? json_cell(at_path(row.summary, column)) : "";
+}
+
+std::vector<std::string> absent_columns(const io::StudySpec& study,
+                                        const std::vector<StudyRowResult>& rows) {
+  std::vector<std::string> absent;
+  for (const auto& c : study.columns) {
+    if (c == "label" || c == "case" || c == "converged" || c == "message" || c == "run_dir" ||
+        c.rfind("seed_", 0) == 0)
+      continue;
+    const bool somewhere = std::any_of(rows.begin(), rows.end(), [&](const StudyRowResult& r) {
+      return r.summary.is_object() && at_path(r.summary, c) != nullptr;
+    });
+    if (!somewhere) absent.push_back(c);
+  }
+  return absent;
 }
 
 std::vector<std::string> study_columns(const io::StudySpec& study,

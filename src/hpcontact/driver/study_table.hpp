@@ -44,6 +44,10 @@ std::string study_cell(const StudyRowResult& row, const std::string& column);
 /// Writes DIR/study.csv (a line per row, study_columns()) and DIR/study.json (every row with its
 /// summary) and DIR/report.html (the table and a log-log plot of its error measures against DOF);
 /// docs/study.md describes them. IoError if a file cannot be written.
+/// The study's `columns` that no run's summary.json has (their study.csv column stays empty):
+/// a key misspelt, or one the runs do not write.
+std::vector<std::string> absent_columns(const io::StudySpec& study, const std::vector<StudyRowResult>& rows);
+
 void write_study_tables(const io::StudySpec& study, const std::vector<StudyRowResult>& rows,
                         const std::string& dir);
 
