@@ -133,3 +133,26 @@ def test_the_onset_is_interpolated_between_the_runs_that_bracket_the_wall(root):
             {"p_s": 5.0, "plate_zone_end": 1.9}]
     assert onset(rows, WALL_X) == pytest.approx(4.35, abs=1e-12)
     assert onset(rows[:2], WALL_X) is None
+
+
+def test_the_fronts_are_followed_and_a_front_that_does_not_settle_is_said(hpcontact, root, tmp_path):
+    """Ramped to 8 N/mm² in steps of 0.25: with the fronts moved at every Newton iterate the
+    solve jumped at 4.75 N/mm² to the state wetted all round (an incompressible ring does not
+    feel it: the plate back at its squeeze force 3.42 N/mm, its peak 2.33 below p_s, the step
+    before at 6.88 above it) and reported a leak, or failed there. The fronts are now held through
+    each Newton solve and moved between solves: the sealed state is followed to 4.92 N/mm²
+    (measured; 4.94 with steps of 0.125), where the groove side's front reaches the end of its
+    chain and back (its contact pressure there about the fluid's); the run stops saying so, its
+    last converged state sealed."""
+    out = tmp_path / "ramp"
+    r = hpcontact("run", example(root), "--out", out, "-q", "--set", "bodies[0].loads[0].pressure=8",
+                  "--set", "bodies[0].loads[1].pressure=8", "--set", "solver.stages[1].steps=32",
+                  timeout=120)
+    assert r.returncode == 1, r.stderr
+    assert "the fronts of the penetrating pressures did not settle in 12 solves" in r.stderr, r.stderr
+    assert "bodies[0].loads[1]: wetted length" in r.stderr and "(leaking)" in r.stderr, r.stderr
+    good = json.load(open(out / "last-good" / "summary.json"))
+    p_s = 8 * good["loads_factor"]
+    assert 4.8 < p_s < 5.0, p_s
+    assert not any(p["leaks"] for p in good["penetration"])
+    assert good["contact_pairs"][1]["pressure_max"] > p_s

@@ -500,6 +500,11 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
   }
 }
 
+bool ContactSystem::has_penetration() const {
+  return std::any_of(d_.follower_loads.begin(), d_.follower_loads.end(),
+                     [](const FollowerLoad& L) { return L.penetration.has_value(); });
+}
+
 void ContactSystem::add_follower_loads(const Eigen::VectorXd& u, double loads_factor,
                                        const std::vector<std::vector<ContactMark>>& marks,
                                        Eigen::VectorXd& R, std::vector<Eigen::Triplet<double>>* t,
@@ -511,8 +516,13 @@ void ContactSystem::add_follower_loads(const Eigen::VectorXd& u, double loads_fa
   for (size_t i = 0; i < d_.follower_loads.size(); ++i) {
     const FollowerLoad& L = d_.follower_loads[i];
     static const std::vector<ContactMark> none;
-    wet_ranges_[i] = wetted_range(L, L.penetration ? marks[L.penetration->pair] : none, loads_factor);
+    wet_ranges_[i] = frozen_wet_ranges_ ? (*frozen_wet_ranges_)[i]
+                                        : wetted_range(L, L.penetration ? marks[L.penetration->pair] : none, loads_factor);
     add_follower_force(d_, L, u, wet_ranges_[i], 1.0, force, t ? &stiffness : nullptr);
+  }
+  if (freeze_next_) {
+    frozen_wet_ranges_ = wet_ranges_;
+    freeze_next_ = false;
   }
   // R = ... − λ f(u): its tangent −λ ∂f/∂u
   R -= loads_factor * force;

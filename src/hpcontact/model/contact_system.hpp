@@ -154,6 +154,17 @@ public:
   /// edges it acted on at the last evaluation: with penetration, up to the contact of its pair
   /// then (the active multiplier nodes; a penalty pair's points with a pressure).
   const std::vector<WetRange>& wet_ranges() const { return wet_ranges_; }
+  /// Whether a follower load penetrates up to a pair's contact (its range moves with the state).
+  bool has_penetration() const;
+  /// Holds the follower loads' ranges at `ranges` in every evaluation until thaw_wet_ranges():
+  /// Newton's iterations then solve for one front of each penetrating pressure.
+  void freeze_wet_ranges(std::vector<WetRange> ranges) const { frozen_wet_ranges_ = std::move(ranges); }
+  void thaw_wet_ranges() const { frozen_wet_ranges_.reset(); }
+  /// Holds them at what the next evaluation computes (the state Newton starts from).
+  void freeze_wet_ranges_at_next_evaluation() const {
+    frozen_wet_ranges_.reset();
+    freeze_next_ = true;
+  }
 
 private:
   /// Adds the follower loads' forces at u, times −the loads' factor, into R and their tangent
@@ -163,6 +174,8 @@ private:
                           const std::vector<std::vector<ContactMark>>& marks, Eigen::VectorXd& R,
                           std::vector<Eigen::Triplet<double>>* t, Eigen::VectorXd* f) const;
   mutable std::vector<WetRange> wet_ranges_;
+  mutable std::optional<std::vector<WetRange>> frozen_wet_ranges_;
+  mutable bool freeze_next_ = false;
 
   using PairStates = std::vector<std::vector<contact::PointState>>;
   /// A tangential multiplier row's state (states_): held is a sticking node whose slip no
