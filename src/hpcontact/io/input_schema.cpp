@@ -248,8 +248,10 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "bodies[].loads[].penetration", .type = T::section,
        .doc = "Pressure penetration (a seal's system pressure): the follower pressure acts only "
               "from one end of its edges (one chain) up to the first point in contact of a "
-              "contact pair, nothing beyond (the sealed side), updated with the contact zone at "
-              "every Newton iteration. Only with follower: true; the pair's edges on this body "
+              "contact pair pressing harder than the pressure, nothing beyond (the sealed side); "
+              "the stop is held through each Newton solve and moved between solves of a load step "
+              "to where the converged state puts it, until it stays (docs/theory.md §12). Only "
+              "with follower: true; the pair's edges on this body "
               "must overlap the load's. summary.json reports where the pressure stops and "
               "whether it reached the far end (the seal leaks: a warning)."},
       {.path = "bodies[].loads[].penetration.contact", .type = T::integer, .required = true,
