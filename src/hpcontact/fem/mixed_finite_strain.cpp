@@ -18,7 +18,16 @@
 
 namespace hpcontact::fem {
 
-int pressure_degree(const ElementSpace& space) { return std::max(space.max_degree() - 1, 0); }
+int pressure_degree(const ElementSpace& space) {
+  if (space.is_lagrange) return std::max(space.max_degree() - 1, 0);
+  // One below the element's lowest degree, its edges' included: an element of degree 6 whose
+  // edges a degree-2 neighbour holds at 2 (the minimum rule of hp's graded degrees) cannot
+  // control a P5 pressure along them (the tangent turned singular, Newton's first step 1e15).
+  const auto& h = space.hierarchic;
+  int lowest = std::min(h.p_xi, h.p_eta);
+  for (int e : h.edge_degree) lowest = std::min(lowest, e);
+  return std::max(lowest - 1, 0);
+}
 
 int n_pressure_modes(int degree) { return (degree + 1) * (degree + 2) / 2; }
 

@@ -154,8 +154,8 @@ Body make_body(const ProblemSpec& spec, int b) {
     body.maps.push_back(opt.lagrange ? mesh::ElementMap::isoparametric(body.mesh, q, opt.lagrange_type)
                                      : mesh::ElementMap::blending(body.mesh, q));
     body.n_gauss.push_back(body.dofs.element(q).max_degree() + ds.quadrature_extra);
-    HPC_REQUIRE(!body.mixed || body.dofs.element(q).max_degree() >= 2, InputError, bs.material.where.str(),
-                ".formulation: mixed needs degree 2 or more (element ", body.mesh.quad_id(q),
+    HPC_REQUIRE(!body.mixed || fem::pressure_degree(body.dofs.element(q)) >= 1, InputError, bs.material.where.str(),
+                ".formulation: mixed needs degree 2 or more, on its edges too (element ", body.mesh.quad_id(q),
                 " has 1: its pressure would be one constant, Q1-P0, which locks or oscillates)");
     mesh::check_jacobian(body.maps[q], body.mesh, q, body.n_gauss[q]);
   }
