@@ -166,7 +166,8 @@ const std::vector<KeySpec>& input_schema() {
       {.path = "bodies[].material.formulation", .type = T::choice,
        .doc = "A rubber law's element. `displacement`: W of the displacement alone (locks as "
               "K / mu grows). `mixed`: displacement of degree p and a pressure discontinuous "
-              "between elements, of total degree p - 1 (P_{p-1}), in Pi = int W_iso + p (J - 1) "
+              "between elements, of total degree p - 1 (P_{p-1}; p the element's lowest degree, "
+              "its edges' included, where hp grades the degrees), in Pi = int W_iso + p (J - 1) "
               "- p^2 / (2K) dV: no locking at any K, incompressible allowed; its pressure is "
               "the VTU field pressure_mixed (positive in tension) and enters the Cauchy stress "
               "reported. Absent: mixed when incompressible, else displacement (the answers of "
