@@ -38,7 +38,6 @@
 #include "hpcontact/driver/run.hpp"
 #include "hpcontact/driver/slurm_study.hpp"
 #include "hpcontact/driver/study.hpp"
-#include "hpcontact/driver/study_table.hpp"
 #include "hpcontact/io/input_schema.hpp"
 #include "hpcontact/io/problem_reader.hpp"
 #include "hpcontact/io/study_reader.hpp"
@@ -361,6 +360,14 @@ int study_result(const std::vector<driver::StudyRowResult>& rows, const std::str
   return converged == static_cast<long>(rows.size()) ? 0 : kFailed;
 }
 
+/// A warning per column of the study that no run's summary.json has (its study.csv column empty).
+void warn_absent_columns(const std::string& file, const std::vector<std::string>& columns) {
+  for (const std::string& column : columns)
+    std::cerr << "hpcontact: warning: " << printable(file) << ": columns: '" << printable(column)
+              << "' is in no run's summary.json, so its study.csv column is empty (a dotted key; a "
+                 "list's entries by their index: contact_pairs.1.pressure_max)\n";
+}
+
 int study_command(const std::string& file, std::string out_dir, int jobs, bool quiet,
                   const char* argv0) {
   out_dir = output_folder(out_dir, file);
@@ -387,10 +394,7 @@ int study_command(const std::string& file, std::string out_dir, int jobs, bool q
     std::raise(outcome.signal);
     return kFailed;
   }
-  for (const std::string& column : driver::absent_columns(study, outcome.rows))
-    std::cerr << "hpcontact: warning: " << printable(file) << ": columns: '" << printable(column)
-              << "' is in no run's summary.json, so its study.csv column is empty (a dotted key; a "
-                 "list's entries by their index: contact_pairs.1.pressure_max)\n";
+  warn_absent_columns(file, outcome.absent_columns);
   return study_result(outcome.rows, out_dir, quiet);
 }
 
@@ -407,6 +411,7 @@ int collect_command(driver::SlurmStudyOptions& options, bool wait, bool quiet) {
     driver::follow_slurm_study(options);
   }
   const auto outcome = driver::collect_slurm_study(options);
+  warn_absent_columns(out_dir, outcome.absent_columns);
   if (!wait && !quiet)  // followed rows were printed as they ended
     for (const auto& row : outcome.rows)
       if (!row.converged())

@@ -419,6 +419,7 @@ StudyOutcome collect_slurm_study(const SlurmStudyOptions& options) {
                             io::read_bounded_file(out + "/" + file, "submission file", kMaxLogBytes, false));
   }
   write_study_tables(study, outcome.rows, stage);
+  outcome.absent_columns = absent_columns(study, outcome.rows);
   options.folder->commit();
   return outcome;
 }

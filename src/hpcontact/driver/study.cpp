@@ -239,6 +239,7 @@ StudyOutcome run_study(const io::StudySpec& study, const StudyOptions& options) 
     return outcome;
   }
   write_study_tables(study, rows, stage.string());
+  outcome.absent_columns = absent_columns(study, rows);
   folder->commit();
   HPC_REQUIRE(failure.empty(), IoError, study.file, ": ", failure);
   return outcome;

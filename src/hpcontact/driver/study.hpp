@@ -37,6 +37,8 @@ struct StudyOutcome {
   int signal = 0;
   /// Stopped: where the logs of the runs it had started are (OUT/stopped/runs), or empty.
   std::string logs;
+  /// The study's `columns` that no run's summary.json has (absent_columns).
+  std::vector<std::string> absent_columns;
 };
 
 /// Runs every row (`program run CASE --out OUT/runs/NN-label -q --parent-pid PID --set ...`,
