@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "hpcontact/core/error.hpp"
+#include "hpcontact/model/follower_forces.hpp"
 
 namespace hpcontact::model {
 
@@ -380,8 +381,9 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
     return;
   }
   if (states) states->resize(pairs_.size());
-  // per pair, where its points or nodes are in contact (for pressure penetration)
-  std::vector<std::vector<ContactMark>> marks(d_.follower_loads.empty() ? 0 : pairs_.size());
+  // per pair, where its points or nodes are in contact (for pressure penetration; not needed
+  // while the fronts are held)
+  std::vector<std::vector<ContactMark>> marks(has_penetration() && !frozen_wet_ranges_ ? pairs_.size() : 0);
   points_in_contact_ = 0;
   states_.assign(n_z_, 0);
   // Rows of z, filled per exact pair; their u-parts as (row, dof of all dofs, value).
@@ -392,14 +394,7 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
       PairForces f = pair_forces(d_, pair, u, t, frozen ? &(*frozen)[k] : nullptr);
       for (const auto* side : {&f.states, &f.other_states})
         for (const auto& s : *side) points_in_contact_ += s.pressure > 0;
-      if (!marks.empty()) {
-        for (size_t i = 0; i < f.states.size(); ++i)
-          marks[k].push_back({pair.body, pair.edges[pair.points[i].edge], pair.points[i].t, pair.points[i].X,
-                              f.states[i].pressure});
-        for (size_t i = 0; i < f.other_states.size(); ++i)
-          marks[k].push_back({pair.other, pair.other_edges[pair.other_points[i].edge], pair.other_points[i].t,
-                              pair.other_points[i].X, f.other_states[i].pressure});
-      }
+      if (!marks.empty()) add_point_marks(pair, f, marks[k]);
       R.segment(d_.bodies[pair.body].dof_offset, f.body.size()) -= f.body;
       if (pair.other >= 0) R.segment(d_.bodies[pair.other].dof_offset, f.other.size()) -= f.other;
       if (states) (*states)[k] = std::move(f.states);
@@ -427,10 +422,7 @@ void ContactSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r, Tripl
       const double Wj = !c.passive.empty() && c.passive[j] ? c.passive_row_weight : c.weight(j);
       active_nodes += active;
       states_[z_offset_[k] + j] = active;
-      if (!marks.empty()) {
-        const auto& node = c.nodes.nodes[j];
-        marks[k].push_back({pair.body, c.edges[node.edge], node.t, node.X, active ? lambda(j) : 0.0});
-      }
+      if (!marks.empty()) marks[k].push_back(node_mark(pair, j, active ? lambda(j) : 0.0));
       r(o + j) = active ? c.scale(j) * s.G(j) : Wj * lambda(j);
       if (!T) continue;
       for (const auto& [dof, v] : s.dG[j]) {
@@ -517,7 +509,7 @@ void ContactSystem::add_follower_loads(const Eigen::VectorXd& u, double loads_fa
     const FollowerLoad& L = d_.follower_loads[i];
     static const std::vector<ContactMark> none;
     wet_ranges_[i] = frozen_wet_ranges_ ? (*frozen_wet_ranges_)[i]
-                                        : wetted_range(L, L.penetration ? marks[L.penetration->pair] : none, loads_factor);
+                     : wetted_range(L, L.penetration ? marks[L.penetration->pair] : none, loads_factor);
     add_follower_force(d_, L, u, wet_ranges_[i], 1.0, force, t ? &stiffness : nullptr);
   }
   if (freeze_next_) {

@@ -8,25 +8,30 @@
 
 namespace hpcontact::model {
 
-std::vector<ContactMark> contact_marks(const Discretization& d, const ContactPair& pair,
-                                       const Eigen::VectorXd& u, const Eigen::VectorXd& multipliers) {
-  std::vector<ContactMark> marks;
-  if (pair.constraints) {
-    const PairConstraints& c = *pair.constraints;
-    for (int j = 0; j < c.size(); ++j) {
-      const auto& node = c.nodes.nodes[j];
-      const double pressure = j < multipliers.size() ? std::max(0.0, multipliers(j)) : 0.0;
-      marks.push_back({pair.body, c.edges[node.edge], node.t, node.X, pressure});
-    }
-    return marks;
-  }
-  const PairForces f = pair_forces(d, pair, u, nullptr);
+void add_point_marks(const ContactPair& pair, const PairForces& f, std::vector<ContactMark>& marks) {
   for (size_t i = 0; i < f.states.size(); ++i)
     marks.push_back({pair.body, pair.edges[pair.points[i].edge], pair.points[i].t, pair.points[i].X,
                      f.states[i].pressure});
   for (size_t i = 0; i < f.other_states.size(); ++i)
     marks.push_back({pair.other, pair.other_edges[pair.other_points[i].edge], pair.other_points[i].t,
                      pair.other_points[i].X, f.other_states[i].pressure});
+}
+
+ContactMark node_mark(const ContactPair& pair, int j, double pressure) {
+  const PairConstraints& c = *pair.constraints;
+  const auto& node = c.nodes.nodes[j];
+  return {pair.body, c.edges[node.edge], node.t, node.X, pressure};
+}
+
+std::vector<ContactMark> contact_marks(const Discretization& d, const ContactPair& pair,
+                                       const Eigen::VectorXd& u, const Eigen::VectorXd& multipliers) {
+  std::vector<ContactMark> marks;
+  if (pair.constraints) {
+    for (int j = 0; j < pair.constraints->size(); ++j)
+      marks.push_back(node_mark(pair, j, j < multipliers.size() ? std::max(0.0, multipliers(j)) : 0.0));
+    return marks;
+  }
+  add_point_marks(pair, pair_forces(d, pair, u, nullptr), marks);
   return marks;
 }
 

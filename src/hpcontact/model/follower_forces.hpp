@@ -11,6 +11,13 @@
 
 namespace hpcontact::model {
 
+struct PairForces;
+
+/// The marks of a penalty pair's points (both bodies') with their pressures in `f`, appended.
+void add_point_marks(const ContactPair& pair, const PairForces& f, std::vector<ContactMark>& marks);
+/// The mark of an exact pair's multiplier node j with the contact pressure `pressure`.
+ContactMark node_mark(const ContactPair& pair, int j, double pressure);
+
 /// Where pair's multiplier nodes (exact: their multipliers, those of a converged state, a
 /// negative one taken as 0) or points (penalty: their pressures) lie, on both its bodies.
 std::vector<ContactMark> contact_marks(const Discretization& d, const ContactPair& pair,
