@@ -381,7 +381,6 @@ YAML::Node flow_pair(const std::string& a, const std::string& b) {
   return pair;
 }
 
-YAML::Node point_node(const Point& p) { return flow_pair(number_text(p[0]), number_text(p[1])); }
 YAML::Node ids_node(const std::array<int, 2>& e) {
   return flow_pair(std::to_string(e[0]), std::to_string(e[1]));
 }
@@ -485,6 +484,10 @@ void write_mesh(YAML::Node body, const ImportedMesh& m, const std::string& path,
 }
 
 }  // namespace
+
+YAML::Node point_node(const std::array<double, 2>& p) {
+  return flow_pair(number_text(p[0]), number_text(p[1]));
+}
 
 std::string gmsh_group_list(const GmshMesh& mesh, int dim) {
   std::string list;

@@ -56,6 +56,9 @@ class GmshOptionError : public InputError {
   std::string what_text;
 };
 
+/// [x, y] as a YAML flow sequence of the shortest texts that read back as x and y.
+YAML::Node point_node(const std::array<double, 2>& p);
+
 /// The names of the file's physical groups of dimension `dim`, for "(defined: ...)"; "none".
 std::string gmsh_group_list(const GmshMesh& mesh, int dim);
 

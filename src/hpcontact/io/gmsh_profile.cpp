@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <charconv>
 #include <map>
 #include <sstream>
 
@@ -143,21 +142,9 @@ GmshPath gmsh_path(const GmshMesh& mesh, const std::string& group, bool reverse)
 namespace hpcontact::io {
 namespace {
 
-std::string number_text(double v) {  // the shortest text that reads back as v
-  char buffer[64];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
-  return std::string(buffer, end);
-}
-
 YAML::Node points_node(const std::vector<std::array<double, 2>>& points) {
   YAML::Node list(YAML::NodeType::Sequence);
-  for (const auto& p : points) {
-    YAML::Node pair(YAML::NodeType::Sequence);
-    pair.push_back(number_text(p[0]));
-    pair.push_back(number_text(p[1]));
-    pair.SetStyle(YAML::EmitterStyle::Flow);
-    list.push_back(pair);
-  }
+  for (const auto& p : points) list.push_back(point_node(p));
   list.SetStyle(YAML::EmitterStyle::Flow);
   return list;
 }
