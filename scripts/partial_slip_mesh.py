@@ -23,6 +23,7 @@ defaults to an estimate of the approach for --force.
     partial_slip_mesh.py --force 700 --grade-at a c --degree 6   # a node at the stick-slip point
 """
 import argparse
+import json
 import math
 import os
 import sys
@@ -123,22 +124,25 @@ def half_disc(radius, bottom_x, left_y):
     return all_nodes, all_quads, r(contact), r(arcs), r(cut)
 
 
-def polar_half_disc(radius, first, ratio, sectors, outer):
+def polar_half_disc(radius, first, ratio, sectors, outer, inner=()):
     """Nodes, counter-clockwise quads, contact-arc edges, other arc edges and cut edges of the
     lower half of the disc about (0, R), meshed in rings about the contact point (the origin):
-    ring radii first · ratio^k up to `outer` · R, each ring cut into `sectors` (even) elements
-    between its two points on the arc; a core of three elements inside the first ring, and
-    one layer from the last ring to the cut (the cut in `sectors` equal parts). Elements keep
-    their shape (no slivers) from the contact zone to the cut, unlike the structured grid.
-    Every boundary edge on the circle is an exact arc; the contact edges are the core's two and
-    the first ring's two. Each element's first edge is its edge on the circle, if it has one,
+    rings at the `inner` radii (each below `first`: e.g. the stick zone's c), then radii
+    first · ratio^k up to `outer` · R, each ring cut into `sectors` (even) elements between its
+    two points on the arc; a core of three elements inside the first ring, and one layer from
+    the last ring to the cut (the cut in `sectors` equal parts). Elements keep their shape (no
+    slivers) from the contact zone to the cut, unlike the structured grid. Every boundary edge
+    on the circle is an exact arc; the contact edges are the core's two, the inner rings' and
+    the ring beyond `first`. Each element's first edge is its edge on the circle, if it has one,
     in +x; the circle's nodes are numbered first, in x, as in half_disc. ValueError when the
-    second ring would lie beyond `outer` · R (one ring: contact edges ending at `first`)."""
+    ring after `first` would lie beyond `outer` · R (contact edges ending at `first`)."""
     R = radius
-    radii = [first]
+    if any(not 0 < r < first for r in inner):
+        raise ValueError(f"inner rings {list(inner)} must lie between 0 and a = {first:.4g}")
+    radii = sorted(inner) + [first]
     while radii[-1] * ratio <= outer * R:
         radii.append(radii[-1] * ratio)
-    if len(radii) < 2:
+    if len(radii) < len(inner) + 2:
         # one ring: the contact edges (the core's) would end at `first`, where the zone ends
         raise ValueError(f"the second ring, --ring-ratio × a = {first * ratio:.4g}, lies beyond "
                          f"R/2 = {outer * R:.4g}, and the contact edges would end at a = "
@@ -166,7 +170,7 @@ def polar_half_disc(radius, first, ratio, sectors, outer):
     circle = [nid(key, (0.0, 0.0) if key == ("O",) else pts[key[1]][key[2]]) for key in on_circle]
     P = lambda k, j: nid(("P", k, j), pts[k][j])  # noqa: E731
     O = nid(("O",), (0.0, 0.0))
-    C = nid(("C",), (0.0, first / 2))
+    C = nid(("C",), (0.0, radii[0] / 2))
     Q = lambda j: nid(("Q", j), (-R + 2 * R * j / m if 2 * j != m else 0.0, R))  # noqa: E731
     quads = {}
 
@@ -195,7 +199,7 @@ def polar_half_disc(radius, first, ratio, sectors, outer):
         else:
             quad(P(K, j), P(K, j + 1), Q(j + 1), Q(j))
     edges = list(zip(circle, circle[1:]))
-    contact = edges[K - 1:K + 3]
+    contact = edges[K - 1 - len(inner):K + 3 + len(inner)]
     arcs = [e for e in edges if e not in contact] + [(Q(0), circle[0]), (circle[-1], Q(m))]
     cut = [(Q(j), Q(j + 1)) for j in range(m)]
     return nodes, quads, contact, arcs, cut
@@ -230,6 +234,23 @@ def body_lines(name, radius, E, nu, nodes, quads, contact_edges, arcs, cut, sign
     return out
 
 
+def carried_zone(ap, run, radius, E, nu, mu):
+    """(a, c) of Cattaneo–Mindlin for the normal and tangential force pair 0 of the run in
+    folder `run` carried (its summary.json); ap.error naming the file when it has none or when
+    the shear is beyond mu P."""
+    path = os.path.join(run, "summary.json")
+    try:
+        with open(path) as f:
+            pair = json.load(f)["contact_pairs"][0]
+        P, Q = float(pair["normal_force"]), abs(float(pair["tangential_force"]))
+    except (OSError, ValueError, KeyError, IndexError, TypeError) as e:
+        ap.error(f"--carried: {path}: no normal_force and tangential_force of pair 0 ({e})")
+    if not (P > 0 and Q < mu * P):
+        ap.error(f"--carried: {path}: P = {P:.6g}, Q = {Q:.6g}: needs P > 0 and Q < mu P = {mu * P:.6g}")
+    a = hertz_half_width(radius, P, E, nu)
+    return a, a * math.sqrt(1 - Q / (mu * P))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--radius", type=float, default=10.0, help="R of both cylinders (default %(default)s)")
@@ -248,7 +269,12 @@ def main():
                     help="Q / (mu P) of the tangential force, P = --force (default %(default)s)")
     ap.add_argument("--grade-at", nargs="+", choices=["a", "c"], default=["a"],
                     help="grade the contact arc towards a (Hertz) and/or c (stick-slip point, "
-                         "for --ratio) (default: a)")
+                         "for --ratio); polar: c adds a ring at c (default: a)")
+    ap.add_argument("--carried", metavar="RUN",
+                    help="place a and c where Cattaneo-Mindlin puts them for the forces a run of "
+                         "this problem carried (RUN/summary.json: normal_force and "
+                         "tangential_force of pair 0) instead of --force and --ratio's; the "
+                         "displacements stay those --force and --shear-displacement give")
     ap.add_argument("--factor", type=float, default=0.3, help="size ratio per layer (default %(default)s)")
     ap.add_argument("--layers", type=int, default=2, help="layers on each side of a grading point (default %(default)s)")
     ap.add_argument("--degree", type=int, default=4, help="p-version degree (default %(default)s)")
@@ -280,6 +306,7 @@ def main():
     R = args.radius
     a = hertz_half_width(R, args.force, args.E, args.nu)
     c = a * math.sqrt(1 - args.ratio)
+    a_mesh, c_mesh = (a, c) if args.carried is None else carried_zone(ap, args.carried, R, args.E, args.nu, args.mu)
     xc = R * math.sin(CORNER_ANGLE)
     if not 2 * a < 0.8 * xc:
         ap.error(f"--force too large: 2a = {2 * a:.3g} must stay below {0.8 * xc:.3g}")
@@ -291,17 +318,19 @@ def main():
         if not (args.ring_ratio > 1 and args.sectors >= 4 and args.sectors % 2 == 0):
             ap.error("--ring-ratio must be > 1 and --sectors even and at least 4")
         try:
-            nodes, quads, contact, arcs, cut = polar_half_disc(R, a, args.ring_ratio, args.sectors, 0.5)
+            nodes, quads, contact, arcs, cut = polar_half_disc(R, a_mesh, args.ring_ratio, args.sectors, 0.5,
+                                                              [c_mesh] if "c" in args.grade_at else [])
         except ValueError as e:
             ap.error(f"--mesh polar at this load: {e}")
-        grading = f"rings about the contact point from a, ratio {hertz_mesh.num(args.ring_ratio)}, {args.sectors} sectors"
+        grading = (f"rings about the contact point {'at c, ' if 'c' in args.grade_at else ''}from a, "
+                   f"ratio {hertz_mesh.num(args.ring_ratio)}, {args.sectors} sectors")
     else:
-        targets = sorted({"a": a, "c": c}[g] for g in set(args.grade_at))
+        targets = sorted({"a": a_mesh, "c": c_mesh}[g] for g in set(args.grade_at))
         bottom_x = graded_points(targets, args.factor, args.layers, xc)
         left_y = depth_points(min(targets), args.factor, args.layers, R)
         nodes, quads, contact, arcs, cut = half_disc(R, bottom_x, left_y)
         # the contact edges within 2a; the arc's other edges stay exact arcs
-        near = [e for e in contact if max(abs(nodes[e[0]][0]), abs(nodes[e[1]][0])) <= 2 * a + 1e-12]
+        near = [e for e in contact if max(abs(nodes[e[0]][0]), abs(nodes[e[1]][0])) <= 2 * a_mesh + 1e-12]
         arcs = arcs + [e for e in contact if e not in near]
         contact = near
         grading = f"graded towards {', '.join(args.grade_at)}"
@@ -312,6 +341,8 @@ def main():
     out = [f"# Generated by scripts/partial_slip_mesh.py {' '.join(sys.argv[1:])}",
            f"# Hertz a = {a:.6g} (b/R = {a / R:.3g}), stick zone c = {c:.6g} for Q = {num(Q)} "
            f"= {num(args.ratio)} mu P at P = {num(args.force)}; {grading}.",
+           *([] if args.carried is None else
+             [f"# The mesh's a = {a_mesh:.6g}, c = {c_mesh:.6g}: Cattaneo-Mindlin's for the forces {args.carried} carried."]),
            f"case: {args.case}",
            f"description: Partial slip of two equal cylinders R = {num(R)} mm, P = {num(args.force)} N/mm "
            f"then Q = {num(Q)} N/mm, mu = {num(args.mu)}, p = {args.degree}.",
