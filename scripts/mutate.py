@@ -28,7 +28,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 276 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
+--list prints them. A run of all 277 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp (but for its adjoint, its load-step cuts and the predictor) and contact/penalty.cpp,
@@ -817,6 +817,11 @@ MUTATIONS = [
              "    contact = edges[K - 1:K + 3]",
              "the polar mesh's ring at c leaves the contact edges short of a",
              ["cli:tests/cli/test_partial_slip_methods.py::test_a_polar_mesh_with_a_ring_at_the_stick_zones_end"]),
+    Mutation("hp-penetration-unreported", "driver", S + "driver/run.cpp",
+             "    report_penetration(last->discretization, last->solution, options, s);",
+             "    (void)last;",
+             "an hp or rp run writes no `penetration`: where its system pressure stops is not said",
+             ["cli:tests/cli/test_pressure_penetration.py::test_an_hp_run_reports_where_the_pressure_stops_on_its_mesh"]),
     Mutation("stop-before-commit-ignored", "driver", S + "driver/run.cpp",
              "  HPC_REQUIRE(!stop_requested(), NumericalError, spec.file, \": \", stop_reason(),",
              "  HPC_REQUIRE(true, NumericalError, spec.file, \": \", stop_reason(),",

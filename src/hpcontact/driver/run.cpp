@@ -556,6 +556,7 @@ RunResult run_problem(const model::ProblemSpec& input, const RunOptions& options
     s.newton_iterations = last->solution.newton_iterations;
     s.load_steps = last->solution.load_steps;
     s.extra["load_factor"] = last->solution.load_factor;
+    report_penetration(last->discretization, last->solution, options, s);
     aj["iterations"] = static_cast<int>(history.size()) - 1;
     {
       // every solve of the loop: its steps and, with a tolerance, their estimates' solves
