@@ -2,11 +2,14 @@
 // against central differences of the residual, on two bodies and against a rigid plane.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "hpcontact/io/problem_reader.hpp"
 #include "hpcontact/model/contact_solve.hpp"
+#include "hpcontact/model/contact_system.hpp"
 #include "hpcontact/model/discretization.hpp"
 #include "problems.hpp"
 
@@ -207,4 +210,62 @@ TEST(FrictionPath, LoadShearUnloadFollowsTheClosedForm) {
   // Same loads, different states: the path matters.
   EXPECT_EQ(at(12)[0], at(17)[0]);
   EXPECT_EQ(at(12)[1], at(17)[1]);
+}
+
+namespace {
+
+/// Whether two sparse matrices hold the same entries, pattern and bits.
+bool identical(solve::SparseMatrix a, solve::SparseMatrix b) {
+  a.makeCompressed();
+  b.makeCompressed();
+  if (a.rows() != b.rows() || a.cols() != b.cols() || a.nonZeros() != b.nonZeros()) return false;
+  const auto nnz = a.nonZeros();
+  return std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1, b.outerIndexPtr()) &&
+         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + nnz, b.innerIndexPtr()) &&
+         std::equal(a.valuePtr(), a.valuePtr() + nnz, b.valuePtr());
+}
+
+}  // namespace
+
+// ContactSystem::evaluate keeps the linear bodies' block, widened to all unknowns, from one
+// tangent to the next: the tangent shall be a fresh system's, bit for bit, at a second state
+// whose active set differs (the sum's pattern changes), under a force target added (one
+// unknown more) and after it is dropped again. Two cylinders in partial slip (exact Coulomb
+// friction between the bodies).
+TEST(Friction, KeptBodyBlockGivesTheFreshTangent) {
+  const auto spec = io::read_problem(std::string(HPC_SOURCE_DIR) + "/tests/verification/partial-slip-coarse.yaml");
+  const auto d = model::discretize(spec);
+  const auto sol = model::solve_contact(spec, d);
+  ASSERT_TRUE(sol.converged) << sol.message;
+  const auto pairs = model::pairs_of_last_step(sol);
+  auto make_system = [&] {
+    auto s = std::make_unique<model::ContactSystem>(d, pairs, spec.discretization.condense,
+                                                    model::ContactSystem::Tangent::analytic, sol.elastic);
+    s->set_factors(sol.displacement_factors, sol.loads_factor);
+    return s;
+  };
+  auto tangent = [](model::ContactSystem& s, const Eigen::VectorXd& x) {
+    Eigen::VectorXd r;
+    solve::SparseMatrix K;
+    s.evaluate(x, r, &K);
+    return K;
+  };
+  auto kept = make_system();
+  const Eigen::VectorXd x = kept->unknowns(sol.u, sol.multipliers);
+  const solve::SparseMatrix K_converged = tangent(*kept, x);
+  const int in_contact = kept->points_in_contact();
+  const Eigen::VectorXd x_part = 0.3 * x;  // less pressed: fewer nodes active
+  const solve::SparseMatrix K_part = tangent(*kept, x_part);
+  EXPECT_NE(kept->points_in_contact(), in_contact);
+  EXPECT_TRUE(identical(K_part, tangent(*make_system(), x_part)));
+
+  const std::pair<int, double> target(1, sol.contact.front().resultant.y());
+  kept->set_force_target(target);
+  auto fresh = make_system();
+  fresh->set_force_target(target);
+  const Eigen::VectorXd x_target = kept->unknowns(sol.u, sol.multipliers);
+  ASSERT_EQ(x_target.size(), x.size() + 1);
+  EXPECT_TRUE(identical(tangent(*kept, x_target), tangent(*fresh, x_target)));
+  kept->set_force_target(std::nullopt);
+  EXPECT_TRUE(identical(tangent(*kept, x), K_converged));
 }

@@ -275,14 +275,14 @@ void ContactSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve
     *K = K_uu_ + Kc;
     return;
   }
-  // K_uu_ widened to the whole system
-  Triplets W;
-  W.reserve(K_uu_.nonZeros());
-  for (int c = 0; c < K_uu_.outerSize(); ++c)
-    for (solve::SparseMatrix::InnerIterator it(K_uu_, c); it; ++it) W.emplace_back(it.row(), it.col(), it.value());
-  solve::SparseMatrix Kw(size(), size());
-  Kw.setFromTriplets(W.begin(), W.end());
-  *K = Kw + Kc;
+  // K_uu_ widened to the whole system: empty columns and rows added, its entries as they are
+  // (made again only when the unknowns change in number: a force target set or cleared)
+  if (K_uu_wide_.rows() != size()) {
+    K_uu_wide_ = K_uu_;
+    K_uu_wide_.conservativeResize(size(), size());
+    K_uu_wide_.makeCompressed();
+  }
+  *K = K_uu_wide_ + Kc;
 }
 
 double ContactSystem::admissible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const {

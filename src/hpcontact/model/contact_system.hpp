@@ -212,6 +212,7 @@ private:
   mutable int points_in_contact_ = 0;
   std::shared_ptr<const ElasticOperator> op_;
   solve::SparseMatrix K_uu_;  ///< the linear bodies' tangent on the unknowns, constant
+  solve::SparseMatrix K_uu_wide_;  ///< K_uu_ on all size() unknowns (evaluate())
   FiniteStrainForces finite_;
   mutable std::string failure_;
   Tangent tangent_ = Tangent::analytic;

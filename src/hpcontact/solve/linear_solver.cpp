@@ -11,6 +11,7 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "hpcontact/core/error.hpp"
@@ -183,6 +184,37 @@ public:
       }
       f(Q[k], column_max > 0 ? std::abs(D[k]) / column_max : 0.0);
     }
+  }
+
+  /// x = the solution of (sys)x = b for each column of B, sys a system of the factors alone
+  /// (UMFPACK_Pt_L, UMFPACK_U_Qt, UMFPACK_Q_Ut, ...: no scaling, no iterative refinement; the
+  /// work of a triangular solve skips the zeros of a sparse right-hand side as it goes).
+  Eigen::MatrixXd solve_factor(int sys, const SparseMatrix& A, const Eigen::MatrixXd& B) const {
+    const int n = static_cast<int>(A.rows());
+    Eigen::MatrixXd X(B.rows(), B.cols());
+    std::vector<int> Wi(n);
+    std::vector<double> W(5 * static_cast<size_t>(n));
+    Eigen::VectorXd b(n);
+    for (Eigen::Index j = 0; j < B.cols(); ++j) {
+      b = B.col(j);
+      const int status = umfpack_di_wsolve(sys, A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr(),
+                                           X.col(j).data(), b.data(), m_numeric, m_control.data(),
+                                           nullptr, Wi.data(), W.data());
+      HPC_REQUIRE(status == UMFPACK_OK, NumericalError,
+                  "UMFPACK's triangular solve failed (status " + std::to_string(status) + ")");
+    }
+    return X;
+  }
+
+  /// The row scaling R of P R A Q = L U as factors to multiply the rows with.
+  Eigen::VectorXd row_scaling(int n) const {
+    Eigen::VectorXd Rs(n);
+    int recip = 0;
+    const int status = umfpack_di_get_numeric(nullptr, nullptr, nullptr, nullptr, nullptr, nullptr,
+                                              nullptr, nullptr, nullptr, &recip, Rs.data(), m_numeric);
+    HPC_REQUIRE(status == UMFPACK_OK, NumericalError,
+                "UMFPACK's factors could not be read (status " + std::to_string(status) + ")");
+    return recip ? Rs : Eigen::VectorXd(Rs.cwiseInverse());
   }
 };
 
@@ -398,6 +430,25 @@ Eigen::MatrixXd LinearSolver::solve_columns(const Eigen::MatrixXd& B) const {
   Eigen::MatrixXd X = impl_->lu.solve(B);
   control[UMFPACK_IRSTEP] = refinement;
   return X;
+}
+
+// P R A Q = L U: A⁻¹ = Q U⁻¹ · L⁻¹ P R, the halves UMFPACK's systems Pt_L (P'L x = b) and
+// U_Qt (U Q' x = b) solve; the back half's transpose U⁻ᵀ Qᵀ is its system Q_Ut (Q U' x = b).
+Eigen::MatrixXd LinearSolver::solve_front_columns(const Eigen::MatrixXd& B) const {
+  HPC_ASSERT(splits_solves(), "split solves need an LU");
+  const SparseMatrix& A = impl_->matrix;
+  const Eigen::MatrixXd RB = impl_->lu.row_scaling(static_cast<int>(A.rows())).asDiagonal() * B;
+  return impl_->lu.solve_factor(UMFPACK_Pt_L, A, RB);
+}
+
+Eigen::VectorXd LinearSolver::solve_back(const Eigen::VectorXd& w) const {
+  HPC_ASSERT(splits_solves(), "split solves need an LU");
+  return impl_->lu.solve_factor(UMFPACK_U_Qt, impl_->matrix, w);
+}
+
+Eigen::MatrixXd LinearSolver::solve_back_transposed_columns(const Eigen::MatrixXd& C) const {
+  HPC_ASSERT(splits_solves(), "split solves need an LU");
+  return impl_->lu.solve_factor(UMFPACK_Q_Ut, impl_->matrix, C);
 }
 
 }  // namespace hpcontact::solve

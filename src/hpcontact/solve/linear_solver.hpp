@@ -74,6 +74,17 @@ public:
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   /// Solves for every column of B at once.
   Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& B) const;
+  /// Whether a solve splits into two halves, A⁻¹ = B F (the LU, P R A Q = L U: F = L⁻¹ P R,
+  /// B = Q U⁻¹), each a triangular solve that skips the zeros of a sparse right-hand side: a
+  /// product G A⁻¹ E with sparse G and E then costs F E and Bᵀ Gᵀ, forward solves that stay
+  /// sparse, where A⁻¹ E pays a full backward solve per column.
+  bool splits_solves() const { return kind_ == LinearSolverKind::lu; }
+  /// F B for every column of B (splits_solves()).
+  Eigen::MatrixXd solve_front_columns(const Eigen::MatrixXd& B) const;
+  /// B w: A⁻¹ b = solve_back(F b) (splits_solves()).
+  Eigen::VectorXd solve_back(const Eigen::VectorXd& w) const;
+  /// Bᵀ C for every column of C (splits_solves()).
+  Eigen::MatrixXd solve_back_transposed_columns(const Eigen::MatrixXd& C) const;
   /// Symbolic analyses done so far (a new one for each new sparsity pattern), for tests.
   int analyses() const { return analyses_; }
   /// The pivot, relative to its diagonal entry, below which a symmetric matrix is taken for a

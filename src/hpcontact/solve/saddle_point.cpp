@@ -18,7 +18,22 @@ namespace hpcontact::solve {
 
 namespace {
 using RowMajor = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+/// Vᵀ W over the rows where both have a nonzero (the others add nothing): the columns of a
+/// forward solve on a sparse right-hand side are zero outside a few rows.
+Eigen::MatrixXd product_over_shared_rows(const Eigen::MatrixXd& V, const Eigen::MatrixXd& W) {
+  std::vector<Eigen::Index> rows;
+  for (Eigen::Index i = 0; i < V.rows(); ++i)
+    if ((V.row(i).array() != 0.0).any() && (W.row(i).array() != 0.0).any()) rows.push_back(i);
+  Eigen::MatrixXd v(static_cast<Eigen::Index>(rows.size()), V.cols());
+  Eigen::MatrixXd w(static_cast<Eigen::Index>(rows.size()), W.cols());
+  for (size_t k = 0; k < rows.size(); ++k) {
+    v.row(k) = V.row(rows[k]);
+    w.row(k) = W.row(rows[k]);
+  }
+  return v.transpose() * w;
 }
+}  // namespace
 
 void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, int n,
                                   const Eigen::VectorXd& gamma) {
@@ -124,15 +139,30 @@ void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, i
     if (inv_gamma_(f) != 0)
       for (RowMajor::InnerIterator it(G_F, f); it; ++it)
         E_hat.row(it.col()) += inv_gamma_(f) * it.value() * H_tilde_.row(f);
+  front_.resize(0, 0);
   if (nf == 0) {
     Y_.resize(n_, 0);
     E_hat_ = SparseMatrix(n_, 0);
     z_of_column_.clear();
     return;
   }
-  solve_columns(sparse, E_hat);
-  stop_point("factorising");  // between the columns' solves and the dense complement's LU
-  const Eigen::MatrixXd S = H_tilde_ - G_F * Y_;
+  Eigen::MatrixXd S;
+  if (sparse.splits_solves()) {
+    // G_F A⁻¹ Ê = (Bᵀ G_Fᵀ)ᵀ (F Ê): two forward solves per column, both on sparse columns.
+    front_ = sparse.solve_front_columns(E_hat);
+    const Eigen::MatrixXd back = sparse.solve_back_transposed_columns(Eigen::MatrixXd(G_F.transpose()));
+    stop_point("factorising");  // between the columns' solves and the dense complement's LU
+    S = H_tilde_ - product_over_shared_rows(back, front_);
+    Y_.resize(n_, 0);
+    E_hat_ = SparseMatrix(n_, 0);
+    z_of_column_.clear();
+    columns_solver_ = nullptr;
+    columns_solved_ = nf;
+  } else {
+    solve_columns(sparse, E_hat);
+    stop_point("factorising");  // between the columns' solves and the dense complement's LU
+    S = H_tilde_ - G_F * Y_;
+  }
   // Equilibrated, D⁻¹ S D⁻¹ with D² = |diag S|: the rows of multipliers whose boundary share is
   // small (near the axis of an axisymmetric body, ∝ r) are as well conditioned as the others,
   // and the test below sees dependence, not scale.
@@ -205,7 +235,8 @@ Eigen::VectorXd SaddlePointSolver::solve(const LinearSolver& sparse, const Eigen
   Eigen::VectorXd du = a;
   if (nf > 0) {
     z_F = S_.solve((b_F - G_F_ * a).cwiseQuotient(s_scale_)).cwiseQuotient(s_scale_);
-    du -= Y_ * z_F;
+    if (front_.cols() == nf) du -= sparse.solve_back(front_ * z_F);  // A⁻¹ Ê z_F = B (F Ê) z_F
+    else du -= Y_ * z_F;
   }
   Eigen::VectorXd x(n_ + m_);
   x.head(n_) = du;

@@ -29,7 +29,9 @@ namespace hpcontact::solve {
 /// augmented Lagrangian: the solution is unchanged, and A is definite where only the
 /// constraints hold a body, or where K is indefinite along them). One sparse factorisation
 /// of A, |F| solves with it, and a dense LU of S per tangent; each right-hand side then costs
-/// one sparse solve.
+/// one sparse solve. With an LU (LinearSolver::splits_solves, A⁻¹ = B F) the |F| solves are
+/// halves that stay sparse: G_F A⁻¹ Ê = (Bᵀ G_Fᵀ)ᵀ (F Ê), and a right-hand side costs one
+/// solve and one back half (A⁻¹ Ê z = B (F Ê) z).
 class SaddlePointSolver {
 public:
   /// Factorises J (n + m square) with `sparse` for A; gamma (size m) is the augmentation of
@@ -45,7 +47,7 @@ public:
   int n_eliminated() const { return static_cast<int>(dependent_.size()); }
   int n_schur() const { return static_cast<int>(free_.size()); }
   /// Columns of A⁻¹ Ê the last factorize() solved for (the others kept from the tangent
-  /// before), for tests and benchmarks.
+  /// before; with split solves every column, none kept), for tests and benchmarks.
   int columns_solved() const { return columns_solved_; }
 
 private:
@@ -59,7 +61,9 @@ private:
   Eigen::VectorXd inv_gamma_;          ///< 1/γ of the free rows (0: not augmented)
   SparseMatrix G_F_;                   ///< the free rows of G
   Eigen::MatrixXd H_tilde_;            ///< H_FF − H_FD H_DD⁻¹ H_DF
-  Eigen::MatrixXd Y_;                  ///< A⁻¹ Ê
+  Eigen::MatrixXd Y_;                  ///< A⁻¹ Ê (none when the sparse solver splits its solves)
+  /// F Ê where the sparse solver splits A⁻¹ = B F (LinearSolver::splits_solves), else empty.
+  Eigen::MatrixXd front_;
   SparseMatrix E_hat_;                 ///< Ê of the last tangent (its columns are sparse)
   std::vector<int> z_of_column_;       ///< the multiplier of each column of Ê and Y
   const LinearSolver* columns_solver_ = nullptr;  ///< whose factors Y was solved with

@@ -90,6 +90,8 @@ TEST(SaddlePoint, ConstraintsEqualDenseSolve) {
     b.constraint(1, {{12, 0.7}}, 1.0, gam);
     b.constraint(2, {{20, 1.0}, {29, 1.0}}, 3.0, gam);
     EXPECT_LT(relative_error_against_dense(b, LinearSolverKind::cholmod, 1), 1e-10) << gam;
+    // the LU's split solves (LinearSolver::splits_solves) form S from the halves of A⁻¹
+    EXPECT_LT(relative_error_against_dense(b, LinearSolverKind::lu, 1), 1e-10) << gam;
   }
 }
 
@@ -100,6 +102,7 @@ TEST(SaddlePoint, AugmentationHoldsAFloatingBody) {
   b.constraint(0, {{0, 1.0}}, 1e3, 1e3);
   b.constraint(1, {{19, 1.0}}, 1e3, 1e3);
   EXPECT_LT(relative_error_against_dense(b, LinearSolverKind::cholmod, 2), 1e-11);
+  EXPECT_LT(relative_error_against_dense(b, LinearSolverKind::lu, 2), 1e-11);
   Blocks unaugmented = b;
   unaugmented.gamma.setZero();
   LinearSolver sparse;
