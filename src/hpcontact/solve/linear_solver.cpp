@@ -7,6 +7,7 @@
 #include <Eigen/UmfPackSupport>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -326,6 +327,8 @@ void LinearSolver::factorize(SparseMatrix&& A_in) {
   impl_->matrix.swap(A_in);  // Eigen 3.4's SparseMatrix has no move assignment: it would copy
   const SparseMatrix& A = impl_->matrix;
   ++factorizations_;
+  static std::atomic<std::uint64_t> serials{0};
+  factors_serial_ = ++serials;
   const bool analyse = !impl_->same_pattern(A);
   impl_->analysed = false;  // until this factorisation has succeeded
   if (analyse) ++analyses_;

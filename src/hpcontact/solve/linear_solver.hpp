@@ -1,6 +1,7 @@
 // Sparse direct solvers: symmetric positive definite (CHOLMOD, Eigen's LDLT) and general (UMFPACK LU).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -68,6 +69,10 @@ public:
   bool kept_factors() const { return kept_factors_; }
   /// Numeric factorisations done so far (those kept not counted), for tests and benchmarks.
   int factorizations() const { return factorizations_; }
+  /// A number no other factorisation in this process has had (0 before the first): what was
+  /// solved with these factors may be reused while it is unchanged — unlike the solver's address
+  /// and count, which a new solver in the same place repeats.
+  std::uint64_t factors_serial() const { return factors_serial_; }
   /// After factorize() refused a matrix: the row of A whose pivot vanished or was negative; -1
   /// after a success, or when the solver names no row (LU).
   int last_singular_row() const { return last_singular_row_; }
@@ -106,6 +111,7 @@ private:
   int last_singular_row_ = -1;
   int analyses_ = 0;
   int factorizations_ = 0;
+  std::uint64_t factors_serial_ = 0;
   bool kept_factors_ = false;
   std::unique_ptr<Impl> impl_;
 };

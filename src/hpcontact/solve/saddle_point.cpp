@@ -156,7 +156,7 @@ void SaddlePointSolver::factorize(LinearSolver& sparse, const SparseMatrix& J, i
     Y_.resize(n_, 0);
     E_hat_ = SparseMatrix(n_, 0);
     z_of_column_.clear();
-    columns_solver_ = nullptr;
+    columns_factors_ = 0;
     columns_solved_ = nf;
   } else {
     solve_columns(sparse, E_hat);
@@ -188,8 +188,8 @@ void SaddlePointSolver::solve_columns(const LinearSolver& sparse, const Eigen::M
   // constraint that is linear in u, the load factor's column.
   const int nf = static_cast<int>(free_.size());
   std::vector<int> column_of_z(m_, -1);
-  // (the same solver, and no factorisation since Y was solved: its factors are still A's)
-  if (&sparse == columns_solver_ && sparse.factorizations() == columns_factorization_)
+  // (the factors Y was solved with: no factorisation since, in this solver or another)
+  if (sparse.factors_serial() != 0 && sparse.factors_serial() == columns_factors_)
     for (size_t c = 0; c < z_of_column_.size(); ++c)
       if (z_of_column_[c] < m_) column_of_z[z_of_column_[c]] = static_cast<int>(c);
   Eigen::MatrixXd Y(n_, nf);
@@ -206,8 +206,7 @@ void SaddlePointSolver::solve_columns(const LinearSolver& sparse, const Eigen::M
     for (size_t i = 0; i < fresh.size(); ++i) Y.col(fresh[i]) = X.col(i);
   }
   columns_solved_ = static_cast<int>(fresh.size());
-  columns_solver_ = &sparse;
-  columns_factorization_ = sparse.factorizations();
+  columns_factors_ = sparse.factors_serial();
   z_of_column_ = free_;
   E_hat_ = E_hat.sparseView(0.0, 0.0);  // every nonzero, exactly: Ê's columns are sparse
   Y_.swap(Y);

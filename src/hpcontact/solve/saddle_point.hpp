@@ -66,8 +66,7 @@ private:
   Eigen::MatrixXd front_;
   SparseMatrix E_hat_;                 ///< Ê of the last tangent (its columns are sparse)
   std::vector<int> z_of_column_;       ///< the multiplier of each column of Ê and Y
-  const LinearSolver* columns_solver_ = nullptr;  ///< whose factors Y was solved with
-  int columns_factorization_ = -1;  ///< its factorizations() then
+  std::uint64_t columns_factors_ = 0;  ///< the factors_serial() Y was solved with (0: none)
   int columns_solved_ = 0;
   /// Y = A⁻¹ Ê, keeping the columns of the last tangent that are still A⁻¹ Ê.
   void solve_columns(const LinearSolver& sparse, const Eigen::MatrixXd& E_hat);
