@@ -28,7 +28,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 280 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
+--list prints them. A run of all 281 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp (but for its adjoint, its load-step cuts and the predictor) and contact/penalty.cpp,
@@ -837,6 +837,11 @@ MUTATIONS = [
              "    (void)last;",
              "an hp or rp run writes no `penetration`: where its system pressure stops is not said",
              ["cli:tests/cli/test_pressure_penetration.py::test_an_hp_run_reports_where_the_pressure_stops_on_its_mesh"]),
+    Mutation("saddle-columns-reused-across-factors", "solve", S + "solve/saddle_point.cpp",
+             "  if (sparse.factors_serial() != 0 && sparse.factors_serial() == columns_factors_)",
+             "  if (columns_factors_ != 0)",
+             "the saddle point reuses A⁻¹Ê columns solved with other factors (a new load step's solver)",
+             ["SaddlePoint.ANewSolverInTheOldOnesPlaceKeepsNoColumns"]),
     Mutation("stop-before-commit-ignored", "driver", S + "driver/run.cpp",
              "  HPC_REQUIRE(!stop_requested(), NumericalError, spec.file, \": \", stop_reason(),",
              "  HPC_REQUIRE(true, NumericalError, spec.file, \": \", stop_reason(),",
