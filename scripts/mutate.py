@@ -28,7 +28,7 @@ converging) is reported as "other only"; one caught by nothing as "SURVIVED". Th
 
 --quick leaves out the command-line and Python tests altogether; --full runs them for every
 mutation (then "other tests failed" lists every failing test). --only runs some mutations;
---list prints them. A run of all 281 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
+--list prints them. A run of all 283 takes over two hours on 2 cores (--full: about four). Exit status 0 when every mutation run
 was caught by a property test, 1 otherwise, 2 on a usage error.
 
 Left out on purpose: model/contact_solve.cpp (but for its adjoint, its load-step cuts and the predictor) and contact/penalty.cpp,
@@ -1586,6 +1586,16 @@ MUTATIONS = [
              "  for (int e : h.edge_degree) lowest = std::max(lowest, e);",
              "the mixed element's pressure degree ignores edges held lower by a neighbour: a singular tangent under hp's graded degrees",
              ["cli:tests/cli/test_o_ring_hertz.py::test_incompressible_section_by_hp_with_graded_degrees"]),
+    Mutation("iteration-step-not-shortened", "solve", S + "solve/newton.cpp",
+             "        taken = tau;",
+             "        taken = 1.0;",
+             "an iteration says it took the whole Newton correction where the cap on a force-controlled factor shortened it",
+             ["cli:tests/cli/test_progress.py::test_log_json_iterations_say_the_step_taken_and_the_states_changed"]),
+    Mutation("states-changed-from-the-wrong-tangent", "model", S + "model/contact_system.cpp",
+             "  for (std::size_t k = 0; k < tangent_states_.size(); ++k) changed += tangent_states_[k] != previous_tangent_states_[k];",
+             "  for (std::size_t k = 0; k < tangent_states_.size(); ++k) changed += tangent_states_[k] != 0;",
+             "the multiplier states changed are counted as the rows not inactive/open: a converged step says states changing",
+             ["cli:tests/cli/test_progress.py::test_log_json_iterations_say_the_step_taken_and_the_states_changed"]),
 ]
 
 

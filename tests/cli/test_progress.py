@@ -185,3 +185,49 @@ def test_terminal_hp_status_says_the_step_the_estimate_and_no_made_up_time(exe, 
 def test_quiet_prints_nothing_on_success(hpcontact, root, tmp_path):
     r = hpcontact("run", os.path.join(root, "examples/hertz/p5.yaml"), "--out", tmp_path, "-q")
     assert r.returncode == 0 and r.stdout == "" and r.stderr == "", (r.stdout, r.stderr)
+
+
+ROLLER = "examples/roller-block/friction/roller-block-friction.yaml"  # exact contact, Coulomb
+
+
+def iterations_by_step(ev):
+    """The iteration events of each converged load step, in order."""
+    steps, current = [], []
+    for e in ev:
+        if e["kind"] == "iteration":
+            current.append(e)
+        elif e["kind"] == "load_step":
+            steps.append(current)
+            current = []
+    return steps
+
+
+def test_log_json_iterations_say_the_step_taken_and_the_states_changed(hpcontact, root, tmp_path):
+    # The roller under force control with friction (the line search on, the factor's change
+    # capped): each iteration says the fraction of the Newton correction it took and how many
+    # multiplier states changed at its tangent. Newton converges only with the active set of its
+    # last two tangents equal: here each step's last correction is taken whole, its tangent (the
+    # one reported) the one that convergence compared, so the last iteration of each changed none.
+    r = hpcontact("run", os.path.join(root, ROLLER), "--out", tmp_path, "--log-json",
+                  "--set", "adapt.method=none", "--set", "output.vtu=false")
+    assert r.returncode == 0, r.stderr
+    ev = events(r.stdout)
+    steps = iterations_by_step(ev)
+    assert len(steps) == summary(tmp_path)["load_steps"] == 2
+    its = [e for s in steps for e in s]
+    assert all(0 < e["step"] <= 1 and e["states_changed"] >= 0 for e in its), its
+    assert all(s[-1]["states_changed"] == 0 for s in steps)
+    # the text says a shortened step, and only then
+    assert any(e["step"] < 1 for e in its)
+    assert all(("of the correction" in e["message"]) == (e["step"] < 1) for e in its)
+
+
+def test_log_json_without_line_search_takes_every_correction_whole(hpcontact, root, tmp_path):
+    # The staged block (exact contact with friction, no force control) with solver.line_search
+    # off: nothing shortens a correction.
+    r = hpcontact("run", os.path.join(root, STAGED), "--out", tmp_path, "--log-json",
+                  "--set", "solver.line_search=off")
+    assert r.returncode == 0, r.stderr
+    its = [e for e in events(r.stdout) if e["kind"] == "iteration"]
+    assert its and all(e["step"] == 1 and "of the correction" not in e["message"] for e in its)
+    assert all(e["states_changed"] >= 0 for e in its)

@@ -30,6 +30,12 @@ struct IterationProgress {
   double residual = 0, correction = 0;  ///< |R| and |dx|
   int points_in_contact = -1;           ///< -1: no contact pairs
   double seconds = 0;                   ///< since the load step's Newton solve began
+  /// The fraction of the Newton correction taken (< 1: shortened by the line search or to what
+  /// the system admits).
+  double step = 1;
+  /// Multiplier rows (exact contact: active/inactive, open/stick/slip) whose state changed at
+  /// the last tangent formed, from the tangent before; −1: no exact pair.
+  int states_changed = -1;
 };
 
 /// A step of an adaptive loop (hp step, rp iteration), when its figures are known.

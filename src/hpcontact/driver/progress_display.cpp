@@ -123,6 +123,8 @@ void ProgressDisplay::operator()(const ProgressEvent& event) {
                           {"iteration", it->iteration}, {"residual", number_or_null(it->residual)},
                           {"correction", number_or_null(it->correction)}, {"seconds", it->seconds}};
       if (it->points_in_contact >= 0) j["points_in_contact"] = it->points_in_contact;
+      j["step"] = it->step;
+      if (it->states_changed >= 0) j["states_changed"] = it->states_changed;
       json_event("iteration", j);
     } else if (options_.verbose) {
       show_line("  " + clean(event.text));

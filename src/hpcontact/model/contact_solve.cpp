@@ -290,12 +290,15 @@ NonlinearSolution LoadPath::solve() {
 solve::IterationCallback LoadPath::newton_progress() const {
   if (!progress_) return {};
   const auto began = std::chrono::steady_clock::now();
-  return [this, began](int it, double rn, double dxn) {
+  return [this, began](int it, double rn, double dxn, double step) {
     IterationProgress p{it, rn, dxn, pairs_.empty() ? -1 : system_.points_in_contact(),
-                        std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count()};
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count(),
+                        step, system_.states_changed()};
     std::ostringstream os;
     os << "  iteration " << it << ": |R| " << rn << ", |dx| " << dxn;
+    if (step < 1) os << " (" << step << " of the correction)";
     if (p.points_in_contact >= 0) os << ", " << p.points_in_contact << " points in contact";
+    if (p.states_changed >= 0) os << " (" << p.states_changed << " multiplier states changed)";
     os << ", " << p.seconds << " s";
     say({os.str(), p});
   };

@@ -285,6 +285,15 @@ void ContactSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve
   *K = K_uu_wide_ + Kc;
 }
 
+int ContactSystem::states_changed() const {
+  if (std::none_of(pairs_.begin(), pairs_.end(), [](const ContactPair& p) { return p.constraints != nullptr; }))
+    return -1;
+  if (previous_tangent_states_.size() != tangent_states_.size()) return static_cast<int>(tangent_states_.size());
+  int changed = 0;
+  for (std::size_t k = 0; k < tangent_states_.size(); ++k) changed += tangent_states_[k] != previous_tangent_states_[k];
+  return changed;
+}
+
 double ContactSystem::admissible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const {
   if (!target_) return 1;
   const double a = x(size() - 1), da = dx(size() - 1);

@@ -142,6 +142,10 @@ public:
   /// The multiplier nodes' states (inactive, active; open, stick, slip) at the last two
   /// tangents were the same.
   bool settled() const override { return tangent_states_ == previous_tangent_states_; }
+  /// The multiplier rows (of all exact pairs: active or not, open/stick/slip) whose state at the
+  /// last tangent differs from the tangent's before (all of them at the first tangent); −1 if no
+  /// pair is enforced exactly.
+  int states_changed() const;
   /// Per exact pair at the last evaluation: its active nodes, how many changed since the
   /// tangent before, and the largest penetration with where it is.
   std::string describe() const override;

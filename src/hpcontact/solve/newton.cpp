@@ -82,8 +82,10 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
         return report;
       }
       dx = system.solve(solver, -r);
+      double taken = 1;  // of the Newton correction
       if (const double tau = system.admissible_step(x, dx); tau < 1) {
         dx *= tau;
+        taken = tau;
         ++report.damped_steps;
       }
       if (options.line_search) {
@@ -112,9 +114,10 @@ SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOpti
           evaluated = true;
         }
         dx *= best_alpha;
+        taken *= best_alpha;
       }
       x += dx;
-      if (callback) callback(it + 1, rn, dx.norm());
+      if (callback) callback(it + 1, rn, dx.norm(), taken);
     }
   } catch (const Stopped& e) {
     report.status = SolveStatus::stopped;

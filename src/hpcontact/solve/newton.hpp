@@ -73,8 +73,9 @@ struct SolveReport {
   bool ok() const { return status == SolveStatus::converged; }
 };
 
-/// Called after each iteration with (iteration, ||R||, ||dx||).
-using IterationCallback = std::function<void(int, double, double)>;
+/// Called after each iteration with (iteration, ||R||, ||dx||, the fraction of the Newton
+/// correction taken: < 1 where the line search or admissible_step shortened it).
+using IterationCallback = std::function<void(int, double, double, double)>;
 
 /// Newton's method from the initial guess in x (updated in place).
 SolveReport newton(NonlinearSystem& system, Eigen::VectorXd& x, const NewtonOptions& options,

@@ -114,6 +114,25 @@ TEST(ProgressDisplay, JsonCarriesTheFigures) {
   EXPECT_EQ(b["max_steps"], 8);
 }
 
+// An iteration's JSON: the fraction of the correction taken always, the multiplier states
+// changed only where there are multipliers (−1: none).
+TEST(ProgressDisplay, JsonIterationCarriesTheStepAndTheStatesChanged) {
+  std::ostringstream out;
+  double now = 1;
+  ProgressDisplay display(out, at(ProgressStyle::json, &now));
+  display(ProgressEvent("  iteration 2: |R| 1", IterationProgress{2, 1.0, 2.0, 7, 0.5, 0.25, 3}));
+  display(ProgressEvent("  iteration 1: |R| 1", IterationProgress{1, 1.0, 2.0, 3, 0.5}));
+  std::istringstream lines(out.str());
+  std::string first, second;
+  std::getline(lines, first);
+  std::getline(lines, second);
+  const auto a = nlohmann::json::parse(first), b = nlohmann::json::parse(second);
+  EXPECT_EQ(a["step"], 0.25);
+  EXPECT_EQ(a["states_changed"], 3);
+  EXPECT_EQ(b["step"], 1.0);
+  EXPECT_FALSE(b.contains("states_changed"));
+}
+
 TEST(ProgressDisplay, TerminalRedrawsOneStatusLineCutToTheWidth) {
   std::ostringstream out;
   double now = 12;

@@ -62,7 +62,7 @@ TEST(NewtonStop, EndsBeforeTheNextIterationWithTheIterateReached) {
 
   Cubic stopped(0);
   x = Eigen::VectorXd::Constant(1, 5.0);
-  const auto rep = solve::newton(stopped, x, {}, [](int it, double, double) {
+  const auto rep = solve::newton(stopped, x, {}, [](int it, double, double, double) {
     if (it == 2) request_stop(SIGTERM);  // after the second iteration
   });
   EXPECT_EQ(rep.status, solve::SolveStatus::stopped);
