@@ -112,3 +112,16 @@ def test_gmsh_points_only_for_a_profile_or_curve_and_not_beside_points(hpcontact
     r = hpcontact("check", tmp_path / "both.yaml")
     assert r.returncode == 1
     assert "contact[0].obstacle.points: give either gmsh or points, not both" in r.stderr, r.stderr
+
+
+def test_a_second_gmsh_key_is_refused_not_dropped(hpcontact, root, tmp_path):
+    """Two gmsh keys in one obstacle: only one could be expanded and the other would vanish
+    unseen (the duplicate-key check runs after the expansion): refused naming the second's line."""
+    case = groove_from(root, tmp_path, "curve: housing")
+    text = case.read_text()
+    line = next(ln for ln in text.splitlines() if ln.startswith("      gmsh: {"))
+    (tmp_path / "two.yaml").write_text(text.replace(line, line + "\n" + line.replace("housing", "box"), 1))
+    r = hpcontact("check", tmp_path / "two.yaml")
+    assert r.returncode == 1
+    second = text.splitlines().index(line) + 2
+    assert f"two.yaml:{second}:7: contact[0].obstacle.gmsh: duplicate key" in r.stderr, r.stderr

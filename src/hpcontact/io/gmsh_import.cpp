@@ -511,6 +511,13 @@ GmshMesh read_gmsh_section(const YAML::Node& section, const std::string& path, Y
   }
 }
 
+void refuse_second_gmsh_key(const YAML::Node& parent, const std::string& gmsh_path, YamlSource& source) {
+  int n_gmsh = 0;
+  for (auto it = parent.begin(); it != parent.end(); ++it)
+    if (it->first.IsScalar() && it->first.Scalar() == "gmsh" && ++n_gmsh > 1)
+      source.fail(it->first, gmsh_path, "duplicate key");
+}
+
 std::vector<std::string> expand_gmsh_meshes(YAML::Node& root, YamlSource& source) {
   std::vector<std::string> notes;
   std::optional<std::size_t> values;  // of the tree, counted at the first gmsh section
@@ -522,12 +529,7 @@ std::vector<std::string> expand_gmsh_meshes(YAML::Node& root, YamlSource& source
     const YAML::Node& body_view = body;
     if (!body.IsMap() || !body_view["gmsh"]) continue;
     const std::string path = join_index("bodies", i), gmsh_path = path + ".gmsh";
-    // Only the first of two gmsh keys would be expanded: refuse them here (the schema check
-    // that reports duplicate keys comes after the expansion).
-    int n_gmsh = 0;
-    for (auto it = body.begin(); it != body.end(); ++it)
-      if (it->first.IsScalar() && it->first.Scalar() == "gmsh" && ++n_gmsh > 1)
-        source.fail(it->first, gmsh_path, "duplicate key");
+    refuse_second_gmsh_key(body_view, gmsh_path, source);
     const YAML::Node g = body_view["gmsh"];
     check_and_fill_defaults(g, "bodies[].gmsh", gmsh_path, source);
     for (const char* key : {"nodes", "elements"})

@@ -72,6 +72,11 @@ ImportedMesh import_gmsh_body(const GmshMesh& mesh, const ImportOptions& options
 /// folder of source.file(); IoError naming the key if it cannot be read, InputError as read_gmsh().
 GmshMesh read_gmsh_section(const YAML::Node& section, const std::string& path, YamlSource& source);
 
+/// Refuses a second `gmsh` key in the map `parent` (only the first would be expanded, the other
+/// silently dropped: the schema check that reports duplicate keys comes after the expansion),
+/// naming it as `gmsh_path`.
+void refuse_second_gmsh_key(const YAML::Node& parent, const std::string& gmsh_path, YamlSource& source);
+
 /// Replaces the `gmsh` section of every body of a problem file's tree (after --set overrides,
 /// before the schema check) by the nodes, elements, curves and edge_sets it stands for; the
 /// .msh file is found relative to the folder of source.file(). Returns one line per body so made,

@@ -153,6 +153,7 @@ YAML::Node points_node(const std::vector<std::array<double, 2>>& points) {
 std::string expand_one(YAML::Node obstacle, const std::string& path, YamlSource& source) {
   const YAML::Node& view = obstacle;
   const std::string gmsh_path_key = path + ".gmsh";
+  refuse_second_gmsh_key(view, gmsh_path_key, source);
   const YAML::Node g = view["gmsh"];
   check_and_fill_defaults(g, "contact[].obstacle.gmsh", gmsh_path_key, source);
   const YAML::Node type = view["type"];
