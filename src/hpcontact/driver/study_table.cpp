@@ -97,31 +97,36 @@ nlohmann::json read_summary(const std::string& run_dir) {
   return summary.is_discarded() ? nlohmann::json() : summary;
 }
 
+namespace {
+/// A column the study fills from the run itself (its label, case, outcome, folder, seeds), not
+/// from its summary.json.
+bool is_run_column(const std::string& c) {
+  return c == "label" || c == "case" || c == "converged" || c == "message" || c == "run_dir" ||
+         c.rfind("seed_", 0) == 0;
+}
+}  // namespace
+
 std::string study_cell(const StudyRowResult& row, const std::string& column) {
+  if (!is_run_column(column)) return row.summary.is_object() ? json_cell(at_path(row.summary, column)) : "";
   if (column == "label") return row.run.label;
   if (column == "case") return row.run.case_file;
   if (column == "converged") return row.converged() ? "true" : "false";
   if (column == "message") return row.converged() ? "" : row.message;
   if (column == "run_dir") return row.run_dir;
-  if (column.rfind("seed_", 0) == 0) {
-    for (const auto& [k, v] : row.run.seed)
-      if ("seed_" + k == column) {
-        std::ostringstream os;
-        os << std::setprecision(12) << v;
-        return os.str();
-      }
-    return "";
-  }
-  return row.summary.is_object() ? json_cell(at_path(row.summary, column)) : "";
+  for (const auto& [k, v] : row.run.seed)  // a seed_ column
+    if ("seed_" + k == column) {
+      std::ostringstream os;
+      os << std::setprecision(12) << v;
+      return os.str();
+    }
+  return "";
 }
 
 std::vector<std::string> absent_columns(const io::StudySpec& study,
                                         const std::vector<StudyRowResult>& rows) {
   std::vector<std::string> absent;
   for (const auto& c : study.columns) {
-    if (c == "label" || c == "case" || c == "converged" || c == "message" || c == "run_dir" ||
-        c.rfind("seed_", 0) == 0)
-      continue;
+    if (is_run_column(c)) continue;
     const bool somewhere = std::any_of(rows.begin(), rows.end(), [&](const StudyRowResult& r) {
       return r.summary.is_object() && at_path(r.summary, c) != nullptr;
     });
