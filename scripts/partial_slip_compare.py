@@ -229,10 +229,12 @@ def relative_l2(x, w, measured, exact):
     return float(np.sqrt(np.sum(w * (m - e) ** 2) / np.sum(w * e ** 2)))
 
 
-def own_point_weights(folder, s, enforcement, degree):
-    """The quadrature weights of a run's own contact points along s (own_point_errors)."""
+def own_point_weights(folder, s, enforcement, degree, vertices=None):
+    """The quadrature weights of a run's own contact points along s (own_point_errors); an exact
+    run's nodes by edge_weights (`vertices`: the rows of its edges' ends on an adapted mesh,
+    vertex_rows)."""
     if enforcement != "penalty":
-        return edge_weights(s, degree)
+        return edge_weights(s, degree, vertices)
     n = yaml.safe_load(open(os.path.join(folder, "input.yaml")))["contact"][0]["quadrature"]
     if len(s) % n:
         raise SystemExit(f"{len(s)} penalty points are not blocks of contact[0].quadrature = {n}")
@@ -253,7 +255,8 @@ def own_point_errors(folder, enforcement, degree, body, p_exact, q_exact):
     their own quadrature (the module's docstring)."""
     n = read_nodes(folder, body)
     s = n["s"]
-    w = own_point_weights(folder, s, enforcement, degree)
+    w = own_point_weights(folder, s, enforcement, degree,
+                          None if enforcement == "penalty" else vertex_rows(folder, body, n["X"]))
     rel = lambda fe, ex: float(np.sqrt(np.sum(w * (fe - ex) ** 2) / np.sum(w * ex ** 2)))  # noqa: E731
     return {"shear_rel_L2_own_points": rel(shear(n), q_exact(s)),
             "pressure_rel_L2_own_points": rel(n["pressure"], p_exact(s))}

@@ -53,6 +53,17 @@ def test_the_shear_is_held_to_the_tolerance(run):
     assert s["shape_space"] == "tensor"  # the default with friction
 
 
+def test_the_comparison_reads_the_adapted_meshs_edges(run):
+    """scripts/partial_slip_compare.py on the hp result (edges of different degrees): the
+    own-points figures weigh the multiplier nodes edge by edge as the node-based ones do, and are
+    the same numbers (before, the script stopped: "not blocks of p + 1")."""
+    out, _ = run
+    measured, _ = compare.measure(str(out))
+    errors = compare.uniform_errors(str(out))
+    assert errors["shear_rel_L2_own_points"] == pytest.approx(measured["shear_rel_L2"], rel=1e-12)
+    assert errors["pressure_rel_L2_own_points"] == pytest.approx(measured["pressure_rel_L2"], rel=1e-12)
+
+
 def test_the_result_is_within_the_tolerance_of_cattaneo_mindlin(run):
     """The shear and the pressure of the result against the closed forms: each within the
     tolerance (0.91 % and 0.27 % measured), the stick zone's half width within 2 % of c (0.7 %), the
